@@ -1,0 +1,12 @@
+#pragma once
+/// @file foresight.h
+/// Everything of foresight's core library: include this, link foresight::foresight.
+
+#include <foresight/character.h>
+#include <foresight/config.h>
+#include <foresight/orientation.h>
+#include <foresight/projectile.h>
+#include <foresight/static_world.h>
+#include <foresight/status.h>
+#include <foresight/vehicle.h>
+#include <foresight/world.h>

@@ -1,0 +1,99 @@
+#pragma once
+/// @file static_world.h
+/// The built-in collision world: infinite planes, spheres, oriented boxes and triangles,
+/// all static. Casts are exact (analytic ray and swept-sphere tests), brute force over the
+/// shapes (meant for tens to a few thousands of shapes; large meshes belong to a BVH backend).
+
+#include <foresight/world.h>
+
+#include <span>
+#include <vector>
+
+FORESIGHT_NAMESPACE_BEGIN
+
+/// A one-sided infinite plane: the points x with `dot(normal, x) = distance`. The front side
+/// is where the normal points; behind it is solid (a floor, a wall of an arena).
+struct Plane {
+    Vec3 normal{0, 1, 0}; ///< [Limit: non-zero]; normalised when added.
+    Real distance = 0;    ///< signed distance of the plane from the origin along normal [Units: m].
+};
+
+/// A solid sphere.
+struct Sphere {
+    RVec3 center{0};     ///< [Units: m]
+    float radius = 1.0f; ///< [Units: m] [Limit: > 0]
+};
+
+/// A solid box, rotated by `orientation` about its centre.
+struct OrientedBox {
+    RVec3 center{0};                          ///< [Units: m]
+    Vec3 halfExtents{0.5f};                   ///< half sizes along the box's local axes [Units: m] [Limit: > 0]
+    Quat orientation = glm::identity<Quat>(); ///< local-to-world; normalised when added.
+};
+
+/// A two-sided triangle.
+struct Triangle {
+    RVec3 a{0}, b{0}, c{0}; ///< vertices [Units: m]; must span a non-zero area.
+};
+
+/// Checks a shape as StaticWorld::add would: Ok, NonFiniteInput, ZeroVector, InvalidRadius,
+/// ZeroQuaternion or DegenerateShape.
+Status validatePlane(const Plane& plane);
+/// See validatePlane.
+Status validateSphere(const Sphere& sphere);
+/// See validatePlane.
+Status validateBox(const OrientedBox& box);
+/// See validatePlane. A triangle is degenerate when its area is below 1e-12 m^2 or relative
+/// to its edge lengths (a sliver that cannot give a stable normal).
+Status validateTriangle(const Triangle& triangle);
+
+/// Settings of a StaticWorld.
+struct StaticWorldSettings {
+    /// A cast that starts this close behind a one-sided surface and moves into it still hits
+    /// it (at fraction 0), so rounding never lets a resting object fall through
+    /// [Units: m] [Limit: >= 0]. Grows with the coordinates' magnitude (4 ulps).
+    float surfaceTolerance = 1e-5f;
+};
+
+/// The built-in static world. Shapes are added once (this allocates); casts never allocate and
+/// are safe to run from many threads at once.
+class StaticWorld final : public CollisionWorld {
+public:
+    StaticWorld() = default;
+    explicit StaticWorld(const StaticWorldSettings& settings) : mSettings(settings) {}
+
+    /// Adds a shape after validating it; nothing is added unless Ok is returned.
+    Status add(const Plane& plane);
+    /// See add(const Plane&).
+    Status add(const Sphere& sphere);
+    /// See add(const Plane&).
+    Status add(const OrientedBox& box);
+    /// See add(const Plane&). Degenerate triangles are refused with DegenerateShape.
+    Status add(const Triangle& triangle);
+
+    /// Removes every shape.
+    void clear();
+
+    /// Number of shapes of every kind.
+    std::size_t shapeCount() const;
+
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override;
+
+    /// The shapes as added (normalised).
+    std::span<const Plane> planes() const { return mPlanes; }
+    /// See planes().
+    std::span<const Sphere> spheres() const { return mSpheres; }
+    /// See planes().
+    std::span<const OrientedBox> boxes() const { return mBoxes; }
+    /// See planes().
+    std::span<const Triangle> triangles() const { return mTriangles; }
+
+private:
+    StaticWorldSettings mSettings;
+    std::vector<Plane> mPlanes;
+    std::vector<Sphere> mSpheres;
+    std::vector<OrientedBox> mBoxes;
+    std::vector<Triangle> mTriangles;
+};
+
+FORESIGHT_NAMESPACE_END

@@ -1,0 +1,81 @@
+#pragma once
+/// @file world.h
+/// The collision world interface: the predictor asks it for the first hit along a segment.
+/// Plug in your engine's own ray or sphere cast by deriving from CollisionWorld or by wrapping
+/// a function (CallbackWorld); StaticWorld (static_world.h) is the built-in implementation.
+
+#include <foresight/status.h>
+
+#include <type_traits>
+
+FORESIGHT_NAMESPACE_BEGIN
+
+/// A segment (or swept sphere) cast: from `origin` to `origin + displacement`.
+struct SegmentCast {
+    RVec3 origin{0};       ///< start of the segment, the sphere's centre [Units: m].
+    Vec3 displacement{0};  ///< end minus start [Units: m]; may be zero (then nothing is hit).
+    float radius = 0.0f;   ///< swept sphere radius [Units: m] [Limit: >= 0]; 0 casts a point.
+};
+
+/// The first hit of a SegmentCast.
+struct CastHit {
+    float fraction = 1.0f; ///< where along the segment [Limit: 0 .. 1]: origin + fraction * displacement.
+    RVec3 position{0};     ///< the cast's origin point (sphere centre) at the hit [Units: m].
+                           ///< The surface contact is `position - normal * radius`.
+    Vec3 normal{0, 1, 0};  ///< unit surface normal at the hit, facing against the motion.
+};
+
+/// What a world must answer. Rules every implementation should follow (the built-in one does):
+/// - Report the closest hit with a surface the segment enters (`dot(displacement, normal) < 0`).
+/// - A segment that starts on a one-sided surface (within a small tolerance) and moves into it
+///   hits at fraction 0, like Unity's Linecast; a segment that starts deep inside a solid, or
+///   moves away from a surface, does not hit it.
+/// - A zero-length segment hits nothing.
+/// Implementations must be thread-safe for concurrent const calls if predictions run in parallel.
+class CollisionWorld {
+public:
+    virtual ~CollisionWorld() = default;
+
+    /// Finds the first hit along `cast`. Returns false (and leaves `hit` undefined) if none.
+    virtual bool castSegment(const SegmentCast& cast, CastHit& hit) const = 0;
+};
+
+/// Signature of a user ray cast: return true and fill `hit` on a hit.
+using CastSegmentFunction = bool (*)(void* context, const SegmentCast& cast, CastHit& hit);
+
+/// A CollisionWorld that forwards to a function pointer and a context (no allocation).
+/// Use `CallbackWorld::wrap(lambda)` to forward to any callable that outlives the world.
+class CallbackWorld final : public CollisionWorld {
+public:
+    /// Forwards every query to `function(context, cast, hit)`. `function` must not be null.
+    CallbackWorld(CastSegmentFunction function, void* context) : mFunction(function), mContext(context) {}
+
+    /// Wraps a callable `bool(const SegmentCast&, CastHit&)`; the callable is referenced, not
+    /// copied, so it must outlive the returned world.
+    template <class Callable>
+    static CallbackWorld wrap(Callable& callable) {
+        static_assert(std::is_invocable_r_v<bool, Callable&, const SegmentCast&, CastHit&>,
+                      "callable must be bool(const SegmentCast&, CastHit&)");
+        return CallbackWorld(
+            [](void* context, const SegmentCast& cast, CastHit& hit) -> bool {
+                return (*static_cast<Callable*>(context))(cast, hit);
+            },
+            static_cast<void*>(&callable));
+    }
+
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
+        return mFunction(mContext, cast, hit);
+    }
+
+private:
+    CastSegmentFunction mFunction;
+    void* mContext;
+};
+
+/// A world with nothing in it.
+class EmptyWorld final : public CollisionWorld {
+public:
+    bool castSegment(const SegmentCast&, CastHit&) const override { return false; }
+};
+
+FORESIGHT_NAMESPACE_END
