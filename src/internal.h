@@ -1,0 +1,57 @@
+#pragma once
+// Private helpers shared by the implementation files (not installed).
+
+#include <foresight/config.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+FORESIGHT_NAMESPACE_BEGIN
+namespace detail {
+
+// Internal computations run in double whatever Real is: the predictors' cost is dominated by
+// the world queries, and double keeps the exact methods exact to far below float resolution.
+using DVec3 = glm::dvec3;
+using DQuat = glm::dquat;
+
+inline bool isFinite(float x) { return std::isfinite(x); }
+inline bool isFinite(double x) { return std::isfinite(x); }
+template <int N, class T>
+inline bool isFinite(const glm::vec<N, T, glm::defaultp>& v) {
+    for (int i = 0; i < N; ++i)
+        if (!std::isfinite(v[i])) return false;
+    return true;
+}
+inline bool isFinite(const Quat& q) {
+    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+inline DVec3 toD(const Vec3& v) { return DVec3(v); }
+#ifdef FORESIGHT_DOUBLE_PRECISION
+inline DVec3 toD(const RVec3& v) { return v; }
+#endif
+inline RVec3 toR(const DVec3& v) { return RVec3(v); }
+inline Vec3 toF(const DVec3& v) { return Vec3(v); }
+
+inline DQuat toD(const Quat& q) {
+    DQuat r;
+    r.w = q.w;
+    r.x = q.x;
+    r.y = q.y;
+    r.z = q.z;
+    return r;
+}
+inline Quat toF(const DQuat& q) {
+    Quat r;
+    r.w = static_cast<float>(q.w);
+    r.x = static_cast<float>(q.x);
+    r.y = static_cast<float>(q.y);
+    r.z = static_cast<float>(q.z);
+    return r;
+}
+
+// The rotation of angle |w| t about w / |w| in double, exact for small angles (no NaN at 0).
+DQuat rotationFromAngularVelocityD(const DVec3& angularVelocity, double time);
+
+}  // namespace detail
+FORESIGHT_NAMESPACE_END

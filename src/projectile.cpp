@@ -1,0 +1,416 @@
+#include <foresight/projectile.h>
+
+#include "internal.h"
+
+#include <algorithm>
+#include <limits>
+
+FORESIGHT_NAMESPACE_BEGIN
+using namespace detail;
+
+namespace {
+
+// Records trajectory points into the caller's storage; counts what did not fit.
+struct Recorder {
+    std::span<TrajectoryPoint> storage;
+    std::size_t size = 0;
+    std::size_t needed = 0;
+
+    void add(double time, TrajectoryEvent event, const DVec3& position, const DVec3& velocity,
+             const DVec3& normal = DVec3(0.0)) {
+        ++needed;
+        if (size >= storage.size()) return;
+        TrajectoryPoint& point = storage[size++];
+        point.time = static_cast<float>(time);
+        point.event = event;
+        point.position = toR(position);
+        point.velocity = toF(velocity);
+        point.normal = toF(normal);
+    }
+};
+
+// A projectile's state during a prediction.
+struct Body {
+    DVec3 position;
+    DVec3 velocity;
+};
+
+// Reflects `velocity` off a surface with normal `n`: the article's restitution response
+// `v += -(1 + e) dot(n, v) n`, plus Coulomb friction on the tangential part (never reversing it).
+DVec3 bounceVelocity(const DVec3& velocity, const DVec3& n, double restitution, double friction) {
+    const double vn = glm::dot(n, velocity);
+    DVec3 result = velocity - (1.0 + restitution) * vn * n;
+    if (friction > 0.0) {
+        const DVec3 tangential = velocity - vn * n;
+        const double speed = glm::length(tangential);
+        if (speed > 0.0) {
+            const double loss = std::min(speed, friction * (1.0 + restitution) * std::abs(vn));
+            result -= tangential * (loss / speed);
+        }
+    }
+    return result;
+}
+
+// Smallest s in [0, limit] with c + b s + a s^2 = 0, where c >= 0 at s = 0 (the body is in
+// front of the plane) and the value is <= 0 at s = limit. Returns `fallback` if rounding hides
+// the root.
+double firstCrossing(double c, double b, double a, double limit, double fallback) {
+    if (c <= 0.0) return 0.0;
+    double roots[2];
+    int count = 0;
+    if (std::abs(a) <= 1e-14 * (std::abs(b) + std::abs(c))) {
+        if (b != 0.0) roots[count++] = -c / b;
+    } else {
+        const double disc = b * b - 4.0 * a * c;
+        if (disc >= 0.0) {
+            // Stable roots: q = -(b + sign(b) sqrt(disc)) / 2, then q / a and c / q.
+            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            roots[count++] = q / a;
+            if (q != 0.0) roots[count++] = c / q;
+        }
+    }
+    double best = std::numeric_limits<double>::infinity();
+    const double slack = 1e-9 * limit;
+    for (int i = 0; i < count; ++i)
+        if (roots[i] >= -slack && roots[i] <= limit + slack) best = std::min(best, roots[i]);
+    if (!std::isfinite(best)) return std::clamp(fallback, 0.0, limit);
+    return std::clamp(best, 0.0, limit);
+}
+
+SegmentCast makeCast(const DVec3& from, const DVec3& to, float radius) {
+    SegmentCast cast;
+    cast.origin = toR(from);
+    cast.displacement = toF(to - toD(cast.origin));
+    cast.radius = radius;
+    return cast;
+}
+
+bool isFinite(const ProjectileResult& r) {
+    return detail::isFinite(r.position) && detail::isFinite(r.velocity) && std::isfinite(r.time);
+}
+
+// The reference article's loop, faithfully (see projectile.h).
+Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps,
+                  const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
+                  ProjectileResult& result) {
+    const double dt = settings.step;
+    const DVec3 g = toD(settings.gravity);
+    const double e = settings.restitution;
+    DVec3 p = start, v = startVelocity;
+    recorder.add(0.0, TrajectoryEvent::Start, p, v);
+    for (std::uint64_t i = 1; i <= steps; ++i) {
+        const DVec3 previousPosition = p, previousVelocity = v;
+        p += v * dt + 0.5 * g * dt * dt;
+        v += g * dt;
+        const SegmentCast cast = makeCast(previousPosition, p, settings.radius);
+        CastHit hit;
+        DVec3 normal(0.0);
+        bool bounced = false;
+        if (world.castSegment(cast, hit)) {
+            // The article's HitCoef: the hit distance over the chord length (0 for chords
+            // shorter than a micrometre), used as a time fraction for the velocity.
+            const double fullDistance = glm::length(p - previousPosition);
+            const double hitCoef = fullDistance > 0.000001 ? static_cast<double>(hit.fraction) : 0.0;
+            v = previousVelocity + g * dt * hitCoef;
+            p = toD(hit.position);
+            normal = toD(hit.normal);
+            if (result.bounces >= settings.maxBounces) {
+                result.stoppedAtHit = true;
+                result.hitNormal = toF(normal);
+                result.time = static_cast<float>((static_cast<double>(i - 1) + hitCoef) * dt);
+                recorder.add(result.time, TrajectoryEvent::Hit, p, v, normal);
+                result.position = toR(p);
+                result.velocity = toF(v);
+                return Status::Ok;
+            }
+            v = bounceVelocity(v, normal, e, settings.friction);
+            ++result.bounces;
+            result.hitNormal = toF(normal);
+            bounced = true;
+        }
+        const double t = static_cast<double>(i) * dt;
+        recorder.add(t, i == steps ? TrajectoryEvent::End
+                                   : (bounced ? TrajectoryEvent::Bounce : TrajectoryEvent::Step),
+                     p, v, normal);
+    }
+    if (steps == 0) recorder.add(0.0, TrajectoryEvent::End, p, v);
+    result.position = toR(p);
+    result.velocity = toF(v);
+    result.time = static_cast<float>(static_cast<double>(steps) * dt);
+    return Status::Ok;
+}
+
+// The event-driven exact method (see projectile.h and docs/ARCHITECTURE.md).
+class ExactRun {
+public:
+    ExactRun(const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
+             ProjectileResult& result)
+        : mSettings(settings), mWorld(world), mRecorder(recorder), mResult(result),
+          mGravity(toD(settings.gravity)) {}
+
+    Status run(const DVec3& start, const DVec3& startVelocity, double endTime) {
+        mBody = {start, startVelocity};
+        mRecorder.add(0.0, TrajectoryEvent::Start, mBody.position, mBody.velocity);
+        const double step = mSettings.step;
+        std::uint64_t gridIndex = 0;  // step points recorded so far
+        while (mTime < endTime && !mStopped) {
+            const double gridTime =
+                std::min(static_cast<double>(gridIndex + 1) * step, endTime);
+            if (mTime >= gridTime) {  // an impact landed exactly on the grid
+                ++gridIndex;
+                recordStep(gridTime, endTime);
+                continue;
+            }
+            const double h = gridTime - mTime;
+            const bool reached = mInContact ? advanceInContact(h) : advanceBallistic(h);
+            if (mEvents > mSettings.maxEvents) return Status::TooManyEvents;
+            if (mAtRest) {
+                mRecorder.add(mTime, TrajectoryEvent::Rest, mBody.position, DVec3(0.0), mContactNormal);
+                mBody.velocity = DVec3(0.0);
+                mTime = endTime;
+                break;
+            }
+            if (reached) {
+                mTime = gridTime;
+                ++gridIndex;
+                recordStep(gridTime, endTime);
+            }
+        }
+        if (!mStopped) {
+            if (!mEndRecorded)
+                mRecorder.add(endTime, TrajectoryEvent::End, mBody.position, mBody.velocity);
+            mResult.time = static_cast<float>(endTime);
+        }
+        mResult.position = toR(mBody.position);
+        mResult.velocity = toF(mBody.velocity);
+        mResult.atRest = mAtRest;
+        return Status::Ok;
+    }
+
+private:
+    void recordStep(double time, double endTime) {
+        mEndRecorded = time >= endTime;
+        mRecorder.add(time, mEndRecorded ? TrajectoryEvent::End : TrajectoryEvent::Step,
+                      mBody.position, mBody.velocity);
+    }
+
+    double liftDistance() const {
+        const DVec3& p = mBody.position;
+        const double magnitude = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        return 1e-4 + 8.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
+    }
+
+    // Ballistic flight for up to h seconds. Returns true when h was covered without an impact.
+    bool advanceBallistic(double h) {
+        const DVec3 p0 = mBody.position, v0 = mBody.velocity;
+        const DVec3 p1 = p0 + v0 * h + 0.5 * mGravity * h * h;
+        CastHit hit;
+        if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) {
+            mBody = {p1, v0 + mGravity * h};
+            return true;
+        }
+        // Solve the parabola against the plane tangent to the surface at the chord's hit.
+        const DVec3 n = toD(hit.normal);
+        const DVec3 hitPosition = toD(hit.position);
+        const double s = firstCrossing(glm::dot(n, p0 - hitPosition), glm::dot(n, v0),
+                                       0.5 * glm::dot(n, mGravity), h,
+                                       static_cast<double>(hit.fraction) * h);
+        DVec3 p = p0 + v0 * s + 0.5 * mGravity * s * s;
+        p -= n * glm::dot(n, p - hitPosition);  // onto the surface the world reported
+        mBody = {p, v0 + mGravity * s};
+        mTime += s;
+        impact(n, s);
+        return false;
+    }
+
+    // Sliding on the contact surface for up to h seconds. Returns true when h was covered.
+    bool advanceInContact(double h) {
+        const DVec3 n = mContactNormal;
+        const double gn = glm::dot(mGravity, n);
+        const DVec3 gt = mGravity - gn * n;
+        mBody.velocity -= glm::dot(mBody.velocity, n) * n;
+        const DVec3 v0 = mBody.velocity;
+        const double speed = glm::length(v0);
+        const double frictionDeceleration = mSettings.friction * std::max(0.0, -gn);
+        const double slope = glm::length(gt);
+        DVec3 a = gt;
+        double duration = h;
+        bool stops = false;
+        if (speed <= 1e-9) {
+            if (slope <= frictionDeceleration || slope <= 1e-12) {
+                mAtRest = true;  // static friction holds it (or nothing pulls it along)
+                return false;
+            }
+            a -= gt * (frictionDeceleration / slope);
+        } else {
+            // Kinetic friction against the motion, its direction held over the step.
+            a -= v0 * (frictionDeceleration / speed);
+            const double along = glm::dot(a, v0);
+            if (frictionDeceleration > 0.0 && along < 0.0) {
+                const double stopTime = speed * speed / -along;  // v(s) . v0 = 0
+                if (stopTime < duration) {
+                    duration = stopTime;
+                    stops = true;
+                }
+            }
+        }
+        const DVec3 p0 = mBody.position;
+        const DVec3 p1 = p0 + v0 * duration + 0.5 * a * duration * duration;
+        const double lift = liftDistance();
+        // Lifted off the surface so that the floor itself is not hit; walls are.
+        CastHit hit;
+        if (glm::length(p1 - p0) > 0.0 &&
+            mWorld.castSegment(makeCast(p0 + n * lift, p1 + n * lift, mSettings.radius), hit)) {
+            const DVec3 wall = toD(hit.normal);
+            const DVec3 hitPosition = toD(hit.position) - n * lift;
+            const double s = firstCrossing(glm::dot(wall, p0 - hitPosition), glm::dot(wall, v0),
+                                           0.5 * glm::dot(wall, a), duration,
+                                           static_cast<double>(hit.fraction) * duration);
+            DVec3 p = p0 + v0 * s + 0.5 * a * s * s;
+            p -= wall * glm::dot(wall, p - hitPosition);
+            mBody = {p, v0 + a * s};
+            mTime += s;
+            impact(wall, s);
+            return false;
+        }
+        DVec3 v1 = v0 + a * duration;
+        if (stops) v1 -= glm::dot(v1, v0) / (speed * speed) * v0;  // exactly no speed along v0
+        if (glm::length(v1) <= 1e-9) v1 = DVec3(0.0);
+        mTime += duration;
+        // Is the surface still under the new position? (An edge: fly off.)
+        if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
+            const DVec3 support = toD(hit.normal);
+            mBody.position = toD(hit.position);
+            if (glm::dot(support, n) < 1.0 - 1e-12) {
+                mContactNormal = support;
+                v1 -= glm::dot(v1, support) * support;
+            }
+        } else {
+            mBody.position = p1;
+            mInContact = false;
+            ++mEvents;
+        }
+        mBody.velocity = v1;
+        return !stops;
+    }
+
+    // An impact at the current state with surface normal n, `elapsed` after the last event.
+    void impact(const DVec3& n, double elapsed) {
+        ++mEvents;
+        mConsecutiveStalls = elapsed > 1e-12 ? 0 : mConsecutiveStalls + 1;
+        if (mConsecutiveStalls >= 8) {  // wedged between surfaces: no progress in time
+            mAtRest = true;
+            mContactNormal = n;
+            return;
+        }
+        if (mResult.bounces >= mSettings.maxBounces) {
+            mStopped = true;
+            mResult.stoppedAtHit = true;
+            mResult.hitNormal = toF(n);
+            mResult.time = static_cast<float>(mTime);
+            mRecorder.add(mTime, TrajectoryEvent::Hit, mBody.position, mBody.velocity, n);
+            return;
+        }
+        DVec3 v = bounceVelocity(mBody.velocity, n, mSettings.restitution, mSettings.friction);
+        ++mResult.bounces;
+        mResult.hitNormal = toF(n);
+        const double gn = glm::dot(mGravity, n);
+        // Below the normal speed of a one-micrometre hop, stay on the surface and slide:
+        // otherwise the bounces would shrink geometrically forever (Zeno).
+        const double restSpeed = std::sqrt(2.0 * std::max(0.0, -gn) * 1e-6);
+        if (gn < 0.0 && glm::dot(v, n) <= restSpeed) {
+            v -= glm::dot(v, n) * n;
+            mInContact = true;
+            mContactNormal = n;
+        } else if (mInContact && glm::dot(v, mContactNormal) > std::sqrt(2.0 * std::max(0.0, -glm::dot(mGravity, mContactNormal)) * 1e-6)) {
+            mInContact = false;  // bounced off the surface it was sliding on
+        } else if (mInContact) {
+            v -= glm::dot(v, mContactNormal) * mContactNormal;
+        }
+        mBody.velocity = v;
+        mRecorder.add(mTime, TrajectoryEvent::Bounce, mBody.position, v, n);
+    }
+
+    const ProjectileSettings& mSettings;
+    const CollisionWorld& mWorld;
+    Recorder& mRecorder;
+    ProjectileResult& mResult;
+    DVec3 mGravity;
+    Body mBody{};
+    double mTime = 0.0;
+    bool mEndRecorded = false;
+    bool mInContact = false;
+    DVec3 mContactNormal{0.0};
+    bool mAtRest = false;
+    bool mStopped = false;
+    std::uint32_t mEvents = 0;
+    int mConsecutiveStalls = 0;
+};
+
+}  // namespace
+
+Status validateProjectileSettings(const ProjectileSettings& settings) {
+    if (!isFinite(settings.gravity) || !std::isfinite(settings.step) ||
+        !std::isfinite(settings.restitution) || !std::isfinite(settings.friction) ||
+        !std::isfinite(settings.radius))
+        return Status::NonFiniteInput;
+    if (!(settings.step > 0.0f)) return Status::InvalidStep;
+    if (!(settings.restitution >= 0.0f && settings.restitution <= 1.0f))
+        return Status::InvalidRestitution;
+    if (!(settings.friction >= 0.0f)) return Status::InvalidFriction;
+    if (!(settings.radius >= 0.0f)) return Status::InvalidRadius;
+    return Status::Ok;
+}
+
+std::uint64_t steppedStepCount(float time, float step) {
+    if (!(time > 0.0f) || !(step > 0.0f) || !std::isfinite(time) || !std::isfinite(step)) return 0;
+    const double quotient = static_cast<double>(time) / static_cast<double>(step);
+    if (!(quotient < 9.0e18)) return std::numeric_limits<std::uint64_t>::max();
+    // Both operands are floats (relative rounding 6e-8 each): 3 / 0.02f is 150.0000034, which
+    // means 150 steps. Quotients within 1e-6 (relative) of an integer are that integer.
+    const double nearest = std::nearbyint(quotient);
+    if (std::abs(quotient - nearest) <= 1e-6 * std::max(1.0, quotient))
+        return static_cast<std::uint64_t>(nearest);
+    return static_cast<std::uint64_t>(std::ceil(quotient));
+}
+
+std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings,
+                               std::size_t expectedEvents) {
+    const std::uint64_t steps = steppedStepCount(time, settings.step);
+    const std::uint64_t capped = std::min<std::uint64_t>(steps, settings.maxSteps);
+    return static_cast<std::size_t>(capped) + 3 + 2 * expectedEvents;
+}
+
+Status predictProjectile(RVec3 position, Vec3 velocity, float time, const ProjectileSettings& settings,
+                         const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
+                         ProjectileResult& out) {
+    if (!detail::isFinite(position) || !detail::isFinite(velocity) || !std::isfinite(time))
+        return Status::NonFiniteInput;
+    if (Status s = validateProjectileSettings(settings); s != Status::Ok) return s;
+    if (time < 0.0f) return Status::NegativeTime;
+    const std::uint64_t steps = steppedStepCount(time, settings.step);
+    if (steps > settings.maxSteps) return Status::TooManySteps;
+
+    static const EmptyWorld emptyWorld;
+    const CollisionWorld& collisionWorld = world ? *world : emptyWorld;
+    Recorder recorder{trajectory};
+    ProjectileResult result;
+    Status status;
+    if (settings.method == ProjectileMethod::Stepped) {
+        status = runStepped(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
+    } else {
+        ExactRun run(settings, collisionWorld, recorder, result);
+        status = run.run(toD(position), toD(velocity), static_cast<double>(time));
+    }
+    if (status != Status::Ok) return status;
+    if (!isFinite(result)) return Status::NonFiniteResult;
+    for (std::size_t i = 0; i < recorder.size; ++i)
+        if (!detail::isFinite(trajectory[i].position) || !detail::isFinite(trajectory[i].velocity))
+            return Status::NonFiniteResult;
+    result.trajectorySize = recorder.size;
+    result.trajectoryNeeded = recorder.needed;
+    out = result;
+    return Status::Ok;
+}
+
+FORESIGHT_NAMESPACE_END

@@ -1,0 +1,364 @@
+#include <foresight/static_world.h>
+
+#include <foresight/orientation.h>
+
+#include "internal.h"
+
+#include <algorithm>
+#include <limits>
+
+FORESIGHT_NAMESPACE_BEGIN
+using namespace detail;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A candidate hit along the cast's unit direction: distance from the origin and outward normal.
+struct Candidate {
+    double distance = kInfinity;
+    DVec3 normal{0, 1, 0};
+
+    void offer(double d, const DVec3& n) {
+        if (d < distance) {
+            distance = d;
+            normal = n;
+        }
+    }
+};
+
+// The ray being cast, in double: origin, unit direction, length.
+struct Ray {
+    DVec3 origin;
+    DVec3 direction;
+    double length;
+    double tolerance;  // how far behind a surface a start still counts as "on" it
+};
+
+// First entry of a ray that starts outside a sphere (centre c, radius r).
+void sphereEntry(const Ray& ray, const DVec3& center, double radius, Candidate& best) {
+    const DVec3 m = ray.origin - center;
+    const double b = glm::dot(m, ray.direction);
+    if (b >= 0.0) return;  // moving away from the centre: cannot enter
+    const double c = glm::dot(m, m) - radius * radius;
+    const double disc = b * b - c;
+    if (disc < 0.0) return;
+    // Stable root: the entry is c / (-b + sqrt(disc)) (equal to -b - sqrt(disc)).
+    const double t = std::max(0.0, c / (-b + std::sqrt(disc)));
+    if (t > ray.length || t >= best.distance) return;
+    best.offer(t, glm::normalize(m + ray.direction * t));
+}
+
+// First entry of a ray that starts outside a capsule (segment a-b, radius r): the cylinder's
+// side, then the two end spheres.
+void capsuleEntry(const Ray& ray, const DVec3& a, const DVec3& b, double radius, Candidate& best) {
+    const DVec3 ba = b - a;
+    const DVec3 oa = ray.origin - a;
+    const double baba = glm::dot(ba, ba);
+    const double bard = glm::dot(ba, ray.direction);
+    const double baoa = glm::dot(ba, oa);
+    const double rdoa = glm::dot(ray.direction, oa);
+    const double oaoa = glm::dot(oa, oa);
+    const double qa = baba - bard * bard;
+    if (qa > 1e-12 * baba) {  // not parallel to the axis: the side can be hit
+        const double qb = baba * rdoa - baoa * bard;
+        const double qc = baba * oaoa - baoa * baoa - radius * radius * baba;
+        const double h = qb * qb - qa * qc;
+        if (h >= 0.0) {
+            const double t = std::max(0.0, (-qb - std::sqrt(h)) / qa);
+            const double y = baoa + t * bard;  // axial coordinate times |ba|
+            if (y > 0.0 && y < baba && t <= ray.length && t < best.distance) {
+                const DVec3 n = oa + ray.direction * t - ba * (y / baba);
+                const double nl = glm::length(n);
+                if (nl > 0.0 && glm::dot(n, ray.direction) < 0.0) best.offer(t, n / nl);
+            }
+        }
+    }
+    sphereEntry(ray, a, radius, best);
+    sphereEntry(ray, b, radius, best);
+}
+
+// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
+DVec3 closestOnTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DVec3& c) {
+    const DVec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    const DVec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+    const DVec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    const double denom = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Whether point p (on the plane of abc) lies inside the triangle, edges included with a small
+// relative margin so that a segment through a shared edge hits one of the two triangles.
+bool insideTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DVec3& c, const DVec3& n) {
+    const double margin = -1e-9 * glm::dot(n, glm::cross(b - a, c - a));
+    return glm::dot(n, glm::cross(b - a, p - a)) >= margin &&
+           glm::dot(n, glm::cross(c - b, p - b)) >= margin &&
+           glm::dot(n, glm::cross(a - c, p - c)) >= margin;
+}
+
+// The rule shared by every solid: a start within the tolerance of the surface hits at 0 when it
+// moves in; a start deeper inside hits nothing; a start outside is left to the entry test.
+// Returns true when the entry test should run.
+bool surfaceRule(const Ray& ray, double signedDistance, const DVec3& outward, Candidate& best) {
+    if (signedDistance > ray.tolerance) return true;
+    if (signedDistance >= -ray.tolerance && glm::dot(outward, ray.direction) < 0.0)
+        best.offer(0.0, outward);
+    return false;
+}
+
+void castPlane(const Ray& ray, double radius, const Plane& plane, Candidate& best) {
+    const DVec3 n = toD(plane.normal);
+    const double s0 = glm::dot(n, ray.origin) - static_cast<double>(plane.distance) - radius;
+    const double dn = glm::dot(n, ray.direction);
+    if (!surfaceRule(ray, s0, n, best)) return;
+    if (dn >= 0.0) return;
+    const double t = s0 / -dn;
+    if (t <= ray.length) best.offer(t, n);
+}
+
+void castSphere(const Ray& ray, double radius, const Sphere& sphere, Candidate& best) {
+    const DVec3 center = toD(sphere.center);
+    const double r = static_cast<double>(sphere.radius) + radius;
+    const DVec3 m = ray.origin - center;
+    const double distance = glm::length(m);
+    const DVec3 outward = distance > 0.0 ? m / distance : DVec3(0, 1, 0);
+    if (!surfaceRule(ray, distance - r, outward, best)) return;
+    sphereEntry(ray, center, r, best);
+}
+
+void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& best) {
+    // Work in the box's local frame: an axis-aligned box [-h, h], rounded by the cast radius.
+    const DQuat q = toD(box.orientation);
+    const DQuat qi = glm::conjugate(q);
+    const DVec3 h = toD(box.halfExtents);
+    Ray local = ray;
+    local.origin = qi * (ray.origin - toD(box.center));
+    local.direction = qi * ray.direction;
+    const DVec3& o = local.origin;
+
+    // Signed distance to the rounded box and its gradient.
+    const DVec3 qd = glm::abs(o) - h;
+    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
+    const double outsideLength = glm::length(outsidePart);
+    double signedDistance;
+    DVec3 outward;
+    if (outsideLength > 0.0) {
+        signedDistance = outsideLength - radius;
+        outward = outsidePart * glm::sign(o) / outsideLength;
+    } else {
+        const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
+        signedDistance = qd[axis] - radius;
+        outward = DVec3(0.0);
+        outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
+    }
+    Candidate localBest;
+    localBest.distance = best.distance;
+    if (surfaceRule(local, signedDistance, outward, localBest)) {
+        // Slab test against the box grown by the radius.
+        const DVec3 e = h + DVec3(radius);
+        double tEnter = 0.0, tExit = local.length;
+        int enterAxis = -1;
+        for (int i = 0; i < 3; ++i) {
+            const double di = local.direction[i];
+            if (std::abs(di) < 1e-300) {
+                if (std::abs(o[i]) > e[i]) return;
+                continue;
+            }
+            double t0 = (-e[i] - o[i]) / di, t1 = (e[i] - o[i]) / di;
+            if (t0 > t1) std::swap(t0, t1);
+            if (t0 > tEnter) {
+                tEnter = t0;
+                enterAxis = i;
+            }
+            tExit = std::min(tExit, t1);
+            if (tEnter > tExit) return;
+        }
+        // enterAxis < 0: the origin is inside the grown box, in a corner or edge region that
+        // lies outside the rounded box (a start inside the rounded box ended above).
+        if (enterAxis < 0 && radius <= 0.0) return;
+        int outsideAxes = enterAxis < 0 ? 2 : 0;
+        const DVec3 p = o + local.direction * tEnter;
+        for (int i = 0; i < 3 && enterAxis >= 0; ++i)
+            if (i != enterAxis && std::abs(p[i]) > h[i]) ++outsideAxes;
+        if (radius <= 0.0 || outsideAxes == 0) {
+            DVec3 n(0.0);
+            n[enterAxis] = local.direction[enterAxis] > 0.0 ? -1.0 : 1.0;
+            localBest.offer(tEnter, n);
+        } else {
+            // Entered the grown box near an edge or corner: the rounded box's surface there is
+            // one of the twelve edge capsules (whose end spheres are the corners).
+            for (int axis = 0; axis < 3; ++axis) {
+                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                for (int su = -1; su <= 1; su += 2)
+                    for (int sv = -1; sv <= 1; sv += 2) {
+                        DVec3 a(0.0), b(0.0);
+                        a[axis] = -h[axis];
+                        b[axis] = h[axis];
+                        a[u] = b[u] = su * h[u];
+                        a[v] = b[v] = sv * h[v];
+                        capsuleEntry(local, a, b, radius, localBest);
+                    }
+            }
+        }
+    }
+    if (localBest.distance < best.distance) best.offer(localBest.distance, q * localBest.normal);
+}
+
+void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate& best) {
+    const DVec3 a = toD(tri.a), b = toD(tri.b), c = toD(tri.c);
+    const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
+    const double s0 = glm::dot(n, ray.origin - a);
+    if (radius <= 0.0) {
+        // Two-sided and infinitely thin: a start on its plane cannot tell which side it came
+        // from, so the triangle is ignored (the caller moves away from a surface it just hit).
+        if (std::abs(s0) <= ray.tolerance) return;
+        const double dn = glm::dot(n, ray.direction);
+        if (s0 * dn >= 0.0) return;  // parallel or moving away
+        const double t = s0 / -dn;
+        if (t > ray.length || t >= best.distance) return;
+        const DVec3 p = ray.origin + ray.direction * t;
+        if (!insideTriangle(p, a, b, c, n)) return;
+        best.offer(t, s0 > 0.0 ? n : -n);
+        return;
+    }
+    // A swept sphere against a triangle: the triangle thickened by the radius, a convex solid.
+    const DVec3 closest = closestOnTriangle(ray.origin, a, b, c);
+    const DVec3 away = ray.origin - closest;
+    const double distance = glm::length(away);
+    const DVec3 outward = distance > 0.0 ? away / distance : (s0 >= 0.0 ? n : -n);
+    if (!surfaceRule(ray, distance - radius, outward, best)) return;
+    const DVec3 side = s0 >= 0.0 ? n : -n;
+    const double dn = glm::dot(side, ray.direction);
+    if (dn < 0.0) {
+        // The face, offset by the radius towards the origin.
+        const double t = (std::abs(s0) - radius) / -dn;
+        if (t >= 0.0 && t <= ray.length && t < best.distance) {
+            const DVec3 p = ray.origin + ray.direction * t - side * radius;
+            if (insideTriangle(p, a, b, c, n)) best.offer(t, side);
+        }
+    }
+    capsuleEntry(ray, a, b, radius, best);
+    capsuleEntry(ray, b, c, radius, best);
+    capsuleEntry(ray, c, a, radius, best);
+}
+
+}  // namespace
+
+Status validatePlane(const Plane& plane) {
+    if (!isFinite(plane.normal) || !isFinite(static_cast<double>(plane.distance)))
+        return Status::NonFiniteInput;
+    if (!(glm::length(toD(plane.normal)) > 0.0)) return Status::ZeroVector;
+    return Status::Ok;
+}
+
+Status validateSphere(const Sphere& sphere) {
+    if (!isFinite(sphere.center) || !isFinite(sphere.radius)) return Status::NonFiniteInput;
+    if (!(sphere.radius > 0.0f)) return Status::InvalidRadius;
+    return Status::Ok;
+}
+
+Status validateBox(const OrientedBox& box) {
+    if (!isFinite(box.center) || !isFinite(box.halfExtents)) return Status::NonFiniteInput;
+    Quat q;
+    if (Status s = normalizeQuaternion(box.orientation, q); s != Status::Ok) return s;
+    if (!(box.halfExtents.x > 0.0f && box.halfExtents.y > 0.0f && box.halfExtents.z > 0.0f))
+        return Status::DegenerateShape;
+    return Status::Ok;
+}
+
+Status validateTriangle(const Triangle& triangle) {
+    if (!isFinite(triangle.a) || !isFinite(triangle.b) || !isFinite(triangle.c))
+        return Status::NonFiniteInput;
+    const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
+    const double twiceArea = glm::length(glm::cross(b - a, c - a));
+    const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    // Zero area, or a sliver whose height is under 1e-6 of its longest edge (unstable normal).
+    if (!(twiceArea > 2e-12) || !(twiceArea > 1e-6 * longest * longest))
+        return Status::DegenerateShape;
+    return Status::Ok;
+}
+
+Status StaticWorld::add(const Plane& plane) {
+    if (Status s = validatePlane(plane); s != Status::Ok) return s;
+    const double length = glm::length(toD(plane.normal));
+    Plane p;
+    p.normal = toF(toD(plane.normal) / length);
+    p.distance = static_cast<Real>(static_cast<double>(plane.distance) / length);
+    mPlanes.push_back(p);
+    return Status::Ok;
+}
+
+Status StaticWorld::add(const Sphere& sphere) {
+    if (Status s = validateSphere(sphere); s != Status::Ok) return s;
+    mSpheres.push_back(sphere);
+    return Status::Ok;
+}
+
+Status StaticWorld::add(const OrientedBox& box) {
+    if (Status s = validateBox(box); s != Status::Ok) return s;
+    OrientedBox b = box;
+    normalizeQuaternion(box.orientation, b.orientation);
+    mBoxes.push_back(b);
+    return Status::Ok;
+}
+
+Status StaticWorld::add(const Triangle& triangle) {
+    if (Status s = validateTriangle(triangle); s != Status::Ok) return s;
+    mTriangles.push_back(triangle);
+    return Status::Ok;
+}
+
+void StaticWorld::clear() {
+    mPlanes.clear();
+    mSpheres.clear();
+    mBoxes.clear();
+    mTriangles.clear();
+}
+
+std::size_t StaticWorld::shapeCount() const {
+    return mPlanes.size() + mSpheres.size() + mBoxes.size() + mTriangles.size();
+}
+
+bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
+    const DVec3 origin = toD(cast.origin);
+    const DVec3 displacement = toD(cast.displacement);
+    const double length = glm::length(displacement);
+    if (!(length > 0.0) || !std::isfinite(length) || !isFinite(origin)) return false;
+    const double radius = std::max(0.0, static_cast<double>(cast.radius));
+    const double magnitude = std::max({1.0, std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = displacement / length;
+    ray.length = length;
+    // The configured tolerance, plus 4 ulps of the coordinates' own precision.
+    ray.tolerance = static_cast<double>(mSettings.surfaceTolerance) +
+                    4.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
+
+    Candidate best;
+    for (const Plane& p : mPlanes) castPlane(ray, radius, p, best);
+    for (const Sphere& s : mSpheres) castSphere(ray, radius, s, best);
+    for (const OrientedBox& b : mBoxes) castBox(ray, radius, b, best);
+    for (const Triangle& t : mTriangles) castTriangle(ray, radius, t, best);
+    if (!(best.distance <= length)) return false;
+
+    const double fraction = std::clamp(best.distance / length, 0.0, 1.0);
+    hit.fraction = static_cast<float>(fraction);
+    hit.position = toR(origin + displacement * fraction);
+    hit.normal = toF(best.normal);
+    return true;
+}
+
+FORESIGHT_NAMESPACE_END
