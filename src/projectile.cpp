@@ -51,11 +51,12 @@ DVec3 bounceVelocity(const DVec3& velocity, const DVec3& n, double restitution, 
     return result;
 }
 
-// Smallest s in [0, limit] with c + b s + a s^2 = 0, where c >= 0 at s = 0 (the body is in
-// front of the plane) and the value is <= 0 at s = limit. Returns `fallback` if rounding hides
-// the root.
-double firstCrossing(double c, double b, double a, double limit, double fallback) {
-    if (c <= 0.0) return 0.0;
+// The first time s in [0, limit] at which c + b s + a s^2 (a signed distance to a plane along
+// a parabola) reaches zero while decreasing: the body enters the plane. A body that starts on
+// the plane moving out (c ~ 0, b > 0) enters it again on its way back, at s = -b / a.
+// Returns `fallback` (clamped) if rounding hides the root.
+double firstEntry(double c, double b, double a, double limit, double fallback) {
+    if (c <= 0.0 && b <= 0.0) return 0.0;  // on or behind the plane and moving in
     double roots[2];
     int count = 0;
     if (std::abs(a) <= 1e-14 * (std::abs(b) + std::abs(c))) {
@@ -71,8 +72,11 @@ double firstCrossing(double c, double b, double a, double limit, double fallback
     }
     double best = std::numeric_limits<double>::infinity();
     const double slack = 1e-9 * limit;
-    for (int i = 0; i < count; ++i)
-        if (roots[i] >= -slack && roots[i] <= limit + slack) best = std::min(best, roots[i]);
+    for (int i = 0; i < count; ++i) {
+        const double r = roots[i];
+        const bool entering = b + 2.0 * a * r < 0.0;
+        if (entering && r >= -slack && r <= limit + slack) best = std::min(best, r);
+    }
     if (!std::isfinite(best)) return std::clamp(fallback, 0.0, limit);
     return std::clamp(best, 0.0, limit);
 }
@@ -203,24 +207,61 @@ private:
     // Ballistic flight for up to h seconds. Returns true when h was covered without an impact.
     bool advanceBallistic(double h) {
         const DVec3 p0 = mBody.position, v0 = mBody.velocity;
-        const DVec3 p1 = p0 + v0 * h + 0.5 * mGravity * h * h;
-        CastHit hit;
-        if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) {
-            mBody = {p1, v0 + mGravity * h};
-            return true;
+        double duration = h;
+        bool returnsToSurface = false;
+        if (mHasLastSurface) {
+            // After a bounce the body starts on the surface it left. A world need not report a
+            // surface the cast starts on (two-sided triangles, most engines' meshes), so the
+            // return to that surface's plane is solved here and checked with a probe.
+            const DVec3& n = mLastSurfaceNormal;
+            const double c = glm::dot(n, p0 - mLastSurfacePoint);
+            const double b = glm::dot(n, v0), a = 0.5 * glm::dot(n, mGravity);
+            if (c + b * h + a * h * h < 0.0) {
+                const double s = firstEntry(c, b, a, h, h);
+                if (s < h) {
+                    duration = s;
+                    returnsToSurface = true;
+                }
+            } else if (c > 2.0 * liftDistance()) {
+                mHasLastSurface = false;  // clear of it: the world's casts see it again
+            }
         }
-        // Solve the parabola against the plane tangent to the surface at the chord's hit.
-        const DVec3 n = toD(hit.normal);
-        const DVec3 hitPosition = toD(hit.position);
-        const double s = firstCrossing(glm::dot(n, p0 - hitPosition), glm::dot(n, v0),
-                                       0.5 * glm::dot(n, mGravity), h,
-                                       static_cast<double>(hit.fraction) * h);
+        const DVec3 p1 = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
+        CastHit hit;
+        if (mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) {
+            // Solve the parabola against the plane tangent to the surface at the chord's hit.
+            const DVec3 n = toD(hit.normal);
+            const DVec3 hitPosition = toD(hit.position);
+            const double s = firstEntry(glm::dot(n, p0 - hitPosition), glm::dot(n, v0),
+                                        0.5 * glm::dot(n, mGravity), duration,
+                                        static_cast<double>(hit.fraction) * duration);
+            arriveAt(p0, v0, s, n, hitPosition);
+            return false;
+        }
+        if (returnsToSurface) {
+            const DVec3& n = mLastSurfaceNormal;
+            const double lift = liftDistance();
+            if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
+                arriveAt(p0, v0, duration, toD(hit.normal), toD(hit.position));
+                return false;
+            }
+            mHasLastSurface = false;  // hopped off its edge
+            mBody = {p1, v0 + mGravity * duration};
+            mTime += duration;
+            return false;
+        }
+        mBody = {p1, v0 + mGravity * duration};
+        return true;
+    }
+
+    // Moves along the parabola from (p0, v0) for s seconds to an impact with the surface through
+    // `surfacePoint` with normal n, and responds to it.
+    void arriveAt(const DVec3& p0, const DVec3& v0, double s, const DVec3& n, const DVec3& surfacePoint) {
         DVec3 p = p0 + v0 * s + 0.5 * mGravity * s * s;
-        p -= n * glm::dot(n, p - hitPosition);  // onto the surface the world reported
+        p -= n * glm::dot(n, p - surfacePoint);  // onto the surface the world reported
         mBody = {p, v0 + mGravity * s};
         mTime += s;
         impact(n, s);
-        return false;
     }
 
     // Sliding on the contact surface for up to h seconds. Returns true when h was covered.
@@ -263,7 +304,7 @@ private:
             mWorld.castSegment(makeCast(p0 + n * lift, p1 + n * lift, mSettings.radius), hit)) {
             const DVec3 wall = toD(hit.normal);
             const DVec3 hitPosition = toD(hit.position) - n * lift;
-            const double s = firstCrossing(glm::dot(wall, p0 - hitPosition), glm::dot(wall, v0),
+            const double s = firstEntry(glm::dot(wall, p0 - hitPosition), glm::dot(wall, v0),
                                            0.5 * glm::dot(wall, a), duration,
                                            static_cast<double>(hit.fraction) * duration);
             DVec3 p = p0 + v0 * s + 0.5 * a * s * s;
@@ -328,6 +369,9 @@ private:
             v -= glm::dot(v, mContactNormal) * mContactNormal;
         }
         mBody.velocity = v;
+        mHasLastSurface = !mInContact;
+        mLastSurfaceNormal = n;
+        mLastSurfacePoint = mBody.position;
         mRecorder.add(mTime, TrajectoryEvent::Bounce, mBody.position, v, n);
     }
 
@@ -340,6 +384,9 @@ private:
     double mTime = 0.0;
     bool mEndRecorded = false;
     bool mInContact = false;
+    bool mHasLastSurface = false;
+    DVec3 mLastSurfaceNormal{0.0};
+    DVec3 mLastSurfacePoint{0.0};
     DVec3 mContactNormal{0.0};
     bool mAtRest = false;
     bool mStopped = false;
