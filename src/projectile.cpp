@@ -227,15 +227,11 @@ private:
             }
         }
         const DVec3 p1 = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
+        DVec3 offset(0.0);
         CastHit hit;
-        if (mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) {
-            // Solve the parabola against the plane tangent to the surface at the chord's hit.
-            const DVec3 n = toD(hit.normal);
-            const DVec3 hitPosition = toD(hit.position);
-            const double s = firstEntry(glm::dot(n, p0 - hitPosition), glm::dot(n, v0),
-                                        0.5 * glm::dot(n, mGravity), duration,
-                                        static_cast<double>(hit.fraction) * duration);
-            arriveAt(p0, v0, s, n, hitPosition);
+        if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, offset, hit)) {
+            const Impact found = locateImpact(p0, v0, mGravity, offset, duration, hit);
+            arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
         }
         if (returnsToSurface) {
@@ -252,6 +248,59 @@ private:
         }
         mBody = {p1, v0 + mGravity * duration};
         return true;
+    }
+
+    // Casts the chord p0 -> p1. A chord that starts on `surface` (the one just left, or slid
+    // on) may be reported as hitting it at once; then it is cast again lifted off that surface
+    // (`offset` says by how much), so that the surface cannot mask the obstacles ahead.
+    bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
+                  DVec3& offset, CastHit& hit) const {
+        offset = DVec3(0.0);
+        if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) return false;
+        if (!onSurface || hit.fraction > 1e-6f || glm::dot(toD(hit.normal), surface) < 0.999)
+            return true;
+        const DVec3 lift = surface * liftDistance();
+        CastHit blocker;
+        if (mWorld.castSegment(makeCast(p0, p0 + lift, mSettings.radius), blocker)) {
+            // Wedged: another surface is right above this one. That one is hit at once.
+            hit = blocker;
+            hit.fraction = 0.0f;
+            hit.position = toR(p0);
+            return true;
+        }
+        offset = lift;
+        return mWorld.castSegment(makeCast(p0 + offset, p1 + offset, mSettings.radius), hit);
+    }
+
+    struct Impact {
+        double time;         // since the start of the motion
+        DVec3 normal;
+        DVec3 surfacePoint;  // a point of the surface's tangent plane (body centre at contact)
+    };
+
+    // The first impact along p(s) = p0 + v0 s + a s^2 / 2, s in [0, limit], given the chord
+    // cast's `hit` (the cast ran `offset` away from the path). The parabola is solved against
+    // the plane tangent to the surface at the hit; the chord up to that time is cast again, so
+    // that a surface the parabola meets before the chord does (a corner) is not missed.
+    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, const DVec3& offset,
+                        double limit, CastHit hit) const {
+        Impact found{};
+        for (int attempt = 0;; ++attempt) {
+            found.normal = toD(hit.normal);
+            found.surfacePoint = toD(hit.position) - offset;
+            const DVec3& n = found.normal;
+            found.time = firstEntry(glm::dot(n, p0 - found.surfacePoint), glm::dot(n, v0),
+                                    0.5 * glm::dot(n, a), limit,
+                                    static_cast<double>(hit.fraction) * limit);
+            if (attempt == 4 || found.time <= 0.0) return found;
+            const DVec3 p = p0 + v0 * found.time + 0.5 * a * found.time * found.time;
+            CastHit earlier;
+            if (!mWorld.castSegment(makeCast(p0 + offset, p + offset, mSettings.radius), earlier) ||
+                earlier.fraction >= 1.0f - 1e-6f)
+                return found;
+            hit = earlier;
+            limit = found.time;
+        }
     }
 
     // Moves along the parabola from (p0, v0) for s seconds to an impact with the surface through
@@ -298,20 +347,16 @@ private:
         const DVec3 p0 = mBody.position;
         const DVec3 p1 = p0 + v0 * duration + 0.5 * a * duration * duration;
         const double lift = liftDistance();
-        // Lifted off the surface so that the floor itself is not hit; walls are.
         CastHit hit;
-        if (glm::length(p1 - p0) > 0.0 &&
-            mWorld.castSegment(makeCast(p0 + n * lift, p1 + n * lift, mSettings.radius), hit)) {
-            const DVec3 wall = toD(hit.normal);
-            const DVec3 hitPosition = toD(hit.position) - n * lift;
-            const double s = firstEntry(glm::dot(wall, p0 - hitPosition), glm::dot(wall, v0),
-                                           0.5 * glm::dot(wall, a), duration,
-                                           static_cast<double>(hit.fraction) * duration);
-            DVec3 p = p0 + v0 * s + 0.5 * a * s * s;
-            p -= wall * glm::dot(wall, p - hitPosition);
-            mBody = {p, v0 + a * s};
+        DVec3 offset(0.0);
+        if (castPath(p0, p1, true, n, offset, hit)) {
+            const Impact found = locateImpact(p0, v0, a, offset, duration, hit);
+            const double s = found.time;
+            // No projection onto the obstacle's plane here: it would lift the body off the
+            // surface it slides on when the obstacle leans over it.
+            mBody = {p0 + v0 * s + 0.5 * a * s * s, v0 + a * s};
             mTime += s;
-            impact(wall, s);
+            impact(found.normal, s);
             return false;
         }
         DVec3 v1 = v0 + a * duration;
