@@ -198,6 +198,19 @@ private:
                       mBody.position, mBody.velocity);
     }
 
+    // The normal speed of a one-micrometre hop off a surface with normal n (0 if gravity does
+    // not press on it): below it, a bounce turns into sliding contact.
+    double restSpeed(const DVec3& n) const {
+        return std::sqrt(2.0 * std::max(0.0, -glm::dot(mGravity, n)) * 1e-6);
+    }
+
+    // How far off a surface a body is placed after an impact: a few units in the last place
+    // of the position type, so that rounding to Real never puts it on the surface's far side.
+    static double skinDistance(const DVec3& p) {
+        const double magnitude = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        return 4.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
+    }
+
     double liftDistance() const {
         const DVec3& p = mBody.position;
         const double magnitude = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
@@ -230,7 +243,8 @@ private:
         DVec3 offset(0.0);
         CastHit hit;
         if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, offset, hit)) {
-            const Impact found = locateImpact(p0, v0, mGravity, offset, duration, hit);
+            const Impact found = locateImpact(p0, v0, mGravity, offset, duration, hit, mHasLastSurface,
+                                              mLastSurfaceNormal);
             arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
         }
@@ -257,18 +271,24 @@ private:
                   DVec3& offset, CastHit& hit) const {
         offset = DVec3(0.0);
         if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) return false;
-        if (!onSurface || hit.fraction > 1e-6f || glm::dot(toD(hit.normal), surface) < 0.999)
-            return true;
-        const DVec3 lift = surface * liftDistance();
+        if (!onSurface) return true;
+        // A hit is that surface when it lies in its plane with its normal.
+        const double lift = liftDistance();
+        const auto isThatSurface = [&](const CastHit& h) {
+            return glm::dot(toD(h.normal), surface) >= 0.999 &&
+                   std::abs(glm::dot(surface, toD(h.position) - p0)) <= lift;
+        };
+        if (!isThatSurface(hit)) return true;
         CastHit blocker;
-        if (mWorld.castSegment(makeCast(p0, p0 + lift, mSettings.radius), blocker)) {
+        if (mWorld.castSegment(makeCast(p0, p0 + surface * lift, mSettings.radius), blocker) &&
+            !isThatSurface(blocker)) {
             // Wedged: another surface is right above this one. That one is hit at once.
             hit = blocker;
             hit.fraction = 0.0f;
             hit.position = toR(p0);
             return true;
         }
-        offset = lift;
+        offset = surface * lift;
         return mWorld.castSegment(makeCast(p0 + offset, p1 + offset, mSettings.radius), hit);
     }
 
@@ -282,8 +302,8 @@ private:
     // cast's `hit` (the cast ran `offset` away from the path). The parabola is solved against
     // the plane tangent to the surface at the hit; the chord up to that time is cast again, so
     // that a surface the parabola meets before the chord does (a corner) is not missed.
-    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, const DVec3& offset,
-                        double limit, CastHit hit) const {
+    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, DVec3 offset, double limit,
+                        CastHit hit, bool onSurface, const DVec3& surface) const {
         Impact found{};
         for (int attempt = 0;; ++attempt) {
             found.normal = toD(hit.normal);
@@ -295,8 +315,7 @@ private:
             if (attempt == 4 || found.time <= 0.0) return found;
             const DVec3 p = p0 + v0 * found.time + 0.5 * a * found.time * found.time;
             CastHit earlier;
-            if (!mWorld.castSegment(makeCast(p0 + offset, p + offset, mSettings.radius), earlier) ||
-                earlier.fraction >= 1.0f - 1e-6f)
+            if (!castPath(p0, p, onSurface, surface, offset, earlier) || earlier.fraction >= 1.0f - 1e-6f)
                 return found;
             hit = earlier;
             limit = found.time;
@@ -308,6 +327,7 @@ private:
     void arriveAt(const DVec3& p0, const DVec3& v0, double s, const DVec3& n, const DVec3& surfacePoint) {
         DVec3 p = p0 + v0 * s + 0.5 * mGravity * s * s;
         p -= n * glm::dot(n, p - surfacePoint);  // onto the surface the world reported
+        p += n * skinDistance(p);                 // and surely on its front side
         mBody = {p, v0 + mGravity * s};
         mTime += s;
         impact(n, s);
@@ -350,7 +370,7 @@ private:
         CastHit hit;
         DVec3 offset(0.0);
         if (castPath(p0, p1, true, n, offset, hit)) {
-            const Impact found = locateImpact(p0, v0, a, offset, duration, hit);
+            const Impact found = locateImpact(p0, v0, a, offset, duration, hit, true, n);
             const double s = found.time;
             // No projection onto the obstacle's plane here: it would lift the body off the
             // surface it slides on when the obstacle leans over it.
@@ -383,8 +403,8 @@ private:
     // An impact at the current state with surface normal n, `elapsed` after the last event.
     void impact(const DVec3& n, double elapsed) {
         ++mEvents;
-        mConsecutiveStalls = elapsed > 1e-12 ? 0 : mConsecutiveStalls + 1;
-        if (mConsecutiveStalls >= 8) {  // wedged between surfaces: no progress in time
+        mConsecutiveStalls = elapsed > 1e-9 ? 0 : mConsecutiveStalls + 1;
+        if (mConsecutiveStalls >= 8) {  // wedged between surfaces: eight impacts within ns
             mAtRest = true;
             mContactNormal = n;
             return;
@@ -400,18 +420,26 @@ private:
         DVec3 v = bounceVelocity(mBody.velocity, n, mSettings.restitution, mSettings.friction);
         ++mResult.bounces;
         mResult.hitNormal = toF(n);
-        const double gn = glm::dot(mGravity, n);
-        // Below the normal speed of a one-micrometre hop, stay on the surface and slide:
-        // otherwise the bounces would shrink geometrically forever (Zeno).
-        const double restSpeed = std::sqrt(2.0 * std::max(0.0, -gn) * 1e-6);
-        if (gn < 0.0 && glm::dot(v, n) <= restSpeed) {
+        if (glm::dot(mGravity, n) < 0.0 && glm::dot(v, n) <= restSpeed(n)) {
+            // Too slow to leave this surface: slide on it (the bounces would otherwise shrink
+            // geometrically forever: Zeno).
             v -= glm::dot(v, n) * n;
             mInContact = true;
             mContactNormal = n;
-        } else if (mInContact && glm::dot(v, mContactNormal) > std::sqrt(2.0 * std::max(0.0, -glm::dot(mGravity, mContactNormal)) * 1e-6)) {
-            mInContact = false;  // bounced off the surface it was sliding on
         } else if (mInContact) {
-            v -= glm::dot(v, mContactNormal) * mContactNormal;
+            const DVec3& floor = mContactNormal;
+            if (glm::dot(v, floor) > restSpeed(floor)) {
+                mInContact = false;  // bounced up off the surface it was sliding on
+            } else {
+                // Still on its surface: the obstacle (a wall, or an overhang leaning over the
+                // surface) can only push along the surface.
+                const DVec3 along = n - glm::dot(n, floor) * floor;
+                const double length = glm::length(along);
+                if (length > 1e-6)
+                    v = bounceVelocity(mBody.velocity, along / length, mSettings.restitution,
+                                       mSettings.friction);
+                v -= glm::dot(v, floor) * floor;
+            }
         }
         mBody.velocity = v;
         mHasLastSurface = !mInContact;

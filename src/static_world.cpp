@@ -222,11 +222,10 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
     const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
     const double s0 = glm::dot(n, ray.origin - a);
     if (radius <= 0.0) {
-        // Two-sided and infinitely thin: a start on its plane cannot tell which side it came
-        // from, so the triangle is ignored (the caller moves away from a surface it just hit).
-        if (std::abs(s0) <= ray.tolerance) return;
+        // Two-sided and infinitely thin: no tolerance, the side is the sign of the start's
+        // distance; a start exactly on the plane cannot tell its side and ignores the triangle.
         const double dn = glm::dot(n, ray.direction);
-        if (s0 * dn >= 0.0) return;  // parallel or moving away
+        if (s0 * dn >= 0.0) return;  // on the plane, parallel, or moving away
         const double t = s0 / -dn;
         if (t > ray.length || t >= best.distance) return;
         const DVec3 p = ray.origin + ray.direction * t;
