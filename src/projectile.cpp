@@ -137,7 +137,6 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
                                    : (bounced ? TrajectoryEvent::Bounce : TrajectoryEvent::Step),
                      p, v, normal);
     }
-    if (steps == 0) recorder.add(0.0, TrajectoryEvent::End, p, v);
     result.position = toR(p);
     result.velocity = toF(v);
     result.time = static_cast<float>(static_cast<double>(steps) * dt);
@@ -470,11 +469,10 @@ private:
 }  // namespace
 
 Status validateProjectileSettings(const ProjectileSettings& settings) {
-    if (!isFinite(settings.gravity) || !std::isfinite(settings.step) ||
-        !std::isfinite(settings.restitution) || !std::isfinite(settings.friction) ||
-        !std::isfinite(settings.radius))
+    if (!(settings.step > 0.0f) || !std::isfinite(settings.step)) return Status::InvalidStep;
+    if (!isFinite(settings.gravity) || !std::isfinite(settings.restitution) ||
+        !std::isfinite(settings.friction) || !std::isfinite(settings.radius))
         return Status::NonFiniteInput;
-    if (!(settings.step > 0.0f)) return Status::InvalidStep;
     if (!(settings.restitution >= 0.0f && settings.restitution <= 1.0f))
         return Status::InvalidRestitution;
     if (!(settings.friction >= 0.0f)) return Status::InvalidFriction;

@@ -108,9 +108,11 @@ struct ProjectileResult {
 /// @param time        prediction time, e.g. a grenade's fuse [Units: s] [Limit: >= 0].
 /// @param settings    method and physical parameters.
 /// @param world       what to bounce off; may be null (free flight).
-/// @param trajectory  storage for the trajectory (may be empty): Start, then Step, Bounce,
-///                    Rest and Hit points, then End. When full, prediction continues and only
-///                    `trajectoryNeeded` keeps counting.
+/// @param trajectory  storage for the trajectory (may be empty). Stepped: Start, then one point
+///                    per step (Step, Bounce or Hit; the last step's is End), as the article
+///                    draws it. Exact: Start, Step points at multiples of `step`, Bounce, Rest
+///                    and Hit points at their exact times, then End at `time`. When full, the
+///                    prediction continues and only `trajectoryNeeded` keeps counting.
 /// @param out         the result; untouched unless Ok.
 /// @return Ok, or why the input was refused (see validateProjectileSettings), TooManySteps,
 ///         TooManyEvents (out is untouched) or NonFiniteResult.

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Builds the release build (build/), runs the benchmarks with repetitions, and prints how the
+# exact methods compare with the reference article's loops, from the medians of that one run:
+#   exact projectile / stepped loop       target <= 1.1
+#   exact vehicle / 4-iteration loop      target <= 1.0
+#
+# Usage: scripts/bench.sh [benchmark options...], e.g. --benchmark_filter=Vehicle
+# The JSON results go to build/bench.json (FORESIGHT_BENCH_OUT overrides). With
+# FORESIGHT_BENCH_STRICT=1 a missed target makes the script fail (timings are noisy: off by
+# default).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+./scripts/build.sh
+
+out=${FORESIGHT_BENCH_OUT:-build/bench.json}
+./build/bench/foresight_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$out" --benchmark_out_format=json "$@"
+
+# Lines "run_name median_cpu_time" from the JSON (all times in the same unit: ns by default).
+medians() {
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$out" <<'PY'
+import json, sys
+with open(sys.argv[1]) as f:
+    for b in json.load(f)["benchmarks"]:
+        if b.get("aggregate_name") == "median" and "cpu_time" in b:
+            print(b["run_name"], b["cpu_time"])
+PY
+    else
+        # Google Benchmark writes one "key": value per line; good enough without a JSON parser.
+        awk '
+            /"name":/ { name = $2; gsub(/[",]/, "", name) }
+            /"cpu_time":/ && name ~ /_median$/ {
+                value = $2; gsub(/,/, "", value); sub(/_median$/, "", name); print name, value
+            }' "$out"
+    fi
+}
+
+echo ""
+echo "Ratios of median CPU times (this run, $out):"
+medians | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+    { time[$1] = $2 }
+    function report(label, exact, reference, target,    ratio) {
+        if (!(exact in time) || !(reference in time) || time[reference] <= 0) {
+            printf "  %-40s not measured (filtered out?)\n", label
+            return
+        }
+        ratio = time[exact] / time[reference]
+        printf "  %-40s %5.2fx  (target <= %.1fx: %s)\n", label, ratio, target,
+               ratio <= target ? "met" : "MISSED"
+        if (ratio > target) missed = 1
+    }
+    END {
+        report("exact projectile / stepped loop", "BM_Projectile/Exact", "BM_Projectile/Stepped", 1.1)
+        report("exact vehicle / 4-iteration loop", "BM_Vehicle/Exact", "BM_Vehicle/Iterative4", 1.0)
+        if (missed && strict == 1) exit 1
+    }'

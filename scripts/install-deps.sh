@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Installs the Debian packages foresight needs to build, test and benchmark, when missing.
+#
+# Idempotent and silent when everything is present: it only asks dpkg which packages are
+# missing, and runs `apt-get update && apt-get install` for those alone (as root, or through
+# sudo). Set FORESIGHT_SKIP_DEPS=1 to skip the check (e.g. on a non-Debian machine where the
+# dependencies were installed another way).
+set -euo pipefail
+
+if [[ "${FORESIGHT_SKIP_DEPS:-0}" == "1" ]]; then
+    exit 0
+fi
+
+# Build tools, then libraries. Keep in sync with CONTRIBUTING.md.
+packages=(
+    cmake ninja-build g++ pkg-config
+    libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+if ! command -v dpkg-query >/dev/null 2>&1; then
+    echo "install-deps: dpkg-query not found (not a Debian-based system?)." >&2
+    echo "install-deps: install these yourself, then rerun with FORESIGHT_SKIP_DEPS=1:" >&2
+    echo "  ${packages[*]}" >&2
+    exit 1
+fi
+
+missing=()
+for package in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${db:Status-Status}' "$package" 2>/dev/null || true)
+    if [[ "$status" != "installed" ]]; then
+        missing+=("$package")
+    fi
+done
+
+if ((${#missing[@]} == 0)); then
+    exit 0
+fi
+
+echo "install-deps: installing missing packages: ${missing[*]}"
+if [[ "$(id -u)" == "0" ]]; then
+    sudo_cmd=()
+elif command -v sudo >/dev/null 2>&1; then
+    sudo_cmd=(sudo)
+else
+    echo "install-deps: not root and sudo is not available; as root, run:" >&2
+    echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+    exit 1
+fi
+
+# sudo resets the environment: pass DEBIAN_FRONTEND through env (no prompts in CI).
+apt_get=("${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get)
+if ! "${apt_get[@]}" update -qq ||
+    ! "${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"; then
+    echo "install-deps: apt-get failed to install: ${missing[*]}" >&2
+    exit 1
+fi
+echo "install-deps: done"

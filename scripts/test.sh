@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# The README's test command: builds and tests everything CI checks, and stops at the first
+# failure with a message saying which step failed.
+#
+#   1. build/       release build, warnings as errors; ctest
+#   2. install      `cmake --install build` into a temporary prefix; the standalone project in
+#                   examples/ is configured against it with find_package(foresight CONFIG),
+#                   built with warnings as errors, and run
+#   3. benchmark    build/bench/foresight_bench, very briefly (a smoke test, not a measurement)
+#   4. build-asan/  debug build with AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
+#                   errors, no benchmarks; ctest, halting on the first sanitizer report
+#
+# Each configuration is built once, with every core (FORESIGHT_JOBS overrides the count).
+# Cheap checks run first so that a failure shows up early.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+jobs=${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}
+start=$SECONDS
+current="installing dependencies"
+tmp=""
+
+on_exit() {
+    local status=$?
+    if [[ -n "$tmp" ]]; then rm -rf "$tmp"; fi
+    if ((status != 0)); then
+        echo "" >&2
+        echo "test.sh: FAILED while $current (exit status $status, after $((SECONDS - start)) s)" >&2
+    fi
+    exit "$status"
+}
+trap on_exit EXIT
+
+# step DESCRIPTION: prints a progress line and remembers what is running for the failure message.
+step() {
+    current=$1
+    echo ""
+    echo "==> [$((SECONDS - start)) s] $current"
+}
+
+# configure_and_build DIR CMAKE-ARGS...: a Ninja build tree in DIR (reused if it exists).
+configure_and_build() {
+    local dir=$1
+    shift
+    local configure=(cmake -S . -B "$dir" --log-level=WARNING "$@")
+    # A build tree keeps the generator it was made with: ask for Ninja only in a new one.
+    if [[ ! -f "$dir/CMakeCache.txt" ]]; then configure+=(-G Ninja); fi
+    "${configure[@]}"
+    cmake --build "$dir" --parallel "$jobs"
+}
+
+run_ctest() {
+    ctest --test-dir "$1" --output-on-failure --no-tests=error --timeout 300 --parallel "$jobs"
+}
+
+step "installing dependencies"
+./scripts/install-deps.sh
+
+step "building build/ (Release, -Werror)"
+configure_and_build build -DCMAKE_BUILD_TYPE=Release -DFORESIGHT_WERROR=ON -DFORESIGHT_SANITIZE= \
+    -DFORESIGHT_DOUBLE_PRECISION=OFF -DFORESIGHT_BUILD_TESTS=ON -DFORESIGHT_BUILD_TOOLS=ON \
+    -DFORESIGHT_BUILD_BENCHMARKS=ON
+
+step "testing build/"
+run_ctest build
+
+step "installing build/ into a temporary prefix and building examples/ against it"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/foresight-test.XXXXXX")
+cmake --install build --prefix "$tmp/prefix" >/dev/null
+# The installed package must not point back into the source or build tree.
+if grep -rl --include='*.cmake' -e "$root" "$tmp/prefix"; then
+    echo "test.sh: the installed CMake package refers to $root (files above)" >&2
+    exit 1
+fi
+cmake -S examples -B "$tmp/example" -G Ninja --log-level=WARNING -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$tmp/prefix" \
+    -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror"
+found=$(sed -n 's/^foresight_DIR:PATH=//p' "$tmp/example/CMakeCache.txt")
+if [[ "$found" != "$tmp/prefix/"* ]]; then
+    echo "test.sh: examples/ found foresight in '$found', not in the temporary prefix" >&2
+    exit 1
+fi
+cmake --build "$tmp/example" --parallel "$jobs"
+
+step "running the example (examples/hello_prediction.cpp)"
+"$tmp/example/hello_prediction"
+
+step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
+./build/bench/foresight_bench --benchmark_min_time=0.01
+
+step "building build-asan/ (Debug, address + undefined sanitizers, -Werror)"
+configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_WERROR=ON \
+    -DFORESIGHT_SANITIZE=address,undefined -DFORESIGHT_DOUBLE_PRECISION=OFF \
+    -DFORESIGHT_BUILD_TESTS=ON -DFORESIGHT_BUILD_TOOLS=ON -DFORESIGHT_BUILD_BENCHMARKS=OFF
+
+step "testing build-asan/ (sanitizers halt on the first error)"
+ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1 \
+    UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+    run_ctest build-asan
+
+current="finishing"
+echo ""
+echo "==> [$((SECONDS - start)) s] all checks passed"

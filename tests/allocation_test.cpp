@@ -1,0 +1,208 @@
+// The per-frame calls never allocate: global operator new/delete are replaced (in this binary
+// only) by counting versions; after the StaticWorld is built and the trajectory storage is
+// reserved, every prediction and cast must leave the count unchanged.
+
+#include "test_util.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <functional>
+#include <new>
+#include <vector>
+
+namespace {
+std::atomic<long> gAllocations{0};
+
+void* countedAllocate(std::size_t size) {
+    gAllocations.fetch_add(1, std::memory_order_relaxed);
+    if (size == 0) size = 1;
+    return std::malloc(size);
+}
+
+void* countedAllocateAligned(std::size_t size, std::align_val_t alignment) {
+    gAllocations.fetch_add(1, std::memory_order_relaxed);
+    const auto align = static_cast<std::size_t>(alignment);
+    std::size_t rounded = (size + align - 1) / align * align;
+    if (rounded == 0) rounded = align;
+    return std::aligned_alloc(align, rounded);
+}
+
+// Out of line so that GCC's -Wmismatched-new-delete does not pair it with the operators.
+[[gnu::noinline]] void countedRelease(void* p) noexcept { std::free(p); }
+} // namespace
+
+void* operator new(std::size_t size) {
+    if (void* p = countedAllocate(size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+    if (void* p = countedAllocate(size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return countedAllocate(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return countedAllocate(size); }
+void* operator new(std::size_t size, std::align_val_t alignment) {
+    if (void* p = countedAllocateAligned(size, alignment)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t size, std::align_val_t alignment) {
+    if (void* p = countedAllocateAligned(size, alignment)) return p;
+    throw std::bad_alloc();
+}
+void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return countedAllocateAligned(size, alignment);
+}
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return countedAllocateAligned(size, alignment);
+}
+void operator delete(void* p) noexcept { countedRelease(p); }
+void operator delete[](void* p) noexcept { countedRelease(p); }
+void operator delete(void* p, std::size_t) noexcept { countedRelease(p); }
+void operator delete[](void* p, std::size_t) noexcept { countedRelease(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { countedRelease(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { countedRelease(p); }
+void operator delete(void* p, std::align_val_t) noexcept { countedRelease(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { countedRelease(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { countedRelease(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { countedRelease(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { countedRelease(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { countedRelease(p); }
+
+namespace {
+
+using foresight::AngularFrame;
+using foresight::ProjectileMethod;
+using foresight::ProjectileResult;
+using foresight::ProjectileSettings;
+using foresight::Real;
+using foresight::RVec3;
+using foresight::StaticWorld;
+using foresight::Status;
+using foresight::TrajectoryPoint;
+using foresight::Vec3;
+
+RVec3 rv(double x, double y, double z) { return ftest::toR(ftest::DVec3(x, y, z)); }
+
+/// Allocations made while running `f` (f must not use gtest assertions that allocate).
+template <class F>
+long allocationsDuring(F&& f) {
+    const long before = gAllocations.load();
+    f();
+    return gAllocations.load() - before;
+}
+
+class Allocation : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
+        ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 0.0f, -1.0f), Real(-10)}), Status::Ok);
+        ASSERT_EQ(world.add(foresight::Sphere{rv(0.0, 0.5, 5.0), 1.0f}), Status::Ok);
+        ASSERT_EQ(world.add(foresight::OrientedBox{rv(2.0, 1.0, 7.0), Vec3(1.0f, 1.0f, 0.5f),
+                                                   glm::angleAxis(0.4f, Vec3(0.0f, 1.0f, 0.0f))}),
+                  Status::Ok);
+        ASSERT_EQ(world.add(foresight::Triangle{rv(-3, 0, 2), rv(3, 2, 3), rv(0, 0, 4)}), Status::Ok);
+        points.resize(4096);
+    }
+
+    StaticWorld world;
+    std::vector<TrajectoryPoint> points;
+};
+
+TEST_F(Allocation, CounterCountsAllocations) {
+    // The replacement is in effect (otherwise every check below would pass vacuously).
+    const long n = allocationsDuring([] {
+        auto* p = new int(3);
+        delete p;
+        std::vector<double> v(100);
+        (void)v;
+    });
+    EXPECT_EQ(n, 2);
+}
+
+TEST_F(Allocation, CharacterOrientationVehicleDoNotAllocate) {
+    foresight::PointState character;
+    character.velocity = Vec3(1.0f, 2.0f, 3.0f);
+    foresight::PointState outCharacter;
+    foresight::VehicleState vehicle;
+    vehicle.velocity = Vec3(0.0f, 0.0f, 10.0f);
+    vehicle.angularVelocity = Vec3(0.0f, 0.5f, 0.0f);
+    foresight::VehicleState outVehicle;
+    foresight::VehicleSettings settings;
+    foresight::Quat q;
+    Status s[8] = {};
+    const long n = allocationsDuring([&] {
+        s[0] = foresight::predictLinear(character, 0.5f, outCharacter);
+        s[1] = foresight::predictAccelerated(character, Vec3(0.0f, -9.81f, 0.0f), 0.5f, outCharacter);
+        s[2] = foresight::predictOrientation(glm::identity<foresight::Quat>(), Vec3(0.0f, 0.25f, 0.0f), AngularFrame::Body,
+                                             2.0f, q);
+        s[3] = foresight::predictVehicleExact(vehicle, 2.0f, settings, outVehicle);
+        s[4] = foresight::predictVehicleIterative(vehicle, 2.0f, 4, settings, outVehicle);
+        s[5] = foresight::predictVehicleIterative(vehicle, 2.0f, 1000, settings, outVehicle);
+        s[6] = foresight::predictLinear(character, -1.0f, outCharacter); // a refusal
+        s[7] = foresight::Status::Ok;
+        (void)foresight::statusMessage(s[6]);
+    });
+    EXPECT_EQ(n, 0);
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(s[i], Status::Ok) << i;
+    EXPECT_EQ(s[6], Status::NegativeTime);
+}
+
+TEST_F(Allocation, ProjectilesDoNotAllocate) {
+    for (const ProjectileMethod method : {ProjectileMethod::Exact, ProjectileMethod::Stepped}) {
+        for (const float radius : {0.0f, 0.2f}) {
+            ProjectileSettings settings;
+            settings.method = method;
+            settings.radius = radius;
+            settings.friction = 0.3f;
+            ProjectileResult result;
+            ProjectileResult truncated;
+            ProjectileResult free;
+            Status s[3] = {};
+            const long n = allocationsDuring([&] {
+                s[0] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, &world, points,
+                                                    result);
+                s[1] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, &world,
+                                                    std::span<TrajectoryPoint>(points.data(), 3), truncated);
+                s[2] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, nullptr, {}, free);
+            });
+            EXPECT_EQ(n, 0) << "method " << static_cast<int>(method) << " radius " << radius;
+            for (const Status st : s) EXPECT_EQ(st, Status::Ok);
+            EXPECT_GT(result.bounces, 0u); // the call did real work
+        }
+    }
+}
+
+TEST_F(Allocation, RestingAndCallbackWorldDoNotAllocate) {
+    // Contact handling (sliding, rest) and a user CallbackWorld.
+    const foresight::CollisionWorld& base = world;
+    auto forward = [&base](const foresight::SegmentCast& cast, foresight::CastHit& hit) { return base.castSegment(cast, hit); };
+    const foresight::CallbackWorld callbackWorld = foresight::CallbackWorld::wrap(forward);
+    ProjectileSettings settings;
+    settings.friction = 0.5f;
+    ProjectileResult result;
+    Status s = Status::NonFiniteInput;
+    const long n = allocationsDuring([&] {
+        s = foresight::predictProjectile(rv(0, 1, 0), Vec3(2.0f, 0.0f, 0.0f), 3.0f, settings, &callbackWorld, points, result);
+    });
+    EXPECT_EQ(n, 0);
+    EXPECT_EQ(s, Status::Ok);
+    EXPECT_TRUE(result.atRest);
+}
+
+TEST_F(Allocation, StaticWorldCastsDoNotAllocate) {
+    int hits = 0;
+    const long n = allocationsDuring([&] {
+        for (int i = 0; i < 200; ++i) {
+            foresight::SegmentCast cast;
+            cast.origin = rv(-4.0 + 0.04 * i, 6.0, 0.05 * i);
+            cast.displacement = Vec3(0.1f, -10.0f, 0.2f);
+            cast.radius = (i % 2 == 0) ? 0.0f : 0.3f;
+            foresight::CastHit hit;
+            hits += world.castSegment(cast, hit) ? 1 : 0;
+        }
+    });
+    EXPECT_EQ(n, 0);
+    EXPECT_EQ(hits, 200); // every cast reaches at least the floor
+}
+
+} // namespace

@@ -1,0 +1,778 @@
+// The `foresight` command-line tool, run as a user runs it: a child process with standard input,
+// output and error captured. Checks the scenario format's contract (/work/shared/spec/
+// scenario-format.md): results, number printing, every error rule, exit codes, determinism.
+//
+// Reference values come from closed forms (p + v t, the turning arc, sqrt(2 h / g)), never
+// from the tool itself.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef FORESIGHT_CLI_PATH
+#error "FORESIGHT_CLI_PATH must name the foresight binary"
+#endif
+#ifndef FORESIGHT_TEST_DATA_DIR
+#error "FORESIGHT_TEST_DATA_DIR must name tests/data"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const std::string kCli = FORESIGHT_CLI_PATH;
+const fs::path kData = FORESIGHT_TEST_DATA_DIR;
+
+struct CliRun {
+    int status = -1;     ///< exit status; 128 + signal if killed.
+    std::string out;     ///< standard output
+    std::string err;     ///< standard error
+    double seconds = 0;  ///< wall time
+};
+
+/// Runs the CLI with `args`, feeding `input` on standard input, in `directory` (if not empty).
+/// Kills it after 20 s (a hang is a failure, not a stuck test run).
+CliRun runCli(const std::vector<std::string>& args, const std::string& input = std::string(),
+           const fs::path& directory = fs::path()) {
+    CliRun run;
+    int in[2], out[2], err[2];
+    if (pipe(in) != 0 || pipe(out) != 0 || pipe(err) != 0) {
+        ADD_FAILURE() << "pipe: " << std::strerror(errno);
+        return run;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        ADD_FAILURE() << "fork: " << std::strerror(errno);
+        return run;
+    }
+    if (pid == 0) {
+        dup2(in[0], 0);
+        dup2(out[1], 1);
+        dup2(err[1], 2);
+        for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) close(fd);
+        if (!directory.empty() && chdir(directory.c_str()) != 0) _exit(126);
+        std::vector<char*> argv;
+        std::string program = kCli;
+        argv.push_back(program.data());
+        std::vector<std::string> copies = args;
+        for (auto& arg : copies) argv.push_back(arg.data());
+        argv.push_back(nullptr);
+        execv(program.c_str(), argv.data());
+        _exit(127);
+    }
+    close(in[0]);
+    close(out[1]);
+    close(err[1]);
+    signal(SIGPIPE, SIG_IGN); // the child may exit without reading all of its input
+
+    std::size_t written = 0;
+    bool inOpen = true;
+    if (input.empty()) {
+        close(in[1]);
+        inOpen = false;
+    }
+    bool outOpen = true, errOpen = true;
+    const auto deadline = start + std::chrono::seconds(20);
+    while (outOpen || errOpen) {
+        std::vector<pollfd> fds;
+        if (inOpen) fds.push_back({in[1], POLLOUT, 0});
+        if (outOpen) fds.push_back({out[0], POLLIN, 0});
+        if (errOpen) fds.push_back({err[0], POLLIN, 0});
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            kill(pid, SIGKILL);
+            ADD_FAILURE() << "the CLI did not finish within 20 s";
+            break;
+        }
+        if (poll(fds.data(), fds.size(), static_cast<int>(left.count())) < 0 && errno != EINTR) break;
+        for (const auto& fd : fds) {
+            if (fd.revents == 0) continue;
+            if (fd.fd == in[1]) {
+                const ssize_t n = write(in[1], input.data() + written, input.size() - written);
+                if (n > 0) written += static_cast<std::size_t>(n);
+                if (n < 0 || written == input.size()) {
+                    close(in[1]);
+                    inOpen = false;
+                }
+            } else {
+                char buffer[65536];
+                const ssize_t n = read(fd.fd, buffer, sizeof buffer);
+                if (n > 0) {
+                    (fd.fd == out[0] ? run.out : run.err).append(buffer, static_cast<std::size_t>(n));
+                } else {
+                    close(fd.fd);
+                    (fd.fd == out[0] ? outOpen : errOpen) = false;
+                }
+            }
+        }
+    }
+    if (inOpen) close(in[1]);
+    if (outOpen) close(out[0]);
+    if (errOpen) close(err[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return run;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
+
+/// A fresh temporary directory per test, removed afterwards. (Lower-case suite names, so that
+/// `ctest -R cli` selects these tests.)
+class cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string pattern = (fs::temp_directory_path() / "foresight_cli_XXXXXX").string();
+        ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+        mDir = pattern;
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(mDir, ec);
+    }
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = mDir / name;
+        fs::create_directories(path.parent_path());
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+    /// Runs `predict` on `scenario` written to a file.
+    CliRun predict(const std::string& scenario) const { return runCli({"predict", write("scenario.json", scenario).string()}); }
+
+    fs::path mDir;
+};
+
+/// Parses a successful run's output.
+Json parseOutput(const CliRun& run) {
+    EXPECT_EQ(run.status, 0) << run.err;
+    try {
+        return Json::parse(run.out);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "output is not JSON: " << e.what() << "\n" << run.out;
+        return Json::object();
+    }
+}
+
+const Json& byId(const Json& output, const std::string& id) {
+    for (const auto& prediction : output.at("predictions")) {
+        if (prediction.contains("id") && prediction["id"] == id) return prediction;
+    }
+    static const Json none = Json::object();
+    ADD_FAILURE() << "no prediction with id " << id;
+    return none;
+}
+
+std::array<double, 3> vec(const Json& value) {
+    return {value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>()};
+}
+
+std::string scenarioWith(const std::string& prediction, const std::string& world = "{}") {
+    return R"({"world": )" + world + R"(, "predictions": [)" + prediction + "]}";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Results
+
+TEST_F(cli, SpecExampleRunsWithExactValues) {
+    const CliRun run = runCli({"predict", (kData / "spec_example.json").string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    const Json output = parseOutput(run);
+    ASSERT_EQ(output.at("predictions").size(), 5u);
+
+    // Input order, ids echoed.
+    const char* ids[] = {"runner", "sprinter", "turret", "grenade", "car"};
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(output["predictions"][i]["id"], ids[i]);
+
+    // p + v t = [0, 0, 0] + [3, 0, 4] * 0.5: exact in binary.
+    const Json& runner = byId(output, "runner");
+    EXPECT_EQ(runner["model"], "linear");
+    EXPECT_EQ(vec(runner["position"]), (std::array<double, 3>{1.5, 0, 2}));
+    EXPECT_EQ(vec(runner["velocity"]), (std::array<double, 3>{3, 0, 4}));
+
+    // p + v t + a t^2 / 2 = [1.5, 0, 2 + 0.25]; v + a t = [3, 0, 5]: exact in binary.
+    const Json& sprinter = byId(output, "sprinter");
+    EXPECT_EQ(vec(sprinter["position"]), (std::array<double, 3>{1.5, 0, 2.25}));
+    EXPECT_EQ(vec(sprinter["velocity"]), (std::array<double, 3>{3, 0, 5}));
+
+    // 0.25 rad/s about +Y for 2 s: angle 0.5, quaternion (cos 0.25, 0, sin 0.25, 0), up to sign.
+    const Json& turret = byId(output, "turret");
+    const Json& q = turret["orientation"];
+    const double sign = q["w"].get<double>() < 0 ? -1.0 : 1.0;
+    EXPECT_NEAR(sign * q["w"].get<double>(), std::cos(0.25), 1e-6); // float quaternion
+    EXPECT_NEAR(sign * q["x"].get<double>(), 0.0, 1e-6);
+    EXPECT_NEAR(sign * q["y"].get<double>(), std::sin(0.25), 1e-6);
+    EXPECT_NEAR(sign * q["z"].get<double>(), 0.0, 1e-6);
+
+    const Json& car = byId(output, "car");
+    EXPECT_EQ(car["model"], "vehicle");
+    EXPECT_TRUE(car.contains("position") && car.contains("velocity") && car.contains("orientation"));
+}
+
+TEST_F(cli, SteppedGrenadeHasStartPlusOnePointPerStep) {
+    const Json output = parseOutput(runCli({"predict", (kData / "spec_example.json").string()}));
+    const Json& grenade = byId(output, "grenade");
+    EXPECT_EQ(grenade["model"], "projectile");
+    EXPECT_EQ(grenade["time"], 3);
+    EXPECT_EQ(grenade["at_rest"], false);
+    ASSERT_TRUE(grenade.contains("bounces"));
+    const Json& trajectory = grenade["trajectory"];
+    ASSERT_EQ(trajectory.size(), 151u); // ceil(3 / 0.02) = 150 steps, plus the start
+    EXPECT_EQ(trajectory.front()["event"], "start");
+    EXPECT_EQ(trajectory.front()["t"], 0);
+    EXPECT_EQ(vec(trajectory.front()["position"]), (std::array<double, 3>{0, 1.5, 0}));
+    EXPECT_EQ(trajectory.back()["event"], "end");
+    EXPECT_NEAR(trajectory.back()["t"].get<double>(), 3.0, 1e-5); // float time
+    int bounces = 0;
+    for (const auto& point : trajectory) {
+        const std::string event = point["event"];
+        EXPECT_TRUE(event == "start" || event == "step" || event == "bounce" || event == "end") << event;
+        if (event == "bounce") {
+            ++bounces;
+            EXPECT_EQ(vec(point["normal"]), (std::array<double, 3>{0, 1, 0})); // the floor
+        }
+    }
+    EXPECT_GT(bounces, 0);
+    EXPECT_EQ(vec(grenade["position"]), vec(trajectory.back()["position"]));
+}
+
+TEST_F(cli, ExactDropBouncesAtTheClosedFormTime) {
+    // Dropped from 1 m onto the floor: the impact is at sqrt(2 h / g); the result is at exactly t.
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0], "time": 0.75, "restitution": 0.5})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    const Json output = parseOutput(run);
+    const Json& p = output["predictions"][0];
+    EXPECT_EQ(p["method"], "exact");
+    EXPECT_EQ(p["bounces"], 1);
+    EXPECT_NEAR(p["time"].get<double>(), 0.75, 1e-6);
+    const double impact = std::sqrt(2.0 / 9.81);
+    bool found = false;
+    for (const auto& point : p["trajectory"]) {
+        if (point["event"] != "bounce") continue;
+        found = true;
+        EXPECT_NEAR(point["t"].get<double>(), impact, 1e-5); // float time
+        EXPECT_NEAR(point["position"][1].get<double>(), 0.0, 1e-5);
+        EXPECT_NEAR(point["velocity"][1].get<double>(), 0.5 * 9.81 * impact, 1e-4); // e * g * t
+        EXPECT_EQ(vec(point["normal"]), (std::array<double, 3>{0, 1, 0}));
+    }
+    EXPECT_TRUE(found);
+    // After the bounce: up at e g t_impact, then gravity.
+    const double s = 0.75 - impact;
+    EXPECT_NEAR(p["position"][1].get<double>(), 0.5 * 9.81 * impact * s - 0.5 * 9.81 * s * s, 1e-4);
+}
+
+TEST_F(cli, StopAtFirstHitAndTrajectoryFalse) {
+    const CliRun run = predict(scenarioWith(
+        R"({"id": 7, "model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 2,
+            "stop_at_first_hit": true, "trajectory": false})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    const Json output = parseOutput(run);
+    const Json& p = output["predictions"][0];
+    EXPECT_EQ(p["id"], 7); // integer ids echo as integers
+    EXPECT_FALSE(p.contains("trajectory"));
+    EXPECT_EQ(p["stopped_at_hit"], true);
+    EXPECT_EQ(p["bounces"], 0);
+    EXPECT_NEAR(p["time"].get<double>(), std::sqrt(2.0 / 9.81), 1e-5);
+    EXPECT_EQ(vec(p["hit_normal"]), (std::array<double, 3>{0, 1, 0}));
+}
+
+TEST_F(cli, LongTrajectoriesAreComplete) {
+    // Between two plates 1 cm apart, no gravity, 10 m/s, elastic: impacts at 0.0005 + k * 0.001 s,
+    // 1000 of them in 1 s (more than the first trajectory buffer holds), then 0.5 ms up to y = 5 mm.
+    const CliRun run = predict(R"({"gravity": [0, 0, 0],
+        "world": {"planes": [{"normal": [0, 1, 0], "distance": 0}, {"normal": [0, -1, 0], "distance": -0.01}]},
+        "predictions": [{"model": "projectile", "position": [0, 0.005, 0], "velocity": [0, 10, 0], "time": 1,
+                         "step": 1, "restitution": 1}]})");
+    const Json output = parseOutput(run);
+    const Json& p = output["predictions"][0];
+    EXPECT_EQ(p["bounces"], 1000);
+    ASSERT_EQ(p["trajectory"].size(), 1002u); // start, 1000 bounces, end
+    EXPECT_EQ(p["trajectory"].back()["event"], "end");
+    EXPECT_NEAR(p["position"][1].get<double>(), 0.005, 1e-6);
+}
+
+TEST_F(cli, MaxBouncesStopsAtTheNextImpact) {
+    // Dropped from 1 m, e = 0.5: impacts at t1 = sqrt(2 / g) and t1 + 2 * 0.5 * t1 = 2 t1.
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0], "time": 5, "max_bounces": 1})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    const Json output = parseOutput(run);
+    const Json& p = output["predictions"][0];
+    EXPECT_EQ(p["bounces"], 1);
+    EXPECT_EQ(p["stopped_at_hit"], true);
+    EXPECT_NEAR(p["time"].get<double>(), 2.0 * std::sqrt(2.0 / 9.81), 1e-5);
+    EXPECT_EQ(p["trajectory"].back()["event"], "hit");
+}
+
+TEST_F(cli, CarExactArcAndTheArticleLoopDiffer) {
+    const std::string car = R"("position": [0, 0, 0], "velocity": [0, 0, 10],
+        "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": 2)";
+    const CliRun run = predict(R"({"predictions": [
+        {"id": "iterative", "model": "vehicle", "method": "iterative", "iterations": 4, )" + car + R"(},
+        {"id": "exact", "model": "vehicle", )" + car + R"(}]})");
+    const Json output = parseOutput(run);
+    const auto iterative = vec(byId(output, "iterative")["position"]);
+    const auto exact = vec(byId(output, "exact")["position"]);
+    EXPECT_EQ(byId(output, "exact")["method"], "exact"); // the default
+    // The arc: radius v / w = 20 m, angle w t = 1 rad, turning +Z towards +X.
+    EXPECT_NEAR(exact[0], 20.0 * (1.0 - std::cos(1.0)), 1e-4); // float velocities, 2 s
+    EXPECT_NEAR(exact[1], 0.0, 1e-6);
+    EXPECT_NEAR(exact[2], 20.0 * std::sin(1.0), 1e-4);
+    const double dx = iterative[0] - exact[0], dz = iterative[2] - exact[2];
+    EXPECT_GT(std::sqrt(dx * dx + dz * dz), 1.0); // the article's 4 steps are about 2 m off
+}
+
+TEST_F(cli, WorldFrameAndInputQuaternionsAreNormalised) {
+    // A non-unit input quaternion (2, 0, 0, 0) is the identity; world frame about +Y.
+    const CliRun run = predict(scenarioWith(R"({"model": "orientation", "orientation": {"w": 2, "x": 0, "y": 0, "z": 0},
+        "angular_velocity": [0, 1, 0], "frame": "world", "time": 1})"));
+    const Json output = parseOutput(run);
+    const Json& q = output["predictions"][0]["orientation"];
+    const double sign = q["w"].get<double>() < 0 ? -1.0 : 1.0;
+    EXPECT_NEAR(sign * q["w"].get<double>(), std::cos(0.5), 1e-6);
+    EXPECT_NEAR(sign * q["y"].get<double>(), std::sin(0.5), 1e-6);
+}
+
+TEST_F(cli, NumbersPrintShort) {
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "linear", "position": [0.1, 0.2, 0.3], "velocity": [0.1, 0.2, 0.3], "time": 0})"));
+    ASSERT_EQ(run.status, 0) << run.err;
+    // Positions are doubles, velocities floats: both print as their shortest decimal.
+    EXPECT_NE(run.out.find("\"position\": [0.1, 0.2, 0.3]"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("\"velocity\": [0.1, 0.2, 0.3]"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("0.10000000149011612"), std::string::npos) << run.out;
+    // And they round-trip the float: 0.1f exactly.
+    const Json output = parseOutput(run);
+    EXPECT_EQ(static_cast<float>(output["predictions"][0]["velocity"][0].get<double>()), 0.1f);
+}
+
+TEST_F(cli, SameInputGivesByteIdenticalOutput) {
+    const std::string file = (kData / "spec_example.json").string();
+    const CliRun first = runCli({"predict", file});
+    const CliRun second = runCli({"predict", file});
+    ASSERT_EQ(first.status, 0) << first.err;
+    EXPECT_FALSE(first.out.empty());
+    EXPECT_EQ(first.out, second.out);
+}
+
+TEST_F(cli, StandardInputIsTheSameAsAFile) {
+    // From stdin, meshes are relative to the current directory: run in tests/data.
+    const std::string scenario = readFile(kData / "spec_example.json");
+    const CliRun fromFile = runCli({"predict", (kData / "spec_example.json").string()});
+    const CliRun fromStdin = runCli({"predict", "-"}, scenario, kData);
+    ASSERT_EQ(fromStdin.status, 0) << fromStdin.err;
+    EXPECT_EQ(fromStdin.out, fromFile.out);
+}
+
+TEST_F(cli, EmptyPredictionsGiveAnEmptyResult) {
+    const Json output = parseOutput(predict(R"({"predictions": []})"));
+    EXPECT_EQ(output, Json::parse(R"({"predictions": []})"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Meshes
+
+const char* kFloorObj = "# 20 x 20 floor at y = 0, a quad\n"
+                        "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 4 3 2\n";
+
+TEST_F(cli, MeshIsLoadedRelativeToTheScenarioFile) {
+    write("level/floor.obj", kFloorObj);
+    const fs::path scenario = write("level/scenario.json", scenarioWith(
+        R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
+        R"({"meshes": [{"file": "floor.obj"}]})"));
+    // CliRun from elsewhere: the mesh is found next to the scenario, not in the current directory.
+    const CliRun run = runCli({"predict", scenario.string()}, std::string(), kData);
+    const Json output = parseOutput(run);
+    const Json& p = output["predictions"][0];
+    EXPECT_EQ(p["stopped_at_hit"], true);
+    EXPECT_NEAR(p["time"].get<double>(), std::sqrt(4.0 / 9.81), 1e-5); // sqrt(2 h / g), h = 2
+}
+
+TEST_F(cli, MeshFromStandardInputIsRelativeToTheCurrentDirectory) {
+    write("floor.obj", kFloorObj);
+    const CliRun run = runCli({"predict", "-"}, scenarioWith(
+        R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
+        R"({"meshes": [{"file": "floor.obj"}]})"), mDir);
+    const Json output = parseOutput(run);
+    EXPECT_EQ(output["predictions"][0]["stopped_at_hit"], true);
+}
+
+TEST_F(cli, DegenerateMeshTrianglesAreSkippedWithAWarning) {
+    write("floor.obj", std::string(kFloorObj) + "v 0 0 0\nf 1 5 5\n");
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+        R"({"meshes": [{"file": "floor.obj"}]})"));
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find("warning: world.meshes[0]"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("degenerate"), std::string::npos) << run.err;
+}
+
+struct MeshCase {
+    const char* name;
+    const char* obj; // null: no file at all
+    const char* reason;
+};
+
+void PrintTo(const MeshCase& c, std::ostream* os) { *os << c.name; }
+
+class cli_mesh : public cli, public ::testing::WithParamInterface<MeshCase> {};
+
+TEST_P(cli_mesh, ExitsTwoNamingThePathAndTheReason) {
+    const MeshCase& c = GetParam();
+    if (c.obj != nullptr) write("mesh.obj", c.obj);
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+        R"({"meshes": [{"file": "mesh.obj"}]})"));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("world.meshes[0].file"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("mesh.obj"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(c.reason), std::string::npos) << run.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Meshes, cli_mesh,
+    ::testing::Values(MeshCase{"Missing", nullptr, "No such file or directory"},
+                      MeshCase{"IndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n", "out of range"},
+                      MeshCase{"RelativeIndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 -9\n", "out of range"},
+                      MeshCase{"ZeroIndex", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n", "malformed"},
+                      MeshCase{"NonFiniteVertex", "v 0 0 0\nv 1 0 0\nv 0 0 1e400\nf 1 2 3\n", "not finite"},
+                      MeshCase{"NoFaces", "v 0 0 0\nv 1 0 0\nv 0 0 1\n", "no triangles"},
+                      MeshCase{"Empty", "", "no triangles"},
+                      MeshCase{"OnlyDegenerate", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "no usable triangles"}),
+    [](const ::testing::TestParamInfo<MeshCase>& param) { return std::string(param.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// Invalid input: exit status 2, nothing on standard output, the path on standard error.
+
+struct ErrorCase {
+    const char* name;
+    std::string scenario;
+    std::string expected; ///< must appear in standard error
+};
+
+std::string linear(const std::string& extra) {
+    return scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1)" + extra + "}");
+}
+std::string projectile(const std::string& extra) {
+    return scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1)" + extra + "}");
+}
+std::string vehicle(const std::string& extra) {
+    return scenarioWith(R"({"model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 1], "time": 1,
+        "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 1, 0])" + extra + "}");
+}
+std::string orientation(const std::string& quaternion, const std::string& extra = std::string()) {
+    return scenarioWith(R"({"model": "orientation", "orientation": )" + quaternion +
+                        R"(, "angular_velocity": [0, 1, 0], "time": 1)" + extra + "}");
+}
+std::string world(const std::string& members) {
+    return R"({"world": {)" + members + R"(}, "predictions": []})";
+}
+
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
+class cli_error : public cli, public ::testing::WithParamInterface<ErrorCase> {};
+
+TEST_P(cli_error, ExitsTwoWithThePathOnStandardError) {
+    const ErrorCase& c = GetParam();
+    const CliRun run = predict(c.scenario);
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << "stderr: " << run.err;
+    EXPECT_EQ(run.err.find("internal error"), std::string::npos) << run.err;
+    EXPECT_LT(run.seconds, 2.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rules, cli_error,
+    ::testing::Values(
+        // Unknown keys (typos), everywhere.
+        ErrorCase{"UnknownTopLevelKey", R"({"gravty": [0, -9.81, 0], "predictions": []})", "gravty: unknown key"},
+        ErrorCase{"UnknownPredictionKey", linear(R"(, "tme": 2)"), "predictions[0].tme: unknown key"},
+        ErrorCase{"UnknownWorldKey", world(R"("plane": [])"), "world.plane: unknown key"},
+        ErrorCase{"UnknownShapeKey", world(R"("spheres": [{"center": [0, 0, 0], "radius": 1, "r": 2}])"),
+                  "world.spheres[0].r: unknown key"},
+        ErrorCase{"UnknownQuaternionKey", orientation(R"({"w": 1, "x": 0, "y": 0, "z": 0, "v": 0})"),
+                  "predictions[0].orientation.v: unknown key"},
+        ErrorCase{"DuplicateKey", linear(R"(, "time": 2)"), "predictions[0].time: duplicate key"},
+        // Types.
+        ErrorCase{"VectorOfStrings", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": "fast", "time": 1})"),
+                  "predictions[0].velocity: expected 3 finite numbers"},
+        ErrorCase{"VectorOfTwo", scenarioWith(R"({"model": "linear", "position": [0, 0], "velocity": [1, 0, 0], "time": 1})"),
+                  "predictions[0].position: expected 3 finite numbers"},
+        ErrorCase{"TimeAsString", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": "1"})"),
+                  "predictions[0].time: expected a finite number"},
+        ErrorCase{"BooleanAsNumber", projectile(R"(, "trajectory": 1)"), "predictions[0].trajectory: expected true or false"},
+        ErrorCase{"StopAtFirstHitAsString", projectile(R"(, "stop_at_first_hit": "yes")"), "predictions[0].stop_at_first_hit"},
+        ErrorCase{"IdAsObject", linear(R"(, "id": {"name": "x"})"), "predictions[0].id: expected a string or an integer"},
+        ErrorCase{"ModelAsNumber", scenarioWith(R"({"model": 3})"), "predictions[0].model: expected a string"},
+        ErrorCase{"PredictionNotAnObject", scenarioWith("[1, 2]"), "predictions[0]: expected an object"},
+        ErrorCase{"RootNotAnObject", "[]", "(root): expected a JSON object"},
+        ErrorCase{"PredictionsMissing", R"({"world": {}})", "predictions: missing required field"},
+        ErrorCase{"PredictionsNotAnArray", R"({"predictions": {}})", "predictions: expected an array"},
+        ErrorCase{"ShapesNotAnArray", world(R"("planes": {"normal": [0, 1, 0], "distance": 0})"), "world.planes: expected an array"},
+        // Non-finite numbers: 1e400 overflows a double; 1e39 overflows a float velocity.
+        ErrorCase{"HugeLiteral", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e400, 0, 0], "time": 1})"),
+                  "predictions[0].velocity[0]: expected a finite number"},
+        ErrorCase{"HugeLiteralInTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1e999})"),
+                  "predictions[0].time: expected a finite number"},
+        ErrorCase{"BeyondFloatRange", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e39, 0, 0], "time": 1})"),
+                  "predictions[0].velocity: expected 3 finite numbers"},
+        ErrorCase{"NonFiniteGravity", R"({"gravity": [0, -1e400, 0], "predictions": []})", "gravity[1]: expected a finite number"},
+        // Ranges.
+        ErrorCase{"NegativeTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1})"),
+                  "predictions[0].time: "},
+        ErrorCase{"ZeroStep", projectile(R"(, "step": 0)"), "predictions[0].step: "},
+        ErrorCase{"NegativeStep", projectile(R"(, "step": -0.02)"), "predictions[0].step: "},
+        ErrorCase{"ZeroIterations", vehicle(R"(, "method": "iterative", "iterations": 0)"), "predictions[0].iterations: "},
+        ErrorCase{"IterationsAboveTheCap", vehicle(R"(, "method": "iterative", "iterations": 2097152)"),
+                  "predictions[0].iterations: expected an integer in [1, 1048576]"},
+        ErrorCase{"FractionalIterations", vehicle(R"(, "iterations": 2.5)"), "predictions[0].iterations: "},
+        ErrorCase{"RestitutionAboveOne", projectile(R"(, "restitution": 1.5)"), "predictions[0].restitution: "},
+        ErrorCase{"NegativeRestitution", projectile(R"(, "restitution": -0.1)"), "predictions[0].restitution: "},
+        ErrorCase{"NegativeFriction", projectile(R"(, "friction": -1)"), "predictions[0].friction: "},
+        ErrorCase{"NegativeRadius", projectile(R"(, "radius": -0.1)"), "predictions[0].radius: "},
+        ErrorCase{"NegativeMaxBounces", projectile(R"(, "max_bounces": -1)"), "predictions[0].max_bounces: "},
+        ErrorCase{"ZeroQuaternion", orientation(R"({"w": 0, "x": 0, "y": 0, "z": 0})"), "predictions[0].orientation: "},
+        ErrorCase{"NonFiniteQuaternion", orientation(R"({"w": 1e400, "x": 0, "y": 0, "z": 0})"),
+                  "predictions[0].orientation.w: expected a finite number"},
+        ErrorCase{"QuaternionMissingComponent", orientation(R"({"w": 1, "x": 0, "y": 0})"),
+                  "predictions[0].orientation.z: missing required field"},
+        ErrorCase{"QuaternionAsArray", orientation("[1, 0, 0, 0]"), "predictions[0].orientation: expected a quaternion"},
+        ErrorCase{"ZeroPlaneNormal", world(R"("planes": [{"normal": [0, 0, 0], "distance": 0}])"), "world.planes[0].normal: "},
+        ErrorCase{"ZeroSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": 0}])"), "world.spheres[0].radius: "},
+        ErrorCase{"NegativeSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": -1}])"), "world.spheres[0].radius: "},
+        ErrorCase{"FlatBox", world(R"("boxes": [{"center": [0, 0, 0], "half_extents": [1, 0, 1],
+                                    "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}])"),
+                  "world.boxes[0].half_extents: "},
+        ErrorCase{"ZeroBoxOrientation", world(R"("boxes": [{"center": [0, 0, 0], "half_extents": [1, 1, 1],
+                                    "orientation": {"w": 0, "x": 0, "y": 0, "z": 0}}])"),
+                  "world.boxes[0].orientation: "},
+        ErrorCase{"DegenerateTriangle", world(R"("triangles": [[[0, 0, 0], [1, 0, 0], [2, 0, 0]]])"), "world.triangles[0]: "},
+        ErrorCase{"TriangleWithTwoVertices", world(R"("triangles": [[[0, 0, 0], [1, 0, 0]]])"), "world.triangles[0]: expected 3 vertices"},
+        ErrorCase{"TriangleVertex", world(R"("triangles": [[[0, 0, 0], [1, 0, 0], [0, "a", 1]]])"),
+                  "world.triangles[0][2]: expected 3 finite numbers"},
+        // Names.
+        ErrorCase{"UnknownModel", scenarioWith(R"({"model": "teleport"})"), "predictions[0].model: unknown model \"teleport\""},
+        ErrorCase{"DeadReckoningNotYet", scenarioWith(R"({"model": "dead_reckoning", "algorithm": "FPW"})"),
+                  "predictions[0].model: \"dead_reckoning\" is not supported yet"},
+        ErrorCase{"UnknownProjectileMethod", projectile(R"(, "method": "iterative")"), "predictions[0].method: unknown method"},
+        ErrorCase{"UnknownVehicleMethod", vehicle(R"(, "method": "stepped")"), "predictions[0].method: unknown method"},
+        ErrorCase{"UnknownFrame", orientation(R"({"w": 1, "x": 0, "y": 0, "z": 0})", R"(, "frame": "local")"),
+                  "predictions[0].frame: unknown frame"},
+        // Missing required fields.
+        ErrorCase{"MissingTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0]})"),
+                  "predictions[0].time: missing required field"},
+        ErrorCase{"MissingModel", scenarioWith(R"({"position": [0, 0, 0]})"), "predictions[0].model: missing required field"},
+        ErrorCase{"MissingAcceleration",
+                  scenarioWith(R"({"model": "accelerated", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1})"),
+                  "predictions[0].acceleration: missing required field"},
+        ErrorCase{"MissingPlaneDistance", world(R"("planes": [{"normal": [0, 1, 0]}])"), "world.planes[0].distance: missing required field"},
+        ErrorCase{"MissingMeshFile", world(R"("meshes": [{}])"), "world.meshes[0].file: missing required field"},
+        // Invalid JSON: the position is named.
+        ErrorCase{"InvalidJson", "{\"predictions\": [\n  {\"model\": linear}\n]}", "line 2, column"},
+        ErrorCase{"TrailingGarbage", R"({"predictions": []} x)", "invalid JSON"},
+        ErrorCase{"EmptyFile", "", "invalid JSON"},
+        ErrorCase{"OnlyWhitespace", " \n\t ", "invalid JSON"},
+        ErrorCase{"DeeplyNested", std::string(100000, '['), "nested deeper than"},
+        ErrorCase{"DeeplyNestedObjects", [] {
+                      std::string text;
+                      for (int i = 0; i < 50000; ++i) text += "{\"a\":";
+                      return text;
+                  }(), "nested deeper than"},
+        // Work caps: refused at once, not run for hours.
+        ErrorCase{"WorkCap", scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1e8})"),
+                  "predictions[0]: "},
+        ErrorCase{"WorkCapTinyStep", projectile(R"(, "step": 1e-30)"), "the cap is 1048576"}),
+    [](const ::testing::TestParamInfo<ErrorCase>& param) { return std::string(param.param.name); });
+
+TEST_F(cli, WorkCapIsReportedWithTheStepCountQuickly) {
+    const CliRun run = predict(scenarioWith(
+        R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1e8, "step": 0.02, "method": "stepped"})"));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("predictions[0]: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("5e9 steps"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("1048576"), std::string::npos) << run.err;
+    EXPECT_LT(run.seconds, 1.0);
+}
+
+TEST_F(cli, AllProblemsAreReportedInOnePass) {
+    const CliRun run = predict(R"({"predictions": [
+        {"model": "linear", "position": [0, 0, 0], "velocity": [1, 0], "time": -1},
+        {"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1, "step": 0, "restitution": 2},
+        {"model": "warp"}],
+        "world": {"spheres": [{"center": [0, 0, 0], "radius": 0}]}})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    for (const char* path : {"predictions[0].velocity: ", "predictions[0].time: ", "predictions[1].step: ",
+                             "predictions[1].restitution: ", "predictions[2].model: ", "world.spheres[0].radius: "}) {
+        EXPECT_NE(run.err.find(path), std::string::npos) << path << " missing in:\n" << run.err;
+    }
+    // One line per problem.
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 6) << run.err;
+}
+
+TEST_F(cli, UnreadableFilesNameThePathAndTheReason) {
+    const std::string missing = (mDir / "no-such-file.json").string();
+    CliRun run = runCli({"predict", missing});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(std::strerror(ENOENT)), std::string::npos) << run.err;
+
+    run = runCli({"predict", mDir.string()});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find(mDir.string()), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(std::strerror(EISDIR)), std::string::npos) << run.err;
+
+    run = runCli({"predict", "-"}, "");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("<stdin>"), std::string::npos) << run.err;
+}
+
+TEST_F(cli, ExtremeButValidInputsNeverPrintNaN) {
+    // Finite inputs whose results may overflow: either a result without NaN/inf or exit 2.
+    const std::vector<std::string> scenarios = {
+        scenarioWith(R"({"model": "linear", "position": [1e308, 0, 0], "velocity": [3e38, 0, 0], "time": 3e38})"),
+        scenarioWith(R"({"model": "accelerated", "position": [0, 0, 0], "velocity": [0, 0, 0], "acceleration": [3e38, 3e38, 0], "time": 3e38})"),
+        scenarioWith(R"({"model": "orientation", "orientation": {"w": 3e38, "x": 3e38, "y": 3e38, "z": 3e38},
+            "angular_velocity": [3e38, 3e38, 3e38], "time": 3e38})"),
+        scenarioWith(R"({"model": "orientation", "orientation": {"w": 1e-40, "x": 0, "y": 0, "z": 0},
+            "angular_velocity": [1e-40, 0, 0], "time": 1e-40})"),
+        scenarioWith(R"({"model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 3e38],
+            "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 3e38, 0], "time": 3e38})"),
+        scenarioWith(R"({"model": "vehicle", "method": "iterative", "iterations": 1048576, "position": [0, 0, 0],
+            "velocity": [0, 0, 3e38], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 1, 0], "time": 1})"),
+        scenarioWith(R"({"model": "projectile", "position": [0, 1e30, 0], "velocity": [3e38, 3e38, 0], "time": 1, "step": 0.5})"),
+        R"({"gravity": [0, -3e38, 0], "predictions": [{"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0],
+            "time": 1, "step": 0.5}], "world": {"planes": [{"normal": [0, 1, 0], "distance": 0}]}})",
+    };
+    for (const auto& scenario : scenarios) {
+        const CliRun run = predict(scenario);
+        EXPECT_TRUE(run.status == 0 || run.status == 2) << run.status << "\n" << scenario << "\n" << run.err;
+        if (run.status == 0) {
+            EXPECT_TRUE(Json::accept(run.out)) << run.out;
+            for (const char* bad : {"nan", "NaN", "inf", "Infinity", "null"}) {
+                EXPECT_EQ(run.out.find(bad), std::string::npos) << bad << " in " << run.out;
+            }
+        } else {
+            EXPECT_EQ(run.out, "");
+            EXPECT_NE(run.err.find("predictions[0]"), std::string::npos) << run.err;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Usage
+
+TEST_F(cli, VersionAndHelpExitZero) {
+    CliRun run = runCli({"--version"});
+    EXPECT_EQ(run.status, 0);
+    EXPECT_EQ(run.out, "foresight 0.1.0\n");
+    run = runCli({"--help"});
+    EXPECT_EQ(run.status, 0);
+    EXPECT_NE(run.out.find("predict"), std::string::npos);
+    EXPECT_NE(run.out.find("demo"), std::string::npos);
+    run = runCli({"predict", "--help"});
+    EXPECT_EQ(run.status, 0);
+    EXPECT_NE(run.out.find("FILE"), std::string::npos);
+}
+
+TEST_F(cli, UsageErrorsExitTwo) {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {}, {"--bogus"}, {"predict"}, {"frobnicate"}, {"predict", "a.json", "b.json"}, {"demo", "--json"}}) {
+        const CliRun run = runCli(args);
+        EXPECT_EQ(run.status, 2) << (args.empty() ? std::string("(no arguments)") : args[0]) << "\n" << run.err;
+        EXPECT_FALSE(run.err.empty());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Demo
+
+TEST_F(cli, DemoPrintsATable) {
+    const CliRun run = runCli({"demo"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    for (const char* text : {"runner", "grenade", "car", "difference", "bounces", "linear", "accelerated", "stepped", "exact"}) {
+        EXPECT_NE(run.out.find(text), std::string::npos) << text << "\n" << run.out;
+    }
+    // The car's exact arc ends at 20 (1 - cos 1), 0, 20 sin 1 = 9.194, 0, 16.829.
+    EXPECT_NE(run.out.find("9.194"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("16.829"), std::string::npos) << run.out;
+}
+
+TEST_F(cli, DemoJsonHasEveryPredictionWithTrajectories) {
+    const CliRun run = runCli({"demo", "--json", "-"});
+    const Json output = parseOutput(run);
+    ASSERT_GE(output["predictions"].size(), 3u);
+    int trajectories = 0;
+    for (const auto& prediction : output["predictions"]) {
+        EXPECT_TRUE(prediction.contains("model"));
+        if (prediction.contains("trajectory")) ++trajectories;
+    }
+    EXPECT_GE(trajectories, 2); // grenade stepped and exact
+    EXPECT_GE(byId(output, "grenade_stepped")["bounces"].get<int>(), 1);
+}
+
+TEST_F(cli, DemoScenarioIsTheCheckedInFileAndPredictReproducesTheDemo) {
+    const CliRun scenario = runCli({"demo", "--scenario", "-"});
+    ASSERT_EQ(scenario.status, 0) << scenario.err;
+    EXPECT_EQ(scenario.out, readFile(kData / "demo_scenario.json"));
+
+    const CliRun demo = runCli({"demo", "--json", "-"});
+    const CliRun predict = runCli({"predict", (kData / "demo_scenario.json").string()});
+    ASSERT_EQ(predict.status, 0) << predict.err;
+    EXPECT_EQ(predict.out, demo.out);
+}
+
+TEST_F(cli, DemoWritesFiles) {
+    const fs::path json = mDir / "demo.json";
+    const fs::path scenario = mDir / "scenario.json";
+    const CliRun run = runCli({"demo", "--json", json.string(), "--scenario", scenario.string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find("difference"), std::string::npos); // the table still goes to stdout
+    EXPECT_TRUE(Json::accept(readFile(json)));
+    EXPECT_EQ(readFile(scenario), readFile(kData / "demo_scenario.json"));
+
+    const CliRun bad = runCli({"demo", "--json", (mDir / "no-such-dir" / "x.json").string()});
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("no-such-dir"), std::string::npos) << bad.err;
+}
+
+TEST_F(cli, AccuracyPrintsTheTables) {
+    const CliRun run = runCli({"accuracy"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find("| iterations N |"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Projectile"), std::string::npos) << run.out;
+}
+
+} // namespace

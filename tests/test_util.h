@@ -1,0 +1,201 @@
+#pragma once
+/// @file test_util.h
+/// Small helpers shared by foresight's tests: double-precision conversions, vector and
+/// quaternion comparisons (quaternions up to sign), named-component quaternion construction.
+/// Reference values in the tests are computed in double from closed forms or independent
+/// brute force; these helpers only compare.
+
+#include <foresight/foresight.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+#include <sstream>
+#include <string>
+
+namespace ftest {
+
+using DVec3 = glm::dvec3;
+using DQuat = glm::dquat;
+
+/// Any glm 3-vector (float or double) as double.
+template <class T>
+DVec3 toD(const glm::vec<3, T, glm::defaultp>& v) {
+    return DVec3(static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z));
+}
+
+/// A float quaternion as double.
+inline DQuat toD(const foresight::Quat& q) {
+    DQuat r;
+    r.w = static_cast<double>(q.w);
+    r.x = static_cast<double>(q.x);
+    r.y = static_cast<double>(q.y);
+    r.z = static_cast<double>(q.z);
+    return r;
+}
+
+/// Identity (lets the comparisons take float or double quaternions).
+inline DQuat toD(const DQuat& q) { return q; }
+
+/// A double vector as the library's position type (float or double, as built).
+inline foresight::RVec3 toR(const DVec3& v) {
+    using R = foresight::Real;
+    return foresight::RVec3(static_cast<R>(v.x), static_cast<R>(v.y), static_cast<R>(v.z));
+}
+
+/// A double vector as float (the library's Vec3).
+inline foresight::Vec3 toF(const DVec3& v) {
+    return foresight::Vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+/// A float quaternion from named components (never the order-ambiguous constructor).
+inline foresight::Quat quatWXYZ(float w, float x, float y, float z) {
+    foresight::Quat q;
+    q.w = w;
+    q.x = x;
+    q.y = y;
+    q.z = z;
+    return q;
+}
+
+/// A double quaternion from named components.
+inline DQuat dquatWXYZ(double w, double x, double y, double z) {
+    DQuat q;
+    q.w = w;
+    q.x = x;
+    q.y = y;
+    q.z = z;
+    return q;
+}
+
+/// A double quaternion as float (the library's Quat).
+inline foresight::Quat toF(const DQuat& q) {
+    return quatWXYZ(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y),
+                    static_cast<float>(q.z));
+}
+
+/// The rotation by `angle` [rad] about the unit `axis`, in double (built by hand, not glm).
+inline DQuat dAxisAngle(const DVec3& axis, double angle) {
+    const double s = std::sin(0.5 * angle);
+    return dquatWXYZ(std::cos(0.5 * angle), axis.x * s, axis.y * s, axis.z * s);
+}
+
+/// Hamilton product in double, written out (independent of glm's operator*).
+inline DQuat dMul(const DQuat& a, const DQuat& b) {
+    return dquatWXYZ(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
+                     a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                     a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+                     a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+}
+
+/// Rotates `v` by the unit quaternion `q` in double: v' = v + 2w (u x v) + 2 u x (u x v).
+inline DVec3 dRotate(const DQuat& q, const DVec3& v) {
+    const DVec3 u(q.x, q.y, q.z);
+    const DVec3 t = 2.0 * glm::cross(u, v);
+    return v + q.w * t + glm::cross(u, t);
+}
+
+/// Largest component difference, as text for failure messages.
+inline std::string describe(const DVec3& v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return s.str();
+}
+
+inline std::string describe(const DQuat& q) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "{w " << q.w << ", x " << q.x << ", y " << q.y << ", z " << q.z << "}";
+    return s.str();
+}
+
+/// |a - b| (Euclidean) <= tol, for any mix of float/double vectors.
+template <class A, class B>
+::testing::AssertionResult vecNear(const A& a, const B& b, double tol) {
+    const DVec3 da = toD(a);
+    const DVec3 db = toD(b);
+    const double d = glm::length(da - db);
+    if (d <= tol) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db) << ": distance "
+                                         << d << " > " << tol;
+}
+
+/// Quaternions equal up to sign: min(|a - b|, |a + b|) <= tol (4-vector norm).
+template <class A, class B>
+::testing::AssertionResult quatNear(const A& a, const B& b, double tol) {
+    const DQuat da = toD(a);
+    const DQuat db = toD(b);
+    const double minus = std::sqrt((da.w - db.w) * (da.w - db.w) + (da.x - db.x) * (da.x - db.x) +
+                                   (da.y - db.y) * (da.y - db.y) + (da.z - db.z) * (da.z - db.z));
+    const double plus = std::sqrt((da.w + db.w) * (da.w + db.w) + (da.x + db.x) * (da.x + db.x) +
+                                  (da.y + db.y) * (da.y + db.y) + (da.z + db.z) * (da.z + db.z));
+    const double d = std::fmin(minus, plus);
+    if (d <= tol) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db)
+                                         << ": distance (up to sign) " << d << " > " << tol;
+}
+
+/// All components finite.
+template <class T>
+bool finite(const glm::vec<3, T, glm::defaultp>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+inline bool finite(const foresight::Quat& q) {
+    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+/// Length of a float quaternion, in double.
+inline double quatLength(const foresight::Quat& q) {
+    const DQuat d = toD(q);
+    return std::sqrt(d.w * d.w + d.x * d.x + d.y * d.y + d.z * d.z);
+}
+
+/// True when the bytes of two trivially copyable objects are identical (to check `out` is
+/// left untouched by a refused call).
+template <class T>
+bool sameBytes(const T& a, const T& b) {
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+/// FNV-1a over raw bytes, for determinism hashes.
+class Hasher {
+public:
+    void bytes(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) {
+            mHash ^= p[i];
+            mHash *= 1099511628211ull;
+        }
+    }
+    void add(float v) { bytes(&v, sizeof v); }
+    void add(double v) { bytes(&v, sizeof v); }
+    template <class T>
+    void add(const glm::vec<3, T, glm::defaultp>& v) {
+        add(v.x);
+        add(v.y);
+        add(v.z);
+    }
+    void add(const foresight::Quat& q) {
+        add(q.w);
+        add(q.x);
+        add(q.y);
+        add(q.z);
+    }
+    void add(std::uint64_t v) { bytes(&v, sizeof v); }
+    std::uint64_t value() const { return mHash; }
+
+private:
+    std::uint64_t mHash = 14695981039346656037ull;
+};
+
+} // namespace ftest
+
+#define EXPECT_VEC_NEAR(a, b, tol) EXPECT_TRUE(::ftest::vecNear((a), (b), (tol)))
+#define ASSERT_VEC_NEAR(a, b, tol) ASSERT_TRUE(::ftest::vecNear((a), (b), (tol)))
+#define EXPECT_QUAT_NEAR(a, b, tol) EXPECT_TRUE(::ftest::quatNear((a), (b), (tol)))

@@ -1,0 +1,72 @@
+/// `foresight`: the command-line tool of the foresight library.
+///   foresight predict FILE|-     scenario JSON in, result JSON out (the scenario format)
+///   foresight demo [--json FILE|-] [--scenario FILE|-]
+///   foresight accuracy             the article against the exact methods (Markdown tables)
+/// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
+
+#include "accuracy.h"
+#include "demo.h"
+#include "scenario.h"
+
+#include <foresight/config.h>
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace {
+
+int run(int argc, char** argv) {
+    CLI::App app{"foresight: movement prediction for games (characters, projectiles, vehicles)", "foresight"};
+    app.set_version_flag("--version", "foresight " FORESIGHT_VERSION_STRING);
+    app.require_subcommand(1);
+    app.footer("Exit status: 0 success, 2 invalid input or usage (nothing on standard output), 1 internal error.");
+
+    std::string scenarioFile;
+    CLI::App* predict = app.add_subcommand(
+        "predict", "Run every prediction of a JSON scenario and write the JSON result to standard output");
+    predict->add_option("FILE", scenarioFile, "scenario file, or - for standard input")->required()->type_name("FILE");
+
+    std::string jsonFile;
+    std::string demoScenarioFile;
+    CLI::App* demo = app.add_subcommand(
+        "demo", "Compare the reference article's predictions with exact ones on built-in scenarios");
+    demo->add_option("--json", jsonFile, "also write the full result (with trajectories) as JSON to FILE (- for stdout)")
+        ->type_name("FILE");
+    demo->add_option("--scenario", demoScenarioFile,
+                     "also write the demo's input scenario to FILE (- for stdout), for `foresight predict`")
+        ->type_name("FILE");
+
+    CLI::App* accuracy = app.add_subcommand(
+        "accuracy", "Measure how far the article's methods are from the exact ones (Markdown tables)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help and --version exit 0; every usage error exits 2 (CLI11 uses 105, 106, ...).
+        const int status = app.exit(error);
+        return status == 0 ? 0 : 2;
+    }
+
+    if (predict->parsed()) return foresight_cli::predictCommand(scenarioFile);
+    if (demo->parsed()) return foresight_cli::demoCommand(jsonFile, demoScenarioFile);
+    if (accuracy->parsed()) return foresight_cli::accuracyCommand();
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "foresight: out of memory\n";
+    } catch (const std::exception& error) {
+        std::cerr << "foresight: internal error: " << error.what() << '\n';
+    } catch (...) {
+        std::cerr << "foresight: internal error\n";
+    }
+    return 1;
+}

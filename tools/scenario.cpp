@@ -1,0 +1,951 @@
+#include "scenario.h"
+
+#include "obj_mesh.h"
+#include "text_file.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <set>
+#include <string_view>
+
+namespace foresight_cli {
+
+using foresight::Status;
+
+void Diagnostics::error(const std::string& path, const std::string& message) {
+    errors.push_back((path.empty() ? std::string("(root)") : path) + ": " + message);
+}
+
+void Diagnostics::warning(const std::string& path, const std::string& message) {
+    warnings.push_back((path.empty() ? std::string("(root)") : path) + ": " + message);
+}
+
+void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err) {
+    for (const auto& line : diagnostics.warnings) err << "warning: " << line << '\n';
+    for (const auto& line : diagnostics.errors) err << line << '\n';
+    err.flush();
+}
+
+const char* modelName(Model model) {
+    switch (model) {
+    case Model::Linear: return "linear";
+    case Model::Accelerated: return "accelerated";
+    case Model::Orientation: return "orientation";
+    case Model::Projectile: return "projectile";
+    case Model::Vehicle: return "vehicle";
+    }
+    return "?";
+}
+
+const char* eventName(foresight::TrajectoryEvent event) {
+    switch (event) {
+    case foresight::TrajectoryEvent::Start: return "start";
+    case foresight::TrajectoryEvent::Step: return "step";
+    case foresight::TrajectoryEvent::Bounce: return "bounce";
+    case foresight::TrajectoryEvent::Rest: return "rest";
+    case foresight::TrajectoryEvent::Hit: return "hit";
+    case foresight::TrajectoryEvent::End: return "end";
+    }
+    return "?";
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON text
+
+namespace {
+
+struct NestingTooDeep {
+    std::string path;
+};
+
+std::string jsonQuoted(const std::string& text) {
+    return Json(text).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+} // namespace
+
+bool parseJsonText(const std::string& text, const std::string& name, Json& document, Diagnostics& diagnostics) {
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        diagnostics.errors.push_back(name + ": invalid JSON: the input is empty");
+        return false;
+    }
+
+    // Tracks the path of every value while parsing, to name duplicate keys and too deep
+    // nesting. nlohmann's parser is iterative, but the callback stops absurd nesting early.
+    struct Frame {
+        bool object = false;
+        std::string path;
+        std::string key;
+        std::size_t index = 0;
+        std::set<std::string> keys;
+    };
+    std::vector<Frame> stack;
+    std::vector<std::string> duplicates;
+    auto childPath = [&stack]() -> std::string {
+        if (stack.empty()) return std::string();
+        const Frame& frame = stack.back();
+        if (frame.object) return frame.path.empty() ? frame.key : frame.path + "." + frame.key;
+        return (frame.path.empty() ? std::string("(root)") : frame.path) + "[" + std::to_string(frame.index) + "]";
+    };
+    auto nextElement = [&stack]() {
+        if (!stack.empty() && !stack.back().object) ++stack.back().index;
+    };
+    Json::parser_callback_t callback = [&](int depth, Json::parse_event_t event, Json& parsed) -> bool {
+        switch (event) {
+        case Json::parse_event_t::object_start:
+        case Json::parse_event_t::array_start:
+            if (depth >= kMaxJsonDepth) throw NestingTooDeep{childPath()};
+            stack.push_back(Frame{event == Json::parse_event_t::object_start, childPath(), {}, 0, {}});
+            break;
+        case Json::parse_event_t::key:
+            if (!stack.empty() && parsed.is_string()) {
+                Frame& frame = stack.back();
+                frame.key = parsed.get<std::string>();
+                if (!frame.keys.insert(frame.key).second) duplicates.push_back(childPath());
+            }
+            break;
+        case Json::parse_event_t::value: nextElement(); break;
+        case Json::parse_event_t::object_end:
+        case Json::parse_event_t::array_end:
+            if (!stack.empty()) stack.pop_back();
+            nextElement();
+            break;
+        }
+        return true;
+    };
+
+    try {
+        document = Json::parse(text, callback, true, false);
+    } catch (const Json::parse_error& error) {
+        std::string message = error.what();
+        // "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
+        if (const auto bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+            message.erase(0, bracket + 2);
+        }
+        diagnostics.errors.push_back(name + ": invalid JSON: " + message);
+        return false;
+    } catch (const Json::out_of_range& error) {
+        // nlohmann refuses number literals beyond the double range (e.g. 1e400, error 406) and
+        // stops there: name the value being read.
+        std::string message = error.what();
+        std::string literal;
+        if (const auto open = message.find('\''), close = message.rfind('\'');
+            open != std::string::npos && close > open) {
+            literal = message.substr(open, close - open + 1) + " ";
+        }
+        diagnostics.error(childPath(), "expected a finite number (" + literal + "is beyond the double range)");
+        return false;
+    } catch (const Json::exception& error) {
+        diagnostics.errors.push_back(name + ": invalid JSON: " + error.what());
+        return false;
+    } catch (const NestingTooDeep& error) {
+        diagnostics.errors.push_back(name + ": invalid JSON: arrays and objects nested deeper than " +
+                                     std::to_string(kMaxJsonDepth) + " levels (at " +
+                                     (error.path.empty() ? std::string("(root)") : error.path) + ")");
+        return false;
+    }
+    for (const auto& path : duplicates) diagnostics.error(path, "duplicate key (a later value would silently replace the first)");
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Validation
+
+namespace {
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string typeName(const Json& value) {
+    if (value.is_number()) return "a number";
+    if (value.is_string()) return "a string";
+    if (value.is_boolean()) return "a boolean";
+    if (value.is_null()) return "null";
+    if (value.is_array()) return "an array";
+    return "an object";
+}
+
+// Converters: each checks one JSON value, reports a problem at `path` and returns false.
+
+bool toDouble(const Json& value, const std::string& path, Diagnostics& d, double& out) {
+    if (!value.is_number() || !std::isfinite(value.get<double>())) {
+        d.error(path, value.is_number() ? "expected a finite number (got a number too large to represent)"
+                                        : "expected a finite number, got " + typeName(value));
+        return false;
+    }
+    out = value.get<double>();
+    return true;
+}
+
+bool toFloat(const Json& value, const std::string& path, Diagnostics& d, float& out) {
+    double number = 0;
+    if (!toDouble(value, path, d, number)) return false;
+    if (std::fabs(number) > static_cast<double>(FLT_MAX)) {
+        d.error(path, "expected a finite number (beyond the float range, |x| <= 3.4028235e38)");
+        return false;
+    }
+    out = static_cast<float>(number);
+    return true;
+}
+
+/// An array of 3 finite numbers; `floatRange` also requires |x| <= FLT_MAX.
+bool toTriple(const Json& value, const std::string& path, Diagnostics& d, double (&out)[3], bool floatRange) {
+    bool ok = value.is_array() && value.size() == 3;
+    if (ok) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Json& component = value[i];
+            if (!component.is_number() || !std::isfinite(component.get<double>())) {
+                ok = false;
+                break;
+            }
+            out[i] = component.get<double>();
+        }
+    }
+    if (!ok) {
+        d.error(path, "expected 3 finite numbers");
+        return false;
+    }
+    if (floatRange) {
+        for (const double component : out) {
+            if (std::fabs(component) > static_cast<double>(FLT_MAX)) {
+                d.error(path, "expected 3 finite numbers (beyond the float range, |x| <= 3.4028235e38)");
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool toPosition(const Json& value, const std::string& path, Diagnostics& d, foresight::RVec3& out) {
+    double components[3] = {0, 0, 0};
+    if (!toTriple(value, path, d, components, !foresight::kDoublePrecision)) return false;
+    out = foresight::RVec3(static_cast<foresight::Real>(components[0]), static_cast<foresight::Real>(components[1]),
+                           static_cast<foresight::Real>(components[2]));
+    return true;
+}
+
+bool toVector(const Json& value, const std::string& path, Diagnostics& d, foresight::Vec3& out) {
+    double components[3] = {0, 0, 0};
+    if (!toTriple(value, path, d, components, true)) return false;
+    out = foresight::Vec3(static_cast<float>(components[0]), static_cast<float>(components[1]),
+                          static_cast<float>(components[2]));
+    return true;
+}
+
+bool toInteger(const Json& value, const std::string& path, Diagnostics& d, std::int64_t low, std::int64_t high,
+               std::int64_t& out) {
+    const std::string expected = "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]";
+    if (!value.is_number()) {
+        d.error(path, expected + ", got " + typeName(value));
+        return false;
+    }
+    const double number = value.get<double>();
+    bool ok = std::isfinite(number) && number == std::trunc(number) && number >= static_cast<double>(low) &&
+              number <= static_cast<double>(high);
+    if (ok) {
+        if (value.is_number_unsigned()) {
+            ok = value.get<std::uint64_t>() <= static_cast<std::uint64_t>(high);
+            out = ok ? static_cast<std::int64_t>(value.get<std::uint64_t>()) : 0;
+        } else if (value.is_number_integer()) {
+            out = value.get<std::int64_t>();
+            ok = out >= low && out <= high;
+        } else {
+            out = static_cast<std::int64_t>(number);
+        }
+    }
+    if (!ok) {
+        d.error(path, expected);
+        return false;
+    }
+    return true;
+}
+
+/// Reads the members of one JSON object; members never asked for are reported as unknown.
+class Fields {
+public:
+    Fields(const Json& object, std::string path, Diagnostics& diagnostics)
+        : mObject(object), mPath(std::move(path)), mDiagnostics(diagnostics) {}
+
+    /// Path of a member, e.g. "predictions[0].velocity".
+    std::string at(const std::string& key) const { return mPath.empty() ? key : mPath + "." + key; }
+
+    /// The member, or null (reported when required).
+    const Json* get(const char* key, bool required) {
+        mKnown.insert(key);
+        const auto found = mObject.find(key);
+        if (found == mObject.end()) {
+            if (required) mDiagnostics.error(at(key), "missing required field");
+            return nullptr;
+        }
+        return &*found;
+    }
+
+    // Each reader returns true when the member is present and valid (then `out` is set);
+    // false when it is absent (reported if required) or invalid (reported).
+
+    bool number(const char* key, bool required, double& out) {
+        const Json* value = get(key, required);
+        return value != nullptr && toDouble(*value, at(key), mDiagnostics, out);
+    }
+    bool floatNumber(const char* key, bool required, float& out) {
+        const Json* value = get(key, required);
+        return value != nullptr && toFloat(*value, at(key), mDiagnostics, out);
+    }
+    bool position(const char* key, bool required, foresight::RVec3& out) {
+        const Json* value = get(key, required);
+        return value != nullptr && toPosition(*value, at(key), mDiagnostics, out);
+    }
+    bool vector(const char* key, bool required, foresight::Vec3& out) {
+        const Json* value = get(key, required);
+        return value != nullptr && toVector(*value, at(key), mDiagnostics, out);
+    }
+    bool boolean(const char* key, bool required, bool& out) {
+        const Json* value = get(key, required);
+        if (value == nullptr) return false;
+        if (!value->is_boolean()) {
+            mDiagnostics.error(at(key), "expected true or false, got " + typeName(*value));
+            return false;
+        }
+        out = value->get<bool>();
+        return true;
+    }
+    bool string(const char* key, bool required, std::string& out) {
+        const Json* value = get(key, required);
+        if (value == nullptr) return false;
+        if (!value->is_string()) {
+            mDiagnostics.error(at(key), "expected a string, got " + typeName(*value));
+            return false;
+        }
+        out = value->get<std::string>();
+        return true;
+    }
+    bool integer(const char* key, bool required, std::int64_t low, std::int64_t high, std::int64_t& out) {
+        const Json* value = get(key, required);
+        return value != nullptr && toInteger(*value, at(key), mDiagnostics, low, high, out);
+    }
+    /// A quaternion object {"w", "x", "y", "z"}, normalised.
+    bool quaternion(const char* key, bool required, foresight::Quat& out);
+    /// A time [s]: finite, >= 0.
+    bool time(const char* key, bool required, float& out) {
+        if (!floatNumber(key, required, out)) return false;
+        if (out < 0.0f) {
+            mDiagnostics.error(at(key), std::string(foresight::statusMessage(Status::NegativeTime)) + " (got " +
+                                            shortNumber(static_cast<double>(out)) + ")");
+            return false;
+        }
+        return true;
+    }
+
+    /// Reports every member that no reader asked for (typos).
+    void finish() {
+        for (const auto& [key, value] : mObject.items()) {
+            (void)value;
+            if (mKnown.count(key) != 0) continue;
+            std::string message = "unknown key";
+            std::string best;
+            std::size_t bestDistance = 3;
+            for (const auto& known : mKnown) {
+                const std::size_t distance = editDistance(key, known);
+                if (distance < bestDistance) {
+                    bestDistance = distance;
+                    best = known;
+                }
+            }
+            if (!best.empty()) message += " (did you mean " + jsonQuoted(best) + "?)";
+            mDiagnostics.error(at(key), message);
+        }
+    }
+
+    Diagnostics& diagnostics() { return mDiagnostics; }
+
+private:
+    const Json& mObject;
+    std::string mPath;
+    Diagnostics& mDiagnostics;
+    std::set<std::string> mKnown;
+};
+
+bool Fields::quaternion(const char* key, bool required, foresight::Quat& out) {
+    const Json* value = get(key, required);
+    if (value == nullptr) return false;
+    const std::string path = at(key);
+    if (!value->is_object()) {
+        mDiagnostics.error(path, "expected a quaternion {\"w\": ..., \"x\": ..., \"y\": ..., \"z\": ...}, got " +
+                                     typeName(*value));
+        return false;
+    }
+    Fields members(*value, path, mDiagnostics);
+    float w = 0, x = 0, y = 0, z = 0;
+    const bool okW = members.floatNumber("w", true, w);
+    const bool okX = members.floatNumber("x", true, x);
+    const bool okY = members.floatNumber("y", true, y);
+    const bool okZ = members.floatNumber("z", true, z);
+    members.finish();
+    if (!(okW && okX && okY && okZ)) return false;
+    foresight::Quat q = glm::identity<foresight::Quat>();
+    q.w = w;
+    q.x = x;
+    q.y = y;
+    q.z = z;
+    const Status status = foresight::normalizeQuaternion(q, out);
+    if (status != Status::Ok) {
+        mDiagnostics.error(path, foresight::statusMessage(status));
+        return false;
+    }
+    return true;
+}
+
+/// Calls `each(item, path)` for every element of the optional array member `key`.
+template <class Each>
+void forEachElement(Fields& fields, const char* key, Each&& each) {
+    const Json* array = fields.get(key, false);
+    if (array == nullptr) return;
+    if (!array->is_array()) {
+        fields.diagnostics().error(fields.at(key), "expected an array, got " + typeName(*array));
+        return;
+    }
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        each((*array)[i], fields.at(key) + "[" + std::to_string(i) + "]");
+    }
+}
+
+bool expectObject(const Json& value, const std::string& path, Diagnostics& d, const char* shape) {
+    if (value.is_object()) return true;
+    d.error(path, std::string("expected an object ") + shape + ", got " + typeName(value));
+    return false;
+}
+
+void addShape(foresight::StaticWorld& world, const auto& shape, const std::string& path, Diagnostics& d) {
+    const Status status = world.add(shape);
+    if (status != Status::Ok) d.error(path, foresight::statusMessage(status));
+}
+
+void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, foresight::StaticWorld& world,
+                Diagnostics& d) {
+    if (!expectObject(value, "world", d, "{\"planes\", \"boxes\", \"spheres\", \"triangles\", \"meshes\"}")) return;
+    Fields fields(value, "world", d);
+
+    forEachElement(fields, "planes", [&](const Json& item, const std::string& path) {
+        if (!expectObject(item, path, d, "{\"normal\", \"distance\"}")) return;
+        Fields plane(item, path, d);
+        foresight::Plane shape;
+        double distance = 0;
+        const bool okNormal = plane.vector("normal", true, shape.normal);
+        const bool okDistance = plane.number("distance", true, distance);
+        plane.finish();
+        if (!okNormal || !okDistance) return;
+        shape.distance = static_cast<foresight::Real>(distance);
+        const Status status = foresight::validatePlane(shape);
+        if (status != Status::Ok) {
+            d.error(status == Status::ZeroVector ? plane.at("normal") : path, foresight::statusMessage(status));
+            return;
+        }
+        addShape(world, shape, path, d);
+    });
+
+    forEachElement(fields, "boxes", [&](const Json& item, const std::string& path) {
+        if (!expectObject(item, path, d, "{\"center\", \"half_extents\", \"orientation\"}")) return;
+        Fields box(item, path, d);
+        foresight::OrientedBox shape;
+        const bool okCenter = box.position("center", true, shape.center);
+        const bool okExtents = box.vector("half_extents", true, shape.halfExtents);
+        const bool okOrientation = box.quaternion("orientation", true, shape.orientation);
+        box.finish();
+        if (okExtents) {
+            // The half extents alone, so that their problem is named even if others fail.
+            foresight::OrientedBox probe;
+            probe.halfExtents = shape.halfExtents;
+            const Status status = foresight::validateBox(probe);
+            if (status != Status::Ok) {
+                d.error(box.at("half_extents"), std::string(foresight::statusMessage(status)) +
+                                                    ": each half extent must be > 0");
+                return;
+            }
+        }
+        if (!okCenter || !okExtents || !okOrientation) return;
+        const Status status = foresight::validateBox(shape);
+        if (status != Status::Ok) {
+            d.error(path, foresight::statusMessage(status));
+            return;
+        }
+        addShape(world, shape, path, d);
+    });
+
+    forEachElement(fields, "spheres", [&](const Json& item, const std::string& path) {
+        if (!expectObject(item, path, d, "{\"center\", \"radius\"}")) return;
+        Fields sphere(item, path, d);
+        foresight::Sphere shape;
+        const bool okCenter = sphere.position("center", true, shape.center);
+        const bool okRadius = sphere.floatNumber("radius", true, shape.radius);
+        sphere.finish();
+        if (okRadius) {
+            foresight::Sphere probe;
+            probe.radius = shape.radius;
+            const Status status = foresight::validateSphere(probe);
+            if (status != Status::Ok) {
+                d.error(sphere.at("radius"), std::string(foresight::statusMessage(status)) + ": a sphere's radius must be > 0");
+                return;
+            }
+        }
+        if (!okCenter || !okRadius) return;
+        const Status status = foresight::validateSphere(shape);
+        if (status != Status::Ok) {
+            d.error(path, foresight::statusMessage(status));
+            return;
+        }
+        addShape(world, shape, path, d);
+    });
+
+    forEachElement(fields, "triangles", [&](const Json& item, const std::string& path) {
+        if (!item.is_array() || item.size() != 3) {
+            d.error(path, "expected 3 vertices [[x, y, z], [x, y, z], [x, y, z]]");
+            return;
+        }
+        foresight::Triangle shape;
+        const bool okA = toPosition(item[0], path + "[0]", d, shape.a);
+        const bool okB = toPosition(item[1], path + "[1]", d, shape.b);
+        const bool okC = toPosition(item[2], path + "[2]", d, shape.c);
+        if (!okA || !okB || !okC) return;
+        const Status status = foresight::validateTriangle(shape);
+        if (status != Status::Ok) {
+            d.error(path, foresight::statusMessage(status));
+            return;
+        }
+        addShape(world, shape, path, d);
+    });
+
+    forEachElement(fields, "meshes", [&](const Json& item, const std::string& path) {
+        if (!expectObject(item, path, d, "{\"file\"}")) return;
+        Fields mesh(item, path, d);
+        std::string file;
+        const bool okFile = mesh.string("file", true, file);
+        mesh.finish();
+        if (!okFile) return;
+        const std::string filePath = mesh.at("file");
+        if (file.empty() || file.find('\0') != std::string::npos) {
+            d.error(filePath, "expected a file name");
+            return;
+        }
+        std::filesystem::path resolved(file);
+        if (resolved.is_relative()) resolved = baseDirectory / resolved;
+        ObjMesh loaded;
+        std::string reason;
+        if (!loadObjMesh(resolved, loaded, reason)) {
+            const std::string where = resolved.string() == file ? std::string() : " (" + resolved.string() + ")";
+            d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + reason);
+            return;
+        }
+        for (const auto& warning : loaded.warnings) d.warning(filePath, jsonQuoted(file) + ": " + warning);
+        if (loaded.degenerateTriangles > 0) {
+            d.warning(filePath, jsonQuoted(file) + ": skipped " + std::to_string(loaded.degenerateTriangles) +
+                                    " degenerate triangle(s) (the first in face " +
+                                    std::to_string(loaded.firstDegenerateFace) + ")");
+        }
+        for (const auto& triangle : loaded.triangles) addShape(world, triangle, filePath, d);
+    });
+
+    fields.finish();
+}
+
+bool readFrame(Fields& fields, foresight::AngularFrame& frame) {
+    std::string name;
+    if (!fields.string("frame", false, name)) return false;
+    if (name == "body") {
+        frame = foresight::AngularFrame::Body;
+    } else if (name == "world") {
+        frame = foresight::AngularFrame::World;
+    } else {
+        fields.diagnostics().error(fields.at("frame"), "unknown frame " + jsonQuoted(name) + " (expected \"body\" or \"world\")");
+        return false;
+    }
+    return true;
+}
+
+/// A projectile setting checked alone by the library's validator (the defaults are valid), so
+/// that every bad setting is named, not only the first.
+template <class Set>
+void checkProjectileSetting(Fields& fields, const char* key, Set&& set) {
+    foresight::ProjectileSettings probe;
+    set(probe);
+    const Status status = foresight::validateProjectileSettings(probe);
+    if (status != Status::Ok) {
+        fields.diagnostics().error(fields.at(key), foresight::statusMessage(status));
+    }
+}
+
+void readProjectile(Fields& f, Prediction& p, const foresight::Vec3& gravity) {
+    auto& settings = p.projectile;
+    settings.gravity = gravity;
+    f.position("position", true, p.position);
+    f.vector("velocity", true, p.velocity);
+    const bool okTime = f.time("time", true, p.time);
+
+    std::string method;
+    if (f.string("method", false, method)) {
+        if (method == "exact") {
+            settings.method = foresight::ProjectileMethod::Exact;
+        } else if (method == "stepped") {
+            settings.method = foresight::ProjectileMethod::Stepped;
+        } else {
+            f.diagnostics().error(f.at("method"), "unknown method " + jsonQuoted(method) +
+                                                      " for a projectile (expected \"exact\" or \"stepped\")");
+        }
+    }
+    const bool okStep = f.floatNumber("step", false, settings.step);
+    if (okStep) checkProjectileSetting(f, "step", [&](auto& s) { s.step = settings.step; });
+    if (f.floatNumber("restitution", false, settings.restitution)) {
+        checkProjectileSetting(f, "restitution", [&](auto& s) { s.restitution = settings.restitution; });
+    }
+    if (f.floatNumber("friction", false, settings.friction)) {
+        checkProjectileSetting(f, "friction", [&](auto& s) { s.friction = settings.friction; });
+    }
+    if (f.floatNumber("radius", false, settings.radius)) {
+        checkProjectileSetting(f, "radius", [&](auto& s) { s.radius = settings.radius; });
+    }
+    std::int64_t maxBounces = 0;
+    const bool hasMaxBounces = f.integer("max_bounces", false, 0, foresight::kUnlimitedBounces, maxBounces);
+    bool stopAtFirstHit = false;
+    f.boolean("stop_at_first_hit", false, stopAtFirstHit);
+    if (stopAtFirstHit) {
+        settings.maxBounces = 0;
+    } else if (hasMaxBounces) {
+        settings.maxBounces = static_cast<std::uint32_t>(maxBounces);
+    }
+    f.boolean("trajectory", false, p.trajectory);
+
+    // The work cap, checked before anything is allocated for the trajectory.
+    if (okTime && (okStep || f.get("step", false) == nullptr) && settings.step > 0.0f && std::isfinite(settings.step)) {
+        const double quotient = static_cast<double>(p.time) / static_cast<double>(settings.step);
+        const bool tooMany = quotient > 2.0 * static_cast<double>(settings.maxSteps) ||
+                             foresight::steppedStepCount(p.time, settings.step) > settings.maxSteps;
+        if (tooMany) {
+            f.diagnostics().error(p.path, std::string(foresight::statusMessage(Status::TooManySteps)) +
+                                              ": time / step = " + shortNumber(quotient) + " steps, the cap is " +
+                                              std::to_string(settings.maxSteps));
+        }
+    }
+}
+
+void readVehicle(Fields& f, Prediction& p) {
+    f.position("position", true, p.position);
+    f.vector("velocity", true, p.velocity);
+    f.quaternion("orientation", true, p.orientation);
+    f.vector("angular_velocity", true, p.angularVelocity);
+    readFrame(f, p.frame);
+    f.time("time", true, p.time);
+    std::string method;
+    if (f.string("method", false, method)) {
+        if (method == "exact") {
+            p.vehicleIterative = false;
+        } else if (method == "iterative") {
+            p.vehicleIterative = true;
+        } else {
+            f.diagnostics().error(f.at("method"), "unknown method " + jsonQuoted(method) +
+                                                      " for a vehicle (expected \"exact\" or \"iterative\")");
+        }
+    }
+    std::int64_t iterations = 0;
+    if (f.integer("iterations", false, 1, foresight::kMaxVehicleIterations, iterations)) {
+        p.iterations = static_cast<int>(iterations);
+    }
+}
+
+void readPrediction(const Json& item, const std::string& path, Scenario& scenario, Diagnostics& d) {
+    if (!expectObject(item, path, d, "{\"model\", ...}")) return;
+    const std::size_t errorsBefore = d.errors.size();
+    Fields f(item, path, d);
+    Prediction p;
+    p.path = path;
+    if (const Json* id = f.get("id", false)) {
+        if (id->is_string() || id->is_number_integer()) {
+            p.id = *id;
+        } else {
+            d.error(f.at("id"), "expected a string or an integer, got " + typeName(*id));
+        }
+    }
+    std::string model;
+    if (!f.string("model", true, model)) return; // without a model the allowed keys are unknown
+    if (model == "linear") {
+        p.model = Model::Linear;
+    } else if (model == "accelerated") {
+        p.model = Model::Accelerated;
+    } else if (model == "orientation") {
+        p.model = Model::Orientation;
+    } else if (model == "projectile") {
+        p.model = Model::Projectile;
+    } else if (model == "vehicle") {
+        p.model = Model::Vehicle;
+    } else if (model == "dead_reckoning") {
+        d.error(f.at("model"), "\"dead_reckoning\" is not supported yet");
+        return;
+    } else {
+        d.error(f.at("model"), "unknown model " + jsonQuoted(model) +
+                                   " (expected linear, accelerated, orientation, projectile or vehicle)");
+        return;
+    }
+
+    switch (p.model) {
+    case Model::Linear:
+    case Model::Accelerated:
+        f.position("position", true, p.position);
+        f.vector("velocity", true, p.velocity);
+        if (p.model == Model::Accelerated) f.vector("acceleration", true, p.acceleration);
+        f.time("time", true, p.time);
+        break;
+    case Model::Orientation:
+        f.quaternion("orientation", true, p.orientation);
+        f.vector("angular_velocity", true, p.angularVelocity);
+        readFrame(f, p.frame);
+        f.time("time", true, p.time);
+        break;
+    case Model::Projectile: readProjectile(f, p, scenario.gravity); break;
+    case Model::Vehicle: readVehicle(f, p); break;
+    }
+    f.finish();
+    if (d.errors.size() == errorsBefore) scenario.predictions.push_back(std::move(p));
+}
+
+} // namespace
+
+bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
+                   Diagnostics& diagnostics) {
+    if (!document.is_object()) {
+        diagnostics.error("", "expected a JSON object {\"predictions\": [...]}, got " + typeName(document));
+        return false;
+    }
+    Fields root(document, "", diagnostics);
+    root.vector("gravity", false, scenario.gravity);
+    if (const Json* world = root.get("world", false)) buildWorld(*world, baseDirectory, scenario.world, diagnostics);
+    if (const Json* predictions = root.get("predictions", true)) {
+        if (!predictions->is_array()) {
+            diagnostics.error("predictions", "expected an array, got " + typeName(*predictions));
+        } else {
+            for (std::size_t i = 0; i < predictions->size(); ++i) {
+                readPrediction((*predictions)[i], "predictions[" + std::to_string(i) + "]", scenario, diagnostics);
+            }
+        }
+    }
+    root.finish();
+    return diagnostics.ok();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running
+
+namespace {
+
+bool finite(const foresight::RVec3& v) {
+    return std::isfinite(static_cast<double>(v.x)) && std::isfinite(static_cast<double>(v.y)) &&
+           std::isfinite(static_cast<double>(v.z));
+}
+bool finite(const foresight::Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const foresight::Quat& q) {
+    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+Status runProjectile(const Scenario& scenario, const Prediction& p, PredictionResult& result) {
+    const foresight::CollisionWorld* world = scenario.world.shapeCount() > 0 ? &scenario.world : nullptr;
+    std::vector<foresight::TrajectoryPoint> points;
+    if (p.trajectory) points.resize(foresight::trajectoryCapacity(p.time, p.projectile));
+    foresight::ProjectileResult out;
+    Status status = foresight::predictProjectile(p.position, p.velocity, p.time, p.projectile, world, points, out);
+    if (status == Status::Ok && p.trajectory && out.trajectoryNeeded > points.size()) {
+        // More bounces and contact changes than the first guess: run again with room for all.
+        points.resize(out.trajectoryNeeded);
+        status = foresight::predictProjectile(p.position, p.velocity, p.time, p.projectile, world, points, out);
+    }
+    if (status != Status::Ok) return status;
+    points.resize(std::min(out.trajectorySize, points.size()));
+    result.position = out.position;
+    result.velocity = out.velocity;
+    result.projectile = out;
+    result.trajectory = std::move(points);
+    return Status::Ok;
+}
+
+/// Runs one prediction; `detail` may explain a refusal.
+Status runPrediction(const Scenario& scenario, const Prediction& p, PredictionResult& result, std::string& detail) {
+    switch (p.model) {
+    case Model::Linear:
+    case Model::Accelerated: {
+        const foresight::PointState start{p.position, p.velocity};
+        foresight::PointState out;
+        const Status status = p.model == Model::Linear
+                                  ? foresight::predictLinear(start, p.time, out)
+                                  : foresight::predictAccelerated(start, p.acceleration, p.time, out);
+        if (status != Status::Ok) return status;
+        result.position = out.position;
+        result.velocity = out.velocity;
+        return Status::Ok;
+    }
+    case Model::Orientation:
+        return foresight::predictOrientation(p.orientation, p.angularVelocity, p.frame, p.time, result.orientation);
+    case Model::Projectile: {
+        const Status status = runProjectile(scenario, p, result);
+        if (status == Status::TooManySteps) {
+            detail = "time / step = " +
+                     shortNumber(static_cast<double>(p.time) / static_cast<double>(p.projectile.step)) +
+                     " steps, the cap is " + std::to_string(p.projectile.maxSteps);
+        } else if (status == Status::TooManyEvents) {
+            detail = "the cap is " + std::to_string(p.projectile.maxEvents);
+        }
+        return status;
+    }
+    case Model::Vehicle: {
+        foresight::VehicleState start;
+        start.position = p.position;
+        start.velocity = p.velocity;
+        start.orientation = p.orientation;
+        start.angularVelocity = p.angularVelocity;
+        foresight::VehicleSettings settings;
+        settings.frame = p.frame;
+        foresight::VehicleState out;
+        const Status status = p.vehicleIterative
+                                  ? foresight::predictVehicleIterative(start, p.time, p.iterations, settings, out)
+                                  : foresight::predictVehicleExact(start, p.time, settings, out);
+        if (status != Status::Ok) return status;
+        result.position = out.position;
+        result.velocity = out.velocity;
+        result.orientation = out.orientation;
+        return Status::Ok;
+    }
+    }
+    return Status::Ok;
+}
+
+bool resultIsFinite(const PredictionResult& result) {
+    if (!finite(result.position) || !finite(result.velocity) || !finite(result.orientation)) return false;
+    if (!std::isfinite(result.projectile.time) || !finite(result.projectile.hitNormal)) return false;
+    return std::all_of(result.trajectory.begin(), result.trajectory.end(), [](const foresight::TrajectoryPoint& point) {
+        return std::isfinite(point.time) && finite(point.position) && finite(point.velocity) && finite(point.normal);
+    });
+}
+
+} // namespace
+
+bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics) {
+    results.clear();
+    results.resize(scenario.predictions.size());
+    for (std::size_t i = 0; i < scenario.predictions.size(); ++i) {
+        const Prediction& p = scenario.predictions[i];
+        std::string detail;
+        Status status = runPrediction(scenario, p, results[i], detail);
+        if (status == Status::Ok && !resultIsFinite(results[i])) status = Status::NonFiniteResult;
+        if (status != Status::Ok) {
+            std::string message = foresight::statusMessage(status);
+            if (!detail.empty()) message += ": " + detail;
+            diagnostics.error(p.path, message);
+        }
+    }
+    return diagnostics.ok();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output
+
+Json resultJson(const Prediction& p, const PredictionResult& result) {
+    Json out = Json::object();
+    if (!p.id.is_null()) out["id"] = p.id;
+    out["model"] = modelName(p.model);
+    switch (p.model) {
+    case Model::Linear:
+    case Model::Accelerated:
+        out["position"] = jsonPosition(result.position);
+        out["velocity"] = jsonVector(result.velocity);
+        break;
+    case Model::Orientation: out["orientation"] = jsonQuaternion(result.orientation); break;
+    case Model::Projectile: {
+        const auto& r = result.projectile;
+        out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped" : "exact";
+        out["position"] = jsonPosition(r.position);
+        out["velocity"] = jsonVector(r.velocity);
+        out["time"] = jsonFloat(r.time);
+        out["bounces"] = r.bounces;
+        out["at_rest"] = r.atRest;
+        out["stopped_at_hit"] = r.stoppedAtHit;
+        if (r.stoppedAtHit) out["hit_normal"] = jsonVector(r.hitNormal);
+        if (p.trajectory) {
+            Json points = Json::array();
+            for (const auto& point : result.trajectory) {
+                Json entry = Json::object();
+                entry["t"] = jsonFloat(point.time);
+                entry["position"] = jsonPosition(point.position);
+                entry["velocity"] = jsonVector(point.velocity);
+                entry["event"] = eventName(point.event);
+                const bool impact = point.event == foresight::TrajectoryEvent::Bounce ||
+                                    point.event == foresight::TrajectoryEvent::Hit;
+                if (impact || point.normal != foresight::Vec3(0.0f)) entry["normal"] = jsonVector(point.normal);
+                points.push_back(std::move(entry));
+            }
+            out["trajectory"] = std::move(points);
+        }
+        break;
+    }
+    case Model::Vehicle:
+        out["method"] = p.vehicleIterative ? "iterative" : "exact";
+        if (p.vehicleIterative) out["iterations"] = p.iterations;
+        out["position"] = jsonPosition(result.position);
+        out["velocity"] = jsonVector(result.velocity);
+        out["orientation"] = jsonQuaternion(result.orientation);
+        break;
+    }
+    return out;
+}
+
+Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult>& results) {
+    Json predictions = Json::array();
+    for (std::size_t i = 0; i < scenario.predictions.size() && i < results.size(); ++i) {
+        predictions.push_back(resultJson(scenario.predictions[i], results[i]));
+    }
+    Json document = Json::object();
+    document["predictions"] = std::move(predictions);
+    return document;
+}
+
+int predictCommand(const std::string& file) {
+    Diagnostics diagnostics;
+    const std::string name = file == "-" ? std::string("<stdin>") : file;
+    std::string text;
+    std::string reason;
+    if (!readTextFile(file, text, reason)) {
+        std::cerr << name << ": cannot read: " << reason << '\n';
+        return 2;
+    }
+    Json document;
+    Scenario scenario;
+    std::vector<PredictionResult> results;
+    // Meshes are relative to the scenario file, or to the current directory for stdin.
+    const std::filesystem::path baseDirectory =
+        file == "-" ? std::filesystem::path() : std::filesystem::path(file).parent_path();
+    const bool ok = parseJsonText(text, name, document, diagnostics) &&
+                    buildScenario(document, baseDirectory, scenario, diagnostics) &&
+                    runScenario(scenario, results, diagnostics);
+    if (!ok) {
+        printDiagnostics(diagnostics, std::cerr);
+        return 2;
+    }
+    const std::string output = formatJson(resultDocument(scenario, results));
+    printDiagnostics(diagnostics, std::cerr);
+    if (!writeTextFile("-", output, reason)) {
+        std::cerr << "foresight: cannot write the result: " << reason << '\n';
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace foresight_cli

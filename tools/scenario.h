@@ -1,0 +1,110 @@
+#pragma once
+/// @file scenario.h
+/// The scenario format of `foresight predict` (docs: /work/shared/spec/scenario-format.md):
+/// JSON text -> validated library inputs -> library calls -> JSON result.
+///
+/// Every problem is reported as one line `path: message` (path as in `predictions[3].velocity`)
+/// and collected, so one run lists all of them. A field is optional exactly when the format
+/// gives it a default; everything else that a model uses is required.
+
+#include "json_output.h"
+
+#include <foresight/foresight.h>
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace foresight_cli {
+
+/// Problems (exit status 2) and warnings found while reading or running a scenario.
+struct Diagnostics {
+    std::vector<std::string> errors;   ///< one line each, "path: message".
+    std::vector<std::string> warnings; ///< one line each, printed with a "warning: " prefix.
+
+    void error(const std::string& path, const std::string& message);
+    void warning(const std::string& path, const std::string& message);
+    bool ok() const { return errors.empty(); }
+};
+
+/// The prediction models of the format.
+enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle };
+
+/// The model's name in the format ("linear", ...).
+const char* modelName(Model model);
+
+/// One validated entry of `predictions`.
+struct Prediction {
+    std::string path; ///< "predictions[i]", for messages.
+    Json id;          ///< echoed back; null when absent.
+    Model model = Model::Linear;
+    float time = 0;   ///< [Units: s]
+
+    // linear, accelerated, projectile, vehicle
+    foresight::RVec3 position{0};
+    foresight::Vec3 velocity{0};
+    // accelerated
+    foresight::Vec3 acceleration{0};
+    // orientation, vehicle
+    foresight::Quat orientation = glm::identity<foresight::Quat>();
+    foresight::Vec3 angularVelocity{0};
+    foresight::AngularFrame frame = foresight::AngularFrame::Body;
+    // projectile
+    foresight::ProjectileSettings projectile;
+    bool trajectory = true;
+    // vehicle
+    bool vehicleIterative = false;
+    int iterations = 4;
+};
+
+/// A validated scenario, ready to run.
+struct Scenario {
+    foresight::Vec3 gravity{0.0f, -9.81f, 0.0f};
+    foresight::StaticWorld world;
+    std::vector<Prediction> predictions;
+};
+
+/// What a prediction produced (the fields its model uses).
+struct PredictionResult {
+    foresight::RVec3 position{0};
+    foresight::Vec3 velocity{0};
+    foresight::Quat orientation = glm::identity<foresight::Quat>();
+    foresight::ProjectileResult projectile;                ///< projectile only.
+    std::vector<foresight::TrajectoryPoint> trajectory;    ///< projectile with "trajectory": true.
+};
+
+/// Deepest nesting of arrays and objects accepted in a scenario (the format needs 4).
+inline constexpr int kMaxJsonDepth = 64;
+
+/// Parses JSON text. Syntax errors (with line and column) and too deep nesting are reported
+/// as `name: ...` and return false; duplicate keys are reported with their path (the document
+/// is still returned, so that validation can find more problems).
+bool parseJsonText(const std::string& text, const std::string& name, Json& document, Diagnostics& diagnostics);
+
+/// Validates a parsed scenario and loads its meshes (relative to `baseDirectory`).
+/// Returns diagnostics.ok().
+bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
+                   Diagnostics& diagnostics);
+
+/// Runs every prediction; refusals of the library (work caps, overflow) become errors.
+/// Returns diagnostics.ok().
+bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics);
+
+/// The output document: {"predictions": [...]} in input order.
+Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult>& results);
+
+/// One prediction's output object.
+Json resultJson(const Prediction& prediction, const PredictionResult& result);
+
+/// Lower-case name of a trajectory event ("start", "step", "bounce", "rest", "hit", "end").
+const char* eventName(foresight::TrajectoryEvent event);
+
+/// Prints warnings and errors to `err`, one per line.
+void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err);
+
+/// `foresight predict FILE`: reads FILE ("-": standard input), writes the result to standard
+/// output. Returns the exit status: 0, or 2 with nothing on standard output.
+int predictCommand(const std::string& file);
+
+} // namespace foresight_cli
