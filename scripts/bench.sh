@@ -12,7 +12,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
-./scripts/build.sh
+./scripts/build.sh --target foresight_bench
 
 out=${FORESIGHT_BENCH_OUT:-build/bench.json}
 ./build/bench/foresight_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \

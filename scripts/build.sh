@@ -1,9 +1,17 @@
 #!/usr/bin/env bash
 # Configures and builds the release build in build/ (the CLI ends up at build/foresight).
-# Extra arguments go to the CMake configure step, e.g. `scripts/build.sh -DFORESIGHT_WERROR=ON`.
+#   scripts/build.sh [--target TARGET] [CMAKE-CONFIGURE-ARGS...]
+# e.g. `scripts/build.sh --target foresight_cli` or `scripts/build.sh -DFORESIGHT_WERROR=ON`.
+# Without --target everything is built (library, CLI, tests, benchmarks).
 # Used by demo.sh, bench.sh and the Makefile; installs missing dependencies first.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+target=()
+if [[ "${1:-}" == "--target" ]]; then
+    target=(--target "${2:?build.sh: --target needs a target name}")
+    shift 2
+fi
 
 ./scripts/install-deps.sh
 
@@ -19,7 +27,7 @@ if ! "${configure[@]}"; then
     echo "build.sh: configuring $build_dir/ failed (see above)" >&2
     exit 1
 fi
-if ! cmake --build "$build_dir" --parallel "$jobs"; then
+if ! cmake --build "$build_dir" --parallel "$jobs" "${target[@]}"; then
     echo "build.sh: building $build_dir/ failed (see above)" >&2
     exit 1
 fi

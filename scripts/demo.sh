@@ -5,5 +5,5 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" --target foresight_cli
 exec "$root/build/foresight" demo "$@"

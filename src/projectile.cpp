@@ -81,6 +81,10 @@ double firstEntry(double c, double b, double a, double limit, double fallback) {
     return std::clamp(best, 0.0, limit);
 }
 
+DVec3 decimalVector(const Vec3& v) {
+    return DVec3(decimalValue(v.x), decimalValue(v.y), decimalValue(v.z));
+}
+
 SegmentCast makeCast(const DVec3& from, const DVec3& to, float radius) {
     SegmentCast cast;
     cast.origin = toR(from);
@@ -97,8 +101,8 @@ bool isFinite(const ProjectileResult& r) {
 Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps,
                   const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
                   ProjectileResult& result) {
-    const double dt = settings.step;
-    const DVec3 g = toD(settings.gravity);
+    const double dt = decimalValue(settings.step);
+    const DVec3 g = decimalVector(settings.gravity);
     const double e = settings.restitution;
     DVec3 p = start, v = startVelocity;
     recorder.add(0.0, TrajectoryEvent::Start, p, v);
@@ -149,12 +153,12 @@ public:
     ExactRun(const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
              ProjectileResult& result)
         : mSettings(settings), mWorld(world), mRecorder(recorder), mResult(result),
-          mGravity(toD(settings.gravity)) {}
+          mGravity(decimalVector(settings.gravity)) {}
 
     Status run(const DVec3& start, const DVec3& startVelocity, double endTime) {
         mBody = {start, startVelocity};
         mRecorder.add(0.0, TrajectoryEvent::Start, mBody.position, mBody.velocity);
-        const double step = mSettings.step;
+        const double step = decimalValue(mSettings.step);
         std::uint64_t gridIndex = 0;  // step points recorded so far
         while (mTime < endTime && !mStopped) {
             const double gridTime =
@@ -482,10 +486,10 @@ Status validateProjectileSettings(const ProjectileSettings& settings) {
 
 std::uint64_t steppedStepCount(float time, float step) {
     if (!(time > 0.0f) || !(step > 0.0f) || !std::isfinite(time) || !std::isfinite(step)) return 0;
-    const double quotient = static_cast<double>(time) / static_cast<double>(step);
+    const double quotient = decimalValue(time) / decimalValue(step);
     if (!(quotient < 9.0e18)) return std::numeric_limits<std::uint64_t>::max();
-    // Both operands are floats (relative rounding 6e-8 each): 3 / 0.02f is 150.0000034, which
-    // means 150 steps. Quotients within 1e-6 (relative) of an integer are that integer.
+    // Taken at their decimal values (3 / 0.02, not 3 / 0.0199999995), and quotients within 1e-6
+    // (relative) of an integer are that integer, so that rounding never adds a step.
     const double nearest = std::nearbyint(quotient);
     if (std::abs(quotient - nearest) <= 1e-6 * std::max(1.0, quotient))
         return static_cast<std::uint64_t>(nearest);
@@ -518,7 +522,7 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
         status = runStepped(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
     } else {
         ExactRun run(settings, collisionWorld, recorder, result);
-        status = run.run(toD(position), toD(velocity), static_cast<double>(time));
+        status = run.run(toD(position), toD(velocity), decimalValue(time));
     }
     if (status != Status::Ok) return status;
     if (!isFinite(result)) return Status::NonFiniteResult;

@@ -1,5 +1,10 @@
 #include <foresight/status.h>
 
+#include "internal.h"
+
+#include <charconv>
+#include <cstdlib>
+
 FORESIGHT_NAMESPACE_BEGIN
 
 const char* versionString() { return FORESIGHT_VERSION_STRING; }
@@ -23,5 +28,16 @@ const char* statusMessage(Status status) {
     }
     return "unknown status";
 }
+
+namespace detail {
+double decimalValue(float x) {
+    if (!std::isfinite(x)) return x;
+    char text[32];
+    const auto written = std::to_chars(text, text + sizeof(text) - 1, x);
+    if (written.ec != std::errc()) return x;
+    *written.ptr = '\0';
+    return std::strtod(text, nullptr);
+}
+}  // namespace detail
 
 FORESIGHT_NAMESPACE_END

@@ -16,7 +16,9 @@
 ///   micrometre), the projectile slides on it (constant tangential gravity, Coulomb friction)
 ///   and comes to rest when static friction holds it: reported as `atRest`.
 ///
-/// No allocation: the trajectory is written into caller-provided storage.
+/// No allocation: the trajectory is written into caller-provided storage. Computation runs in
+/// double; the float inputs `time`, `step` and `gravity` are taken at the decimal value they were
+/// written as (0.02f means 0.02 s, so step 5 is at 0.1 s, not 0.099999994 s).
 
 #include <foresight/world.h>
 
