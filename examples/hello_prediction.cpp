@@ -106,6 +106,8 @@ bool predictGrenade(const StaticWorld& world) {
             "predictProjectile"))
         return false;
 
+    // With restitution 0.5 each hop is a quarter as high as the one before, so the last bounces
+    // come quickly; when a hop would be under a micrometre the grenade slides, then rests.
     std::printf("grenade (exact):\n");
     // Only the first trajectorySize points were written (trajectoryNeeded says how many the
     // whole path has, if the buffer was too small).

@@ -5,9 +5,9 @@
 #   exact vehicle / 4-iteration loop      target <= 1.0
 #
 # Usage: scripts/bench.sh [benchmark options...], e.g. --benchmark_filter=Vehicle
-# The JSON results go to build/bench.json (FORESIGHT_BENCH_OUT overrides). With
-# FORESIGHT_BENCH_STRICT=1 a missed target makes the script fail (timings are noisy: off by
-# default).
+# The JSON results go to build/bench.json (FORESIGHT_BENCH_OUT overrides, relative to the
+# repository root). With FORESIGHT_BENCH_STRICT=1 a missed target makes the script fail
+# (timings are noisy: off by default).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"

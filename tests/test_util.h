@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
@@ -36,6 +38,16 @@ inline DQuat toD(const foresight::Quat& q) {
     r.y = static_cast<double>(q.y);
     r.z = static_cast<double>(q.z);
     return r;
+}
+
+/// The decimal value a float was written as: its shortest round-trip decimal representation,
+/// read back as a double (0.02f -> 0.02, not 0.0199999995529651641845703125). The projectile
+/// predictor documents that it takes `time`, `step` and `gravity` at these values.
+inline double decimal(float value) {
+    char buffer[64];
+    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer - 1, value);
+    *r.ptr = '\0';
+    return std::strtod(buffer, nullptr);
 }
 
 /// Identity (lets the comparisons take float or double quaternions).

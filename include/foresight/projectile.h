@@ -81,8 +81,9 @@ struct ProjectileSettings {
 /// InvalidRestitution, InvalidFriction or InvalidRadius.
 Status validateProjectileSettings(const ProjectileSettings& settings);
 
-/// Number of steps the Stepped method runs for `time`: `ceil(time / step)`, with quotients
-/// within 1e-9 (relative) of an integer rounded to it (3 / 0.02 is 150 steps, not 151).
+/// Number of steps the Stepped method runs for `time`: `ceil(time / step)` on the decimal values
+/// of both (0.02f is taken as 0.02), with quotients within 1e-6 (relative) of an integer rounded
+/// to it, so that rounding never adds a step (3 / 0.02 is 150 steps, not 151).
 std::uint64_t steppedStepCount(float time, float step);
 
 /// Trajectory storage that is always enough for the Stepped method, and for Exact when there

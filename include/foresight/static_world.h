@@ -14,8 +14,9 @@ FORESIGHT_NAMESPACE_BEGIN
 /// A one-sided infinite plane: the points x with `dot(normal, x) = distance`. The front side
 /// is where the normal points; behind it is solid (a floor, a wall of an arena).
 struct Plane {
-    Vec3 normal{0, 1, 0}; ///< [Limit: non-zero]; normalised when added.
-    Real distance = 0;    ///< signed distance of the plane from the origin along normal [Units: m].
+    Vec3 normal{0, 1, 0}; ///< [Limit: non-zero]; normalised when added (distance with it).
+    Real distance = 0;    ///< `dot(normal, x)` on the plane; with a unit normal, the plane's
+                          ///< signed distance from the origin [Units: m].
 };
 
 /// A solid sphere.
