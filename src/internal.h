@@ -50,8 +50,8 @@ inline Quat toF(const DQuat& q) {
     return r;
 }
 
-// The value a person meant by a float: its shortest round-trip decimal, read as a double
-// (0.02f is 0.0199999995529651641845703125; this returns 0.02). Used for time steps and times,
+// The value a person meant by a float: the shortest decimal (at most 9 fractional digits)
+// that rounds to it, as a double (0.02f is 0.0199999995529651641845703125; this returns 0.02). Used for time steps and times,
 // so that step k lands at k * 0.02 s and not at 0.099999994 s, while staying deterministic.
 double decimalValue(float x);
 

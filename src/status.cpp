@@ -2,8 +2,7 @@
 
 #include "internal.h"
 
-#include <charconv>
-#include <cstdlib>
+#include <cmath>
 
 FORESIGHT_NAMESPACE_BEGIN
 
@@ -31,12 +30,16 @@ const char* statusMessage(Status status) {
 
 namespace detail {
 double decimalValue(float x) {
+    // The first decimal with at most 9 fractional digits that rounds back to x: a few
+    // multiplications, not a text round trip (this runs on every prediction).
     if (!std::isfinite(x)) return x;
-    char text[32];
-    const auto written = std::to_chars(text, text + sizeof(text) - 1, x);
-    if (written.ec != std::errc()) return x;
-    *written.ptr = '\0';
-    return std::strtod(text, nullptr);
+    const double value = x;
+    double scale = 1.0;
+    for (int digits = 0; digits <= 9; ++digits, scale *= 10.0) {
+        const double candidate = std::nearbyint(value * scale) / scale;
+        if (static_cast<float>(candidate) == x) return candidate;
+    }
+    return value;
 }
 }  // namespace detail
 
