@@ -3,8 +3,10 @@
 
 #include <foresight/config.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
 namespace detail {
@@ -48,6 +50,16 @@ inline Quat toF(const DQuat& q) {
     r.y = static_cast<float>(q.y);
     r.z = static_cast<float>(q.z);
     return r;
+}
+
+// The largest absolute coordinate of p, at least 1: the scale of p's rounding errors.
+inline double coordinateMagnitude(const DVec3& p) {
+    return std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
+
+// Units in the last place of Real at p's magnitude, times `ulps`.
+inline double realUlps(const DVec3& p, double ulps) {
+    return ulps * coordinateMagnitude(p) * static_cast<double>(std::numeric_limits<Real>::epsilon());
 }
 
 // The value a person meant by a float: the shortest decimal (at most 9 fractional digits)

@@ -209,16 +209,11 @@ private:
 
     // How far off a surface a body is placed after an impact: a few units in the last place
     // of the position type, so that rounding to Real never puts it on the surface's far side.
-    static double skinDistance(const DVec3& p) {
-        const double magnitude = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-        return 4.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
-    }
+    static double skinDistance(const DVec3& p) { return realUlps(p, 4.0); }
 
-    double liftDistance() const {
-        const DVec3& p = mBody.position;
-        const double magnitude = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-        return 1e-4 + 8.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
-    }
+    // How far casts are lifted off the surface the body is on (0.1 mm, more far from the
+    // origin, where Real resolves less).
+    double liftDistance() const { return 1e-4 + realUlps(mBody.position, 8.0); }
 
     // Ballistic flight for up to h seconds. Returns true when h was covered without an impact.
     bool advanceBallistic(double h) {

@@ -337,14 +337,12 @@ bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     const double length = glm::length(displacement);
     if (!(length > 0.0) || !std::isfinite(length) || !isFinite(origin)) return false;
     const double radius = std::max(0.0, static_cast<double>(cast.radius));
-    const double magnitude = std::max({1.0, std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
     Ray ray;
     ray.origin = origin;
     ray.direction = displacement / length;
     ray.length = length;
     // The configured tolerance, plus 4 ulps of the coordinates' own precision.
-    ray.tolerance = static_cast<double>(mSettings.surfaceTolerance) +
-                    4.0 * magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
+    ray.tolerance = static_cast<double>(mSettings.surfaceTolerance) + realUlps(origin, 4.0);
 
     Candidate best;
     for (const Plane& p : mPlanes) castPlane(ray, radius, p, best);
