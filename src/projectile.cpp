@@ -370,9 +370,13 @@ private:
         if (castPath(p0, p1, true, n, offset, hit)) {
             const Impact found = locateImpact(p0, v0, a, offset, duration, hit, true, n);
             const double s = found.time;
-            // No projection onto the obstacle's plane here: it would lift the body off the
-            // surface it slides on when the obstacle leans over it.
-            mBody = {p0 + v0 * s + 0.5 * a * s * s, v0 + a * s};
+            // Out of the obstacle if rounding left the body behind its plane, and a skin off
+            // it; not onto its plane, which would lift the body off the surface it slides on
+            // when the obstacle leans over it.
+            DVec3 p = p0 + v0 * s + 0.5 * a * s * s;
+            p -= found.normal * std::min(0.0, glm::dot(found.normal, p - found.surfacePoint));
+            p += found.normal * skinDistance(p);
+            mBody = {p, v0 + a * s};
             mTime += s;
             impact(found.normal, s);
             return false;
@@ -401,8 +405,12 @@ private:
     // An impact at the current state with surface normal n, `elapsed` after the last event.
     void impact(const DVec3& n, double elapsed) {
         ++mEvents;
-        mConsecutiveStalls = elapsed > 1e-9 ? 0 : mConsecutiveStalls + 1;
-        if (mConsecutiveStalls >= 8) {  // wedged between surfaces: eight impacts within ns
+        // Wedged between surfaces: eight impacts in a row, each within a nanosecond or a
+        // micrometre of the one before (the body rattles in place).
+        const bool stalled = elapsed <= 1e-9 || glm::length(mBody.position - mLastImpactPosition) <= 1e-6;
+        mConsecutiveStalls = stalled ? mConsecutiveStalls + 1 : 0;
+        mLastImpactPosition = mBody.position;
+        if (mConsecutiveStalls >= 8) {
             mAtRest = true;
             mContactNormal = n;
             return;
@@ -463,6 +471,7 @@ private:
     bool mStopped = false;
     std::uint32_t mEvents = 0;
     int mConsecutiveStalls = 0;
+    DVec3 mLastImpactPosition{std::numeric_limits<double>::infinity()};
 };
 
 }  // namespace
