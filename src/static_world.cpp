@@ -12,28 +12,8 @@ using namespace detail;
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// A candidate hit along the cast's unit direction: distance from the origin and outward normal.
-struct Candidate {
-    double distance = kInfinity;
-    DVec3 normal{0, 1, 0};
-
-    void offer(double d, const DVec3& n) {
-        if (d < distance) {
-            distance = d;
-            normal = n;
-        }
-    }
-};
-
-// The ray being cast, in double: origin, unit direction, length.
-struct Ray {
-    DVec3 origin;
-    DVec3 direction;
-    double length;
-    double tolerance;  // how far behind a surface a start still counts as "on" it
-};
+using Candidate = ClosestCandidate;
+using Ray = PreparedRay;
 
 // First entry of a ray that starts outside a sphere (centre c, radius r).
 void sphereEntry(const Ray& ray, const DVec3& center, double radius, Candidate& best) {
@@ -331,31 +311,53 @@ std::size_t StaticWorld::shapeCount() const {
     return mPlanes.size() + mSpheres.size() + mBoxes.size() + mTriangles.size();
 }
 
-bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
+ClosestHitCaster::ClosestHitCaster(const SegmentCast& cast, float surfaceTolerance) {
     const DVec3 origin = toD(cast.origin);
-    const DVec3 displacement = toD(cast.displacement);
-    const double length = glm::length(displacement);
-    if (!(length > 0.0) || !std::isfinite(length) || !isFinite(origin)) return false;
-    const double radius = std::max(0.0, static_cast<double>(cast.radius));
-    Ray ray;
-    ray.origin = origin;
-    ray.direction = displacement / length;
-    ray.length = length;
+    mDisplacement = toD(cast.displacement);
+    const double length = glm::length(mDisplacement);
+    if (!(length > 0.0) || !std::isfinite(length) || !isFinite(origin)) return;  // hits nothing
+    mRay.origin = origin;
+    mRay.direction = mDisplacement / length;
+    mRay.length = length;
     // The configured tolerance, plus 4 ulps of the coordinates' own precision.
-    ray.tolerance = static_cast<double>(mSettings.surfaceTolerance) + realUlps(origin, 4.0);
+    mRay.tolerance = static_cast<double>(std::max(0.0f, surfaceTolerance)) + realUlps(origin, 4.0);
+    mRay.radius = std::max(0.0, static_cast<double>(cast.radius));
+}
 
-    Candidate best;
-    for (const Plane& p : mPlanes) castPlane(ray, radius, p, best);
-    for (const Sphere& s : mSpheres) castSphere(ray, radius, s, best);
-    for (const OrientedBox& b : mBoxes) castBox(ray, radius, b, best);
-    for (const Triangle& t : mTriangles) castTriangle(ray, radius, t, best);
-    if (!(best.distance <= length)) return false;
+void ClosestHitCaster::test(const Plane& plane) {
+    if (valid()) castPlane(mRay, mRay.radius, plane, mBest);
+}
+void ClosestHitCaster::test(const Sphere& sphere) {
+    if (valid()) castSphere(mRay, mRay.radius, sphere, mBest);
+}
+void ClosestHitCaster::test(const OrientedBox& box) {
+    if (valid()) castBox(mRay, mRay.radius, box, mBest);
+}
+void ClosestHitCaster::test(const Triangle& triangle) {
+    if (valid()) castTriangle(mRay, mRay.radius, triangle, mBest);
+}
 
-    const double fraction = std::clamp(best.distance / length, 0.0, 1.0);
+double ClosestHitCaster::closestFraction() const {
+    return valid() ? mBest.distance / mRay.length : std::numeric_limits<double>::infinity();
+}
+
+bool ClosestHitCaster::result(CastHit& hit) const {
+    if (!valid() || !(mBest.distance <= mRay.length)) return false;
+    const double fraction = std::clamp(mBest.distance / mRay.length, 0.0, 1.0);
     hit.fraction = static_cast<float>(fraction);
-    hit.position = toR(origin + displacement * fraction);
-    hit.normal = toF(best.normal);
+    hit.position = toR(mRay.origin + mDisplacement * fraction);
+    hit.normal = toF(mBest.normal);
     return true;
+}
+
+bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
+    ClosestHitCaster caster(cast, mSettings.surfaceTolerance);
+    if (!caster.valid()) return false;
+    for (const Plane& p : mPlanes) caster.test(p);
+    for (const Sphere& s : mSpheres) caster.test(s);
+    for (const OrientedBox& b : mBoxes) caster.test(b);
+    for (const Triangle& t : mTriangles) caster.test(t);
+    return caster.result(hit);
 }
 
 FORESIGHT_NAMESPACE_END

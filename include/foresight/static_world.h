@@ -6,6 +6,7 @@
 
 #include <foresight/world.h>
 
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -47,6 +48,68 @@ Status validateBox(const OrientedBox& box);
 /// See validatePlane. A triangle is degenerate when its area is below 1e-12 m^2 or relative
 /// to its edge lengths (a sliver that cannot give a stable normal).
 Status validateTriangle(const Triangle& triangle);
+
+namespace detail {
+/// Internal to ClosestHitCaster: a cast prepared for the shape tests (double precision).
+struct PreparedRay {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0}; ///< unit
+    double length = 0.0;                 ///< 0: the cast hits nothing
+    double tolerance = 0.0;              ///< how far behind a one-sided surface a start is "on" it
+    double radius = 0.0;
+};
+/// Internal to ClosestHitCaster: the closest hit so far, as a distance along the ray.
+struct ClosestCandidate {
+    double distance = std::numeric_limits<double>::infinity();
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+    void offer(double d, const glm::dvec3& n) {
+        if (d < distance) {
+            distance = d;
+            normal = n;
+        }
+    }
+};
+}  // namespace detail
+
+/// The exact shape tests of StaticWorld, offered one shape at a time, keeping the closest hit.
+/// For worlds that find their candidate shapes themselves (a BVH over a mesh, a grid): they get
+/// the same hits, normals and surface rules as the built-in world. No allocation.
+/// @code
+///   ClosestHitCaster caster(cast);
+///   for (const Triangle& t : candidates) caster.test(t);
+///   CastHit hit;
+///   if (caster.result(hit)) { ... }
+/// @endcode
+class ClosestHitCaster {
+public:
+    /// Prepares `cast`. `surfaceTolerance` is StaticWorldSettings::surfaceTolerance [Units: m].
+    explicit ClosestHitCaster(const SegmentCast& cast, float surfaceTolerance = 1e-5f);
+
+    /// False when the cast can hit nothing (zero length, non-finite): tests then do nothing.
+    bool valid() const { return mRay.length > 0.0; }
+
+    /// Tests one shape (validated as StaticWorld::add would; unvalidated shapes give
+    /// unspecified hits but never undefined behaviour).
+    void test(const Plane& plane);
+    /// See test(const Plane&).
+    void test(const Sphere& sphere);
+    /// See test(const Plane&).
+    void test(const OrientedBox& box);
+    /// See test(const Plane&).
+    void test(const Triangle& triangle);
+
+    /// The closest hit so far as a fraction of the segment; infinity when none. Shapes whose
+    /// bounds start beyond it cannot change the result (an early-out for BVH traversals).
+    double closestFraction() const;
+
+    /// The closest hit; false if none.
+    bool result(CastHit& hit) const;
+
+private:
+    detail::PreparedRay mRay;
+    detail::ClosestCandidate mBest;
+    glm::dvec3 mDisplacement{0.0};
+};
 
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
