@@ -350,13 +350,25 @@ bool ClosestHitCaster::result(CastHit& hit) const {
     return true;
 }
 
-bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
+#if defined(__GNUC__)
+// The shape tests are also called from ClosestHitCaster::test; keep them inlined here, in the
+// loop every prediction step runs.
+#define FORESIGHT_FLATTEN __attribute__((flatten))
+#else
+#define FORESIGHT_FLATTEN
+#endif
+
+FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     ClosestHitCaster caster(cast, mSettings.surfaceTolerance);
     if (!caster.valid()) return false;
-    for (const Plane& p : mPlanes) caster.test(p);
-    for (const Sphere& s : mSpheres) caster.test(s);
-    for (const OrientedBox& b : mBoxes) caster.test(b);
-    for (const Triangle& t : mTriangles) caster.test(t);
+    // Local copies: the compiler keeps them in registers across the loops.
+    const Ray ray = caster.mRay;
+    Candidate best;
+    for (const Plane& p : mPlanes) castPlane(ray, ray.radius, p, best);
+    for (const Sphere& s : mSpheres) castSphere(ray, ray.radius, s, best);
+    for (const OrientedBox& b : mBoxes) castBox(ray, ray.radius, b, best);
+    for (const Triangle& t : mTriangles) castTriangle(ray, ray.radius, t, best);
+    caster.mBest = best;
     return caster.result(hit);
 }
 

@@ -71,6 +71,8 @@ struct ClosestCandidate {
 };
 }  // namespace detail
 
+class StaticWorld;
+
 /// The exact shape tests of StaticWorld, offered one shape at a time, keeping the closest hit.
 /// For worlds that find their candidate shapes themselves (a BVH over a mesh, a grid): they get
 /// the same hits, normals and surface rules as the built-in world. No allocation.
@@ -106,6 +108,7 @@ public:
     bool result(CastHit& hit) const;
 
 private:
+    friend class StaticWorld;  // runs its loops over the shapes without the per-shape checks
     detail::PreparedRay mRay;
     detail::ClosestCandidate mBest;
     glm::dvec3 mDisplacement{0.0};
