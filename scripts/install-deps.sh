@@ -14,7 +14,8 @@ fi
 # Build tools, then libraries. Keep in sync with CONTRIBUTING.md.
 packages=(
     cmake ninja-build g++ pkg-config
-    libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
+    libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libtinygltf-dev
+    libembree-dev libbullet-dev
     libgtest-dev libgmock-dev libbenchmark-dev
 )
 
