@@ -238,10 +238,9 @@ private:
             }
         }
         const DVec3 p1 = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
-        DVec3 offset(0.0);
         CastHit hit;
-        if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, offset, hit)) {
-            const Impact found = locateImpact(p0, v0, mGravity, offset, duration, hit, mHasLastSurface,
+        if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit)) {
+            const Impact found = locateImpact(p0, v0, mGravity, duration, hit, mHasLastSurface,
                                               mLastSurfaceNormal);
             arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
@@ -264,10 +263,9 @@ private:
 
     // Casts the chord p0 -> p1. A chord that starts on `surface` (the one just left, or slid
     // on) may be reported as hitting it at once; then it is cast again lifted off that surface
-    // (`offset` says by how much), so that the surface cannot mask the obstacles ahead.
+    // by liftDistance(), so that the surface cannot mask the obstacles ahead.
     bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
-                  DVec3& offset, CastHit& hit) const {
-        offset = DVec3(0.0);
+                  CastHit& hit) const {
         if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) return false;
         if (!onSurface) return true;
         // A hit is that surface when it lies in its plane with its normal.
@@ -286,8 +284,7 @@ private:
             hit.position = toR(p0);
             return true;
         }
-        offset = surface * lift;
-        return mWorld.castSegment(makeCast(p0 + offset, p1 + offset, mSettings.radius), hit);
+        return mWorld.castSegment(makeCast(p0 + surface * lift, p1 + surface * lift, mSettings.radius), hit);
     }
 
     struct Impact {
@@ -297,15 +294,17 @@ private:
     };
 
     // The first impact along p(s) = p0 + v0 s + a s^2 / 2, s in [0, limit], given the chord
-    // cast's `hit` (the cast ran `offset` away from the path). The parabola is solved against
+    // cast's `hit` (castPath's, lifted or not). The parabola is solved against
     // the plane tangent to the surface at the hit; the chord up to that time is cast again, so
     // that a surface the parabola meets before the chord does (a corner) is not missed.
-    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, DVec3 offset, double limit,
+    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, double limit,
                         CastHit hit, bool onSurface, const DVec3& surface) const {
         Impact found{};
         for (int attempt = 0;; ++attempt) {
             found.normal = toD(hit.normal);
-            found.surfacePoint = toD(hit.position) - offset;
+            // The hit's point lies on the surface's plane (for a swept sphere: the plane its
+            // centre touches) whether or not the cast was lifted off the path: solve for it.
+            found.surfacePoint = toD(hit.position);
             const DVec3& n = found.normal;
             found.time = firstEntry(glm::dot(n, p0 - found.surfacePoint), glm::dot(n, v0),
                                     0.5 * glm::dot(n, a), limit,
@@ -313,7 +312,7 @@ private:
             if (attempt == 4 || found.time <= 0.0) return found;
             const DVec3 p = p0 + v0 * found.time + 0.5 * a * found.time * found.time;
             CastHit earlier;
-            if (!castPath(p0, p, onSurface, surface, offset, earlier) || earlier.fraction >= 1.0f - 1e-6f)
+            if (!castPath(p0, p, onSurface, surface, earlier) || earlier.fraction >= 1.0f - 1e-6f)
                 return found;
             hit = earlier;
             limit = found.time;
@@ -366,9 +365,8 @@ private:
         const DVec3 p1 = p0 + v0 * duration + 0.5 * a * duration * duration;
         const double lift = liftDistance();
         CastHit hit;
-        DVec3 offset(0.0);
-        if (castPath(p0, p1, true, n, offset, hit)) {
-            const Impact found = locateImpact(p0, v0, a, offset, duration, hit, true, n);
+        if (castPath(p0, p1, true, n, hit)) {
+            const Impact found = locateImpact(p0, v0, a, duration, hit, true, n);
             const double s = found.time;
             // Out of the obstacle if rounding left the body behind its plane, and a skin off
             // it; not onto its plane, which would lift the body off the surface it slides on
