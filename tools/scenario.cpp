@@ -11,6 +11,15 @@
 #include <set>
 #include <string_view>
 
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+#include <foresight/embree_world.h>
+
+#include <cctype>
+#include <map>
+#include <memory>
+#include <mutex>
+#endif
+
 namespace foresight_cli {
 
 using foresight::Status;
@@ -435,6 +444,38 @@ void addShape(foresight::StaticWorld& world, const auto& shape, const std::strin
     if (status != Status::Ok) d.error(path, foresight::statusMessage(status));
 }
 
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+// With Embree, `world.meshes[]` go into an EmbreeWorld (which also gets a copy of the
+// primitives) instead of StaticWorld triangles. Scenario (scenario.h) has no member for it, so
+// it is kept here, keyed by the scenario's StaticWorld; buildScenario drops a stale entry.
+std::mutex gMeshWorldsMutex;
+std::map<const foresight::StaticWorld*, std::unique_ptr<foresight::EmbreeWorld>> gMeshWorlds;
+
+foresight::EmbreeWorld& meshWorldFor(const foresight::StaticWorld& world) {
+    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
+    auto& entry = gMeshWorlds[&world];
+    if (!entry) entry = std::make_unique<foresight::EmbreeWorld>();
+    return *entry;
+}
+
+foresight::EmbreeWorld* findMeshWorld(const foresight::StaticWorld& world) {
+    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
+    const auto found = gMeshWorlds.find(&world);
+    return found == gMeshWorlds.end() ? nullptr : found->second.get();
+}
+
+void dropMeshWorld(const foresight::StaticWorld& world) {
+    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
+    gMeshWorlds.erase(&world);
+}
+
+bool isGltf(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".gltf" || extension == ".glb";
+}
+#endif
+
 void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, foresight::StaticWorld& world,
                 Diagnostics& d) {
     if (!expectObject(value, "world", d, "{\"planes\", \"boxes\", \"spheres\", \"triangles\", \"meshes\"}")) return;
@@ -543,10 +584,27 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
         }
         std::filesystem::path resolved(file);
         if (resolved.is_relative()) resolved = baseDirectory / resolved;
+        const std::string where = resolved.string() == file ? std::string() : " (" + resolved.string() + ")";
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+        if (isGltf(resolved)) {
+            const foresight::MeshLoadResult gltf = meshWorldFor(world).loadGltf(resolved);
+            if (!gltf.ok) {
+                // The loader's message starts with the path, already in ours.
+                std::string message = gltf.error;
+                const std::string prefix = resolved.string() + ": ";
+                if (message.compare(0, prefix.size(), prefix) == 0) message.erase(0, prefix.size());
+                d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + message);
+            } else if (gltf.report.degenerateTriangles > 0) {
+                d.warning(filePath, jsonQuoted(file) + ": skipped " + std::to_string(gltf.report.degenerateTriangles) +
+                                        " degenerate triangle(s) (the first is triangle " +
+                                        std::to_string(gltf.report.firstDegenerateTriangle + 1) + ")");
+            }
+            return;
+        }
+#endif
         ObjMesh loaded;
         std::string reason;
         if (!loadObjMesh(resolved, loaded, reason)) {
-            const std::string where = resolved.string() == file ? std::string() : " (" + resolved.string() + ")";
             d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + reason);
             return;
         }
@@ -556,7 +614,22 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
                                     " degenerate triangle(s) (the first in face " +
                                     std::to_string(loaded.firstDegenerateFace) + ")");
         }
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+        std::vector<foresight::RVec3> vertices;
+        std::vector<std::uint32_t> indices;
+        vertices.reserve(3 * loaded.triangles.size());
+        for (const auto& triangle : loaded.triangles) {
+            for (const auto& vertex : {triangle.a, triangle.b, triangle.c}) {
+                indices.push_back(static_cast<std::uint32_t>(vertices.size()));
+                vertices.push_back(vertex);
+            }
+        }
+        foresight::MeshReport report;
+        if (meshWorldFor(world).addMesh(vertices, indices, &report) != Status::Ok)
+            d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + report.error);
+#else
         for (const auto& triangle : loaded.triangles) addShape(world, triangle, filePath, d);
+#endif
     });
 
     fields.finish();
@@ -730,7 +803,23 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
     }
     Fields root(document, "", diagnostics);
     root.vector("gravity", false, scenario.gravity);
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+    dropMeshWorld(scenario.world);
+#endif
     if (const Json* world = root.get("world", false)) buildWorld(*world, baseDirectory, scenario.world, diagnostics);
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+    if (diagnostics.ok()) {
+        if (foresight::EmbreeWorld* meshWorld = findMeshWorld(scenario.world)) {
+            // The mesh world answers the casts: it gets the primitives too.
+            for (const auto& shape : scenario.world.planes()) meshWorld->add(shape);
+            for (const auto& shape : scenario.world.spheres()) meshWorld->add(shape);
+            for (const auto& shape : scenario.world.boxes()) meshWorld->add(shape);
+            for (const auto& shape : scenario.world.triangles()) meshWorld->add(shape);
+            std::string reason;
+            if (!meshWorld->commit(&reason)) diagnostics.error("world.meshes", reason);
+        }
+    }
+#endif
     if (const Json* predictions = root.get("predictions", true)) {
         if (!predictions->is_array()) {
             diagnostics.error("predictions", "expected an array, got " + typeName(*predictions));
@@ -760,6 +849,9 @@ bool finite(const foresight::Quat& q) {
 
 Status runProjectile(const Scenario& scenario, const Prediction& p, PredictionResult& result) {
     const foresight::CollisionWorld* world = scenario.world.shapeCount() > 0 ? &scenario.world : nullptr;
+#ifdef FORESIGHT_CLI_WITH_EMBREE
+    if (const foresight::EmbreeWorld* meshWorld = findMeshWorld(scenario.world)) world = meshWorld;
+#endif
     std::vector<foresight::TrajectoryPoint> points;
     if (p.trajectory) points.resize(foresight::trajectoryCapacity(p.time, p.projectile));
     foresight::ProjectileResult out;

@@ -1,0 +1,555 @@
+// EmbreeWorld (backends/embree): same hits as StaticWorld on the same shapes, projectiles stay
+// inside a closed mesh room, file loaders and their errors, concurrent casts.
+#include <foresight/embree_world.h>
+#include <foresight/foresight.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using foresight::CastHit;
+using foresight::EmbreeWorld;
+using foresight::RVec3;
+using foresight::SegmentCast;
+using foresight::StaticWorld;
+using foresight::Status;
+using foresight::Triangle;
+using foresight::Vec3;
+using DVec3 = glm::dvec3;
+namespace fs = std::filesystem;
+
+RVec3 r3(double x, double y, double z) {
+    using R = foresight::Real;
+    return RVec3(static_cast<R>(x), static_cast<R>(y), static_cast<R>(z));
+}
+DVec3 d3(const RVec3& v) { return DVec3(static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)); }
+
+// An indexed mesh.
+struct Mesh {
+    std::vector<RVec3> vertices;
+    std::vector<std::uint32_t> indices;
+};
+
+// An axis-aligned box as 12 triangles; `inward` flips nothing (triangles are two-sided) but the
+// room is the same shape seen from inside.
+void addBoxMesh(Mesh& mesh, const DVec3& lo, const DVec3& hi) {
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (int i = 0; i < 8; ++i)
+        mesh.vertices.push_back(r3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z));
+    // Faces as quads (corner bits), split in two.
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        for (const int k : {q[0], q[1], q[2], q[0], q[2], q[3]}) mesh.indices.push_back(base + static_cast<std::uint32_t>(k));
+    }
+}
+
+// The room (10 x 4 x 8, closed), a few boxes inside it, a ramp; plus primitives.
+Mesh sceneMesh() {
+    Mesh mesh;
+    addBoxMesh(mesh, DVec3(-5, 0, -4), DVec3(5, 4, 4));
+    addBoxMesh(mesh, DVec3(-3, 0, -2), DVec3(-2, 1, -1));
+    addBoxMesh(mesh, DVec3(1, 0, 1), DVec3(2.5, 2, 1.5));
+    addBoxMesh(mesh, DVec3(-1, 1.5, 2), DVec3(0, 2.5, 3));  // floating
+    addBoxMesh(mesh, DVec3(3, 0, -3), DVec3(3.2, 3, -1));    // a thin wall
+    // A ramp (two triangles) and a degenerate triangle (skipped).
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.push_back(r3(-4, 0, 1));
+    mesh.vertices.push_back(r3(-2, 1, 1));
+    mesh.vertices.push_back(r3(-2, 1, 3));
+    mesh.vertices.push_back(r3(-4, 0, 3));
+    for (const std::uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u, 0u, 0u, 1u}) mesh.indices.push_back(base + k);
+    return mesh;
+}
+
+void addPrimitives(auto& world) {
+    ASSERT_EQ(world.add(foresight::Sphere{r3(0, 1, -2), 0.5f}), Status::Ok);
+    foresight::OrientedBox box;
+    box.center = r3(2, 0.5, -2);
+    box.halfExtents = Vec3(0.3f, 0.5f, 0.4f);
+    box.orientation = glm::angleAxis(0.6f, glm::normalize(Vec3(0.2f, 1.0f, 0.1f)));
+    ASSERT_EQ(world.add(box), Status::Ok);
+    ASSERT_EQ(world.add(foresight::Plane{Vec3(0, 1, 0), -1}), Status::Ok);  // below the room
+    ASSERT_EQ(world.add(Triangle{r3(-1, 3, -1), r3(1, 3, -1), r3(0, 3.5, 0.5)}), Status::Ok);
+}
+
+struct Worlds {
+    StaticWorld reference;
+    EmbreeWorld embree;
+    std::vector<Triangle> meshTriangles;  // valid ones, in order
+};
+
+// Both worlds with the same shapes: primitives, then the mesh triangles in order.
+void buildWorlds(Worlds& w) {
+    addPrimitives(w.reference);
+    addPrimitives(w.embree);
+    const Mesh mesh = sceneMesh();
+    foresight::MeshReport report;
+    ASSERT_EQ(w.embree.addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
+    EXPECT_EQ(report.degenerateTriangles, 1u);
+    EXPECT_EQ(report.firstDegenerateTriangle, mesh.indices.size() / 3 - 1);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]], mesh.vertices[mesh.indices[t + 2]]};
+        if (foresight::validateTriangle(tri) == Status::Ok) {
+            w.meshTriangles.push_back(tri);
+            ASSERT_EQ(w.reference.add(tri), Status::Ok);
+        }
+    }
+    EXPECT_EQ(report.triangles, w.meshTriangles.size());
+    EXPECT_EQ(w.embree.meshTriangleCount(), w.meshTriangles.size());
+    std::string error;
+    ASSERT_TRUE(w.embree.commit(&error)) << error;
+}
+
+// Random segments, many of them special: starting on a surface, grazing an edge or a vertex,
+// parallel to a face, zero length.
+std::vector<SegmentCast> randomCasts(const std::vector<Triangle>& triangles, int count, float radius, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto inRoom = [&] { return DVec3(-5.5 + 11 * u(rng), -0.5 + 5 * u(rng), -4.5 + 9 * u(rng)); };
+    auto direction = [&] {
+        DVec3 d;
+        do d = DVec3(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1);
+        while (glm::length(d) < 0.1 || glm::length(d) > 1.0);
+        return glm::normalize(d);
+    };
+    auto pickTriangle = [&]() -> const Triangle& { return triangles[static_cast<std::size_t>(u(rng) * static_cast<double>(triangles.size())) % triangles.size()]; };
+    std::vector<SegmentCast> casts;
+    casts.reserve(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        SegmentCast cast;
+        cast.radius = radius;
+        DVec3 origin = inRoom();
+        DVec3 displacement = direction() * (0.01 + 6 * u(rng));
+        switch (i % 8) {
+        case 0:
+        case 1:
+        case 2: break;  // plain
+        case 3: {       // starts exactly on a triangle (or offset by the radius), moves in or out
+            const Triangle& t = pickTriangle();
+            const double a = u(rng), b = u(rng) * (1 - a);
+            const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
+            const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
+            origin = A + (B - A) * a + (C - A) * b + n * (static_cast<double>(radius) * (u(rng) < 0.5 ? 1 : -1));
+            break;
+        }
+        case 4: {  // aims exactly at an edge point (or a vertex) of a triangle
+            const Triangle& t = pickTriangle();
+            const DVec3 A = d3(t.a), B = d3(t.b);
+            const double s = u(rng) < 0.3 ? 0.0 : u(rng);
+            const DVec3 target = A + (B - A) * s;
+            displacement = (target - origin) * (1.0 + u(rng));
+            break;
+        }
+        case 5: {  // parallel to a face, in its plane or a radius away
+            const Triangle& t = pickTriangle();
+            const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
+            const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
+            origin = A + (B - A) * (u(rng) * 1.4 - 0.2) + (C - A) * (u(rng) * 0.5) +
+                     n * (u(rng) < 0.5 ? 0.0 : static_cast<double>(radius));
+            DVec3 d = direction();
+            d -= n * glm::dot(d, n);
+            if (glm::length(d) < 1e-3) d = glm::normalize(B - A);
+            displacement = glm::normalize(d) * (0.1 + 4 * u(rng));
+            break;
+        }
+        case 6:  // zero length
+            if (u(rng) < 0.5) displacement = DVec3(0.0);
+            else displacement = direction() * 1e-7;
+            break;
+        case 7: {  // from a vertex of one triangle to a vertex of another
+            origin = d3(pickTriangle().a);
+            displacement = d3(pickTriangle().c) - origin;
+            break;
+        }
+        }
+        cast.origin = r3(origin.x, origin.y, origin.z);
+        cast.displacement = Vec3(displacement);
+        casts.push_back(cast);
+    }
+    return casts;
+}
+
+struct Outcome {
+    bool hit = false;
+    CastHit value;
+};
+
+void expectSame(const Outcome& expected, const Outcome& actual, const SegmentCast& cast, int index) {
+    ASSERT_EQ(expected.hit, actual.hit) << "cast " << index << " from (" << cast.origin.x << ", " << cast.origin.y << ", "
+                                        << cast.origin.z << ") by (" << cast.displacement.x << ", "
+                                        << cast.displacement.y << ", " << cast.displacement.z << ") r " << cast.radius;
+    if (!expected.hit) return;
+    EXPECT_NEAR(expected.value.fraction, actual.value.fraction, 1e-6) << "cast " << index;
+    EXPECT_LE(glm::length(d3(expected.value.position) - d3(actual.value.position)), 1e-4) << "cast " << index;
+    EXPECT_LE(glm::length(DVec3(expected.value.normal - actual.value.normal)), 1e-5)
+        << "cast " << index << " from (" << cast.origin.x << ", " << cast.origin.y << ", " << cast.origin.z << ") by ("
+        << cast.displacement.x << ", " << cast.displacement.y << ", " << cast.displacement.z << ") r " << cast.radius
+        << " fraction " << expected.value.fraction << " normal (" << expected.value.normal.x << ", "
+        << expected.value.normal.y << ", " << expected.value.normal.z << ") vs (" << actual.value.normal.x << ", "
+        << actual.value.normal.y << ", " << actual.value.normal.z << ")";
+}
+
+class embree_world : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        worlds = new Worlds;
+        buildWorlds(*worlds);
+    }
+    static void TearDownTestSuite() {
+        delete worlds;
+        worlds = nullptr;
+    }
+    static Worlds* worlds;
+};
+Worlds* embree_world::worlds = nullptr;
+
+void compareOnRandomCasts(const Worlds& w, float radius, std::uint32_t seed) {
+    const auto casts = randomCasts(w.meshTriangles, 10000, radius, seed);
+    int hits = 0, atStart = 0;
+    for (std::size_t i = 0; i < casts.size(); ++i) {
+        Outcome expected, actual;
+        expected.hit = w.reference.castSegment(casts[i], expected.value);
+        actual.hit = w.embree.castSegment(casts[i], actual.value);
+        hits += expected.hit ? 1 : 0;
+        atStart += expected.hit && expected.value.fraction == 0.0f ? 1 : 0;
+        expectSame(expected, actual, casts[i], static_cast<int>(i));
+        if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(hits, 3000);  // the scene is closed: most casts hit something
+    if (radius > 0.0f) {
+        EXPECT_GT(atStart, 100);  // starts on a surface, moving in
+    }
+}
+
+TEST_F(embree_world, SameHitsAsStaticWorldForRays) { compareOnRandomCasts(*worlds, 0.0f, 1); }
+
+TEST_F(embree_world, SameHitsAsStaticWorldForSpheres) { compareOnRandomCasts(*worlds, 0.1f, 2); }
+
+TEST_F(embree_world, SameHitsBeforeCommit) {
+    // Uncommitted: brute force over the mesh, still the same hits.
+    Worlds local;
+    addPrimitives(local.reference);
+    addPrimitives(local.embree);
+    Mesh mesh;
+    addBoxMesh(mesh, DVec3(-1, -1, -1), DVec3(1, 1, 1));
+    ASSERT_EQ(local.embree.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]], mesh.vertices[mesh.indices[t + 2]]};
+        local.meshTriangles.push_back(tri);
+        ASSERT_EQ(local.reference.add(tri), Status::Ok);
+    }
+    for (const auto& cast : randomCasts(local.meshTriangles, 500, 0.05f, 3)) {
+        Outcome expected, actual;
+        expected.hit = local.reference.castSegment(cast, expected.value);
+        actual.hit = local.embree.castSegment(cast, actual.value);
+        expectSame(expected, actual, cast, 0);
+    }
+}
+
+TEST_F(embree_world, SphereDoesNotPassThroughANarrowGap) {
+    // Two walls 0.15 m apart with a 0.15 m slit; a 0.1 m sphere cannot pass, a point can.
+    EmbreeWorld world;
+    Mesh mesh;
+    addBoxMesh(mesh, DVec3(-2, 0, 0), DVec3(-0.075, 2, 0.1));
+    addBoxMesh(mesh, DVec3(0.075, 0, 0), DVec3(2, 2, 0.1));
+    ASSERT_EQ(world.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    ASSERT_TRUE(world.commit());
+    CastHit hit;
+    EXPECT_FALSE(world.castSegment(SegmentCast{r3(0, 1, -1), Vec3(0, 0, 2), 0.0f}, hit));
+    ASSERT_TRUE(world.castSegment(SegmentCast{r3(0, 1, -1), Vec3(0, 0, 2), 0.1f}, hit));
+    EXPECT_NEAR(hit.position.z, -0.1 + 0.0 - std::sqrt(0.1 * 0.1 - 0.075 * 0.075) + 0.1, 1e-4);
+    EXPECT_TRUE(world.castSegment(SegmentCast{r3(0, 1, -1), Vec3(0, 0, 2), 0.076f}, hit));
+    EXPECT_FALSE(world.castSegment(SegmentCast{r3(0, 1, -1), Vec3(0, 0, 2), 0.074f}, hit));
+}
+
+TEST_F(embree_world, ProjectilesStayInsideTheClosedRoom) {
+    // The room alone (only the room's walls), throws from inside in every direction.
+    EmbreeWorld room;
+    Mesh mesh;
+    addBoxMesh(mesh, DVec3(-5, 0, -4), DVec3(5, 4, 4));
+    ASSERT_EQ(room.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    ASSERT_TRUE(room.commit());
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    foresight::ProjectileSettings settings;
+    std::vector<foresight::TrajectoryPoint> points(foresight::trajectoryCapacity(3.0f, settings, 256));
+    const double slack = 1e-4;
+    for (int i = 0; i < 2000; ++i) {
+        settings.restitution = static_cast<float>(u(rng));
+        settings.friction = static_cast<float>(0.5 * u(rng));
+        settings.radius = i % 2 == 0 ? 0.0f : static_cast<float>(0.2 * u(rng));
+        const double r = static_cast<double>(settings.radius);
+        const RVec3 start = r3(-5 + r + 0.01 + (10 - 2 * r - 0.02) * u(rng), r + 0.01 + (4 - 2 * r - 0.02) * u(rng),
+                               -4 + r + 0.01 + (8 - 2 * r - 0.02) * u(rng));
+        const Vec3 velocity(static_cast<float>(40 * u(rng) - 20), static_cast<float>(40 * u(rng) - 20),
+                            static_cast<float>(40 * u(rng) - 20));
+        foresight::ProjectileResult out;
+        const Status status = foresight::predictProjectile(start, velocity, 3.0f, settings, &room, points, out);
+        ASSERT_TRUE(status == Status::Ok || status == Status::TooManyEvents) << foresight::statusMessage(status);
+        const std::size_t n = std::min(out.trajectorySize, points.size());
+        for (std::size_t k = 0; k < n; ++k) {
+            const DVec3 p = d3(points[k].position);
+            ASSERT_TRUE(p.x >= -5 + r - slack && p.x <= 5 - r + slack && p.y >= r - slack && p.y <= 4 - r + slack &&
+                        p.z >= -4 + r - slack && p.z <= 4 - r + slack)
+                << "throw " << i << " point " << k << " at (" << p.x << ", " << p.y << ", " << p.z << ") radius " << r;
+        }
+    }
+}
+
+TEST_F(embree_world, ConcurrentCastsMatchSequential) {
+    const auto casts = randomCasts(worlds->meshTriangles, 4000, 0.05f, 11);
+    std::vector<Outcome> sequential(casts.size());
+    for (std::size_t i = 0; i < casts.size(); ++i) sequential[i].hit = worlds->embree.castSegment(casts[i], sequential[i].value);
+    std::vector<Outcome> parallel(casts.size());
+    auto run = [&](std::size_t begin) {
+        for (std::size_t i = begin; i < casts.size(); i += 2) parallel[i].hit = worlds->embree.castSegment(casts[i], parallel[i].value);
+    };
+    std::thread a(run, 0), b(run, 1);
+    a.join();
+    b.join();
+    for (std::size_t i = 0; i < casts.size(); ++i) {
+        ASSERT_EQ(sequential[i].hit, parallel[i].hit) << i;
+        if (!sequential[i].hit) continue;
+        EXPECT_EQ(sequential[i].value.fraction, parallel[i].value.fraction) << i;
+        EXPECT_EQ(sequential[i].value.position, parallel[i].value.position) << i;
+        EXPECT_EQ(sequential[i].value.normal, parallel[i].value.normal) << i;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Loaders
+
+class embree_loader : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = fs::temp_directory_path() / ("foresight_embree_test_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(mDir, ec);
+    }
+    fs::path write(const std::string& name, const std::string& bytes) {
+        const fs::path path = mDir / name;
+        std::ofstream out(path, std::ios::binary);
+        out << bytes;
+        return path;
+    }
+    fs::path mDir;
+};
+
+const char* kQuadObj = "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 4 3 2\n";
+
+// A glTF buffer: 4 float vertices (a 2 x 2 quad at y = 0) then 6 uint16 indices.
+std::string quadBuffer() {
+    const float positions[12] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    const std::uint16_t indices[6] = {0, 3, 2, 0, 2, 1};
+    std::string bytes(sizeof positions + sizeof indices, '\0');
+    std::memcpy(bytes.data(), positions, sizeof positions);
+    std::memcpy(bytes.data() + sizeof positions, indices, sizeof indices);
+    return bytes;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        for (int k = 3; k >= 0; --k) out += table[(v >> (6 * k)) & 63];
+    }
+    if (i < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+// The glTF JSON of two nodes using the quad mesh: one moved up by 2, one scaled by 3.
+// `uri` empty: the GLB's own binary chunk. `indexCount` and `indexType` let tests break it.
+std::string quadGltfJson(const std::string& uri, int bufferLength, int indexCount = 6, int indexType = 5123,
+                         const char* extraPrimitive = "") {
+    std::string buffer = "{\"byteLength\": " + std::to_string(bufferLength) + (uri.empty() ? "" : ", \"uri\": \"" + uri + "\"") + "}";
+    return std::string(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+  "nodes": [{"mesh": 0, "translation": [0, 2, 0]}, {"mesh": 0, "scale": [3, 3, 3], "children": [2]},
+            {"mesh": 0, "translation": [0, 1, 0]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4})") + extraPrimitive + R"(]}],
+  "buffers": [)" + buffer + R"(],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
+                {"bufferView": 1, "componentType": )" + std::to_string(indexType) + R"(, "count": )" +
+           std::to_string(indexCount) + R"(, "type": "SCALAR"}]})";
+}
+
+std::string glb(std::string json, const std::string& bin) {
+    while (json.size() % 4 != 0) json += ' ';
+    std::string padded = bin;
+    while (padded.size() % 4 != 0) padded += '\0';
+    std::string out;
+    auto u32 = [&](std::uint32_t v) {
+        char b[4];
+        std::memcpy(b, &v, 4);
+        out.append(b, 4);
+    };
+    out += "glTF";
+    u32(2);
+    u32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + padded.size()));
+    u32(static_cast<std::uint32_t>(json.size()));
+    u32(0x4E4F534Au);
+    out += json;
+    u32(static_cast<std::uint32_t>(padded.size()));
+    u32(0x004E4942u);
+    out += padded;
+    return out;
+}
+
+TEST_F(embree_loader, ObjLoadsItsTriangles) {
+    EmbreeWorld world;
+    const auto result = world.loadObj(write("quad.obj", kQuadObj));
+    ASSERT_TRUE(result.ok) << result.error;
+    EXPECT_EQ(result.report.triangles, 2u);
+    ASSERT_TRUE(world.commit());
+    CastHit hit;
+    ASSERT_TRUE(world.castSegment(SegmentCast{r3(1, 2, 1), Vec3(0, -4, 0), 0.0f}, hit));
+    EXPECT_NEAR(hit.fraction, 0.5f, 1e-6f);
+    EXPECT_EQ(hit.normal, Vec3(0, 1, 0));
+}
+
+TEST_F(embree_loader, GltfAndGlbLoadWithNodeTransforms) {
+    const std::string bin = quadBuffer();
+    for (const bool binary : {false, true}) {
+        EmbreeWorld world;
+        const fs::path path = binary ? write("quad.glb", glb(quadGltfJson("", static_cast<int>(bin.size())), bin))
+                                     : write("quad.gltf", quadGltfJson("data:application/octet-stream;base64," + base64(bin),
+                                                                      static_cast<int>(bin.size())));
+        const auto result = world.loadGltf(path);
+        ASSERT_TRUE(result.ok) << result.error;
+        EXPECT_EQ(result.report.triangles, 6u);  // three nodes, two triangles each
+        ASSERT_TRUE(world.commit());
+        CastHit hit;
+        // Node 0: the quad at y = 2 (x, z in -1 .. 1).
+        ASSERT_TRUE(world.castSegment(SegmentCast{r3(0.5, 10, 0.5), Vec3(0, -20, 0), 0.0f}, hit));
+        EXPECT_NEAR(hit.position.y, 3.0, 1e-5);  // node 2: scale 3 of (translate 1) -> y = 3, above node 0's y = 2
+        // Outside the small quads but inside the scaled one (x = 2): y = 0 (node 1) or 3 (node 2).
+        ASSERT_TRUE(world.castSegment(SegmentCast{r3(2, 10, 0), Vec3(0, -20, 0), 0.0f}, hit));
+        EXPECT_NEAR(hit.position.y, 3.0, 1e-5);
+        ASSERT_TRUE(world.castSegment(SegmentCast{r3(2, 2.5, 0), Vec3(0, -20, 0), 0.0f}, hit));
+        EXPECT_NEAR(hit.position.y, 0.0, 1e-5);
+        ASSERT_TRUE(world.castSegment(SegmentCast{r3(0.5, 2.5, 0.5), Vec3(0, -20, 0), 0.0f}, hit));
+        EXPECT_NEAR(hit.position.y, 2.0, 1e-5);
+    }
+}
+
+TEST_F(embree_loader, ExternalGltfBuffer) {
+    const std::string bin = quadBuffer();
+    write("quad.bin", bin);
+    EmbreeWorld world;
+    const auto result = world.loadGltf(write("quad.gltf", quadGltfJson("quad.bin", static_cast<int>(bin.size()))));
+    ASSERT_TRUE(result.ok) << result.error;
+    EXPECT_EQ(result.report.triangles, 6u);
+}
+
+struct BadFile {
+    const char* name;
+    const char* file;
+    std::string bytes;  // "" with missing: no file
+    bool missing = false;
+    const char* reason;
+};
+
+std::vector<BadFile> badFiles() {
+    const std::string bin = quadBuffer();
+    const int n = static_cast<int>(bin.size());
+    std::string nanBin = bin;
+    const float nan = std::nanf("");
+    std::memcpy(nanBin.data() + 4, &nan, 4);
+    std::string rangeBin = bin;
+    const std::uint16_t nine = 9;
+    std::memcpy(rangeBin.data() + 48 + 2, &nine, 2);
+    const std::string full = glb(quadGltfJson("", n), bin);
+    std::vector<BadFile> cases;
+    cases.push_back({"MissingObj", "none.obj", "", true, "No such file"});
+    cases.push_back({"MissingGltf", "none.glb", "", true, "No such file"});
+    cases.push_back({"MalformedObj", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n", false, "malformed"});
+    cases.push_back({"ObjIndexOutOfRange", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n", false, "out of range"});
+    // tinyobjloader reads "nan" as 0: the triangle becomes degenerate (refused all the same).
+    cases.push_back({"ObjNanVertex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 nan\nf 1 2 3\n", false, "no usable triangles"});
+    cases.push_back({"ObjHugeVertex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1e400\nf 1 2 3\n", false, "not finite"});
+    cases.push_back({"ObjNoFaces", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\n", false, "no triangles"});
+    cases.push_back({"ObjEmpty", "bad.obj", "", false, "no triangles"});
+    cases.push_back({"ObjOnlyDegenerate", "bad.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", false, "no usable triangles"});
+    cases.push_back({"MalformedGltfJson", "bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [", false, "malformed glTF"});
+    cases.push_back({"GltfNotJson", "bad.gltf", "hello", false, "malformed glTF"});
+    cases.push_back({"TruncatedGlb", "bad.glb", full.substr(0, full.size() - 10), false, "malformed GLB"});
+    cases.push_back({"TruncatedGlbHeader", "bad.glb", full.substr(0, 10), false, "malformed GLB"});
+    cases.push_back({"GlbNanVertex", "bad.glb", glb(quadGltfJson("", n), nanBin), false, "not finite"});
+    cases.push_back({"GlbIndexOutOfRange", "bad.glb", glb(quadGltfJson("", n), rangeBin), false, "out of range"});
+    cases.push_back({"GlbIndicesPastTheBuffer", "bad.glb", glb(quadGltfJson("", n, 60), bin), false, ""});
+    cases.push_back({"GltfNoMeshes", "bad.gltf", R"({"asset": {"version": "2.0"}})", false, "no triangles"});
+    return cases;
+}
+
+TEST_F(embree_loader, BadFilesGiveAnErrorNamingTheFile) {
+    for (const BadFile& c : badFiles()) {
+        SCOPED_TRACE(c.name);
+        const fs::path path = c.missing ? mDir / c.file : write(c.file, c.bytes);
+        EmbreeWorld world;
+        const std::string extension = path.extension().string();
+        const auto result = extension == ".obj" ? world.loadObj(path) : world.loadGltf(path);
+        EXPECT_FALSE(result.ok);
+        EXPECT_NE(result.error.find(path.string()), std::string::npos) << result.error;
+        EXPECT_NE(result.error.find(c.reason), std::string::npos) << result.error;
+        EXPECT_EQ(result.error.find('\n'), std::string::npos) << result.error;
+        EXPECT_EQ(world.meshTriangleCount(), 0u);
+    }
+}
+
+TEST_F(embree_loader, DegenerateTrianglesAreSkippedAndCounted) {
+    EmbreeWorld world;
+    const auto result = world.loadObj(write("floor.obj", std::string(kQuadObj) + "v 0 0 0\nf 1 5 5\nf 1 2 3\n"));
+    ASSERT_TRUE(result.ok) << result.error;
+    EXPECT_EQ(result.report.triangles, 3u);
+    EXPECT_EQ(result.report.degenerateTriangles, 1u);
+    EXPECT_EQ(result.report.firstDegenerateTriangle, 2u);
+}
+
+TEST(embree_mesh, AddMeshRefusesBadInput) {
+    EmbreeWorld world;
+    const std::vector<RVec3> vertices{r3(0, 0, 0), r3(1, 0, 0), r3(0, 0, 1)};
+    foresight::MeshReport report;
+    EXPECT_EQ(world.addMesh(vertices, std::vector<std::uint32_t>{0, 1, 3}, &report), Status::DegenerateShape);
+    EXPECT_NE(report.error.find("out of range"), std::string::npos);
+    EXPECT_EQ(world.addMesh(vertices, std::vector<std::uint32_t>{0, 1}, &report), Status::DegenerateShape);
+    const std::vector<RVec3> bad{r3(0, 0, 0), r3(1, 0, 0), RVec3(std::numeric_limits<foresight::Real>::quiet_NaN())};
+    EXPECT_EQ(world.addMesh(bad, std::vector<std::uint32_t>{0, 1, 2}, &report), Status::NonFiniteInput);
+    EXPECT_EQ(world.addMesh(vertices, std::vector<std::uint32_t>{}, &report), Status::DegenerateShape);
+    EXPECT_EQ(world.meshTriangleCount(), 0u);
+    EXPECT_EQ(world.addMesh(vertices, std::vector<std::uint32_t>{0, 1, 2}, &report), Status::Ok);
+    EXPECT_EQ(world.meshTriangleCount(), 1u);
+    CastHit hit;
+    EXPECT_FALSE(world.castSegment(SegmentCast{r3(0.2, 1, 0.2), Vec3(0, 0, 0), 0.0f}, hit));  // zero length
+    ASSERT_TRUE(world.commit());
+    EXPECT_TRUE(world.castSegment(SegmentCast{r3(0.2, 1, 0.2), Vec3(0, -2, 0), 0.0f}, hit));
+}
+
+}  // namespace
