@@ -15,9 +15,7 @@
 #include <foresight/embree_world.h>
 
 #include <cctype>
-#include <map>
 #include <memory>
-#include <mutex>
 #endif
 
 namespace foresight_cli {
@@ -445,28 +443,11 @@ void addShape(foresight::StaticWorld& world, const auto& shape, const std::strin
 }
 
 #ifdef FORESIGHT_CLI_WITH_EMBREE
-// With Embree, `world.meshes[]` go into an EmbreeWorld (which also gets a copy of the
-// primitives) instead of StaticWorld triangles. Scenario (scenario.h) has no member for it, so
-// it is kept here, keyed by the scenario's StaticWorld; buildScenario drops a stale entry.
-std::mutex gMeshWorldsMutex;
-std::map<const foresight::StaticWorld*, std::unique_ptr<foresight::EmbreeWorld>> gMeshWorlds;
-
-foresight::EmbreeWorld& meshWorldFor(const foresight::StaticWorld& world) {
-    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
-    auto& entry = gMeshWorlds[&world];
-    if (!entry) entry = std::make_unique<foresight::EmbreeWorld>();
-    return *entry;
-}
-
-foresight::EmbreeWorld* findMeshWorld(const foresight::StaticWorld& world) {
-    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
-    const auto found = gMeshWorlds.find(&world);
-    return found == gMeshWorlds.end() ? nullptr : found->second.get();
-}
-
-void dropMeshWorld(const foresight::StaticWorld& world) {
-    const std::lock_guard<std::mutex> lock(gMeshWorldsMutex);
-    gMeshWorlds.erase(&world);
+// With Embree, `world.meshes[]` go into an EmbreeWorld (Scenario::meshWorld, which also gets a
+// copy of the primitives) instead of StaticWorld triangles.
+foresight::EmbreeWorld& meshWorldFor(std::unique_ptr<foresight::CollisionWorld>& slot) {
+    if (!slot) slot = std::make_unique<foresight::EmbreeWorld>();
+    return static_cast<foresight::EmbreeWorld&>(*slot);  // the only kind this file puts there
 }
 
 bool isGltf(const std::filesystem::path& file) {
@@ -477,7 +458,7 @@ bool isGltf(const std::filesystem::path& file) {
 #endif
 
 void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, foresight::StaticWorld& world,
-                Diagnostics& d) {
+                [[maybe_unused]] std::unique_ptr<foresight::CollisionWorld>& meshWorld, Diagnostics& d) {
     if (!expectObject(value, "world", d, "{\"planes\", \"boxes\", \"spheres\", \"triangles\", \"meshes\"}")) return;
     Fields fields(value, "world", d);
 
@@ -587,7 +568,7 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
         const std::string where = resolved.string() == file ? std::string() : " (" + resolved.string() + ")";
 #ifdef FORESIGHT_CLI_WITH_EMBREE
         if (isGltf(resolved)) {
-            const foresight::MeshLoadResult gltf = meshWorldFor(world).loadGltf(resolved);
+            const foresight::MeshLoadResult gltf = meshWorldFor(meshWorld).loadGltf(resolved);
             if (!gltf.ok) {
                 // The loader's message starts with the path, already in ours.
                 std::string message = gltf.error;
@@ -625,7 +606,7 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
             }
         }
         foresight::MeshReport report;
-        if (meshWorldFor(world).addMesh(vertices, indices, &report) != Status::Ok)
+        if (meshWorldFor(meshWorld).addMesh(vertices, indices, &report) != Status::Ok)
             d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + report.error);
 #else
         for (const auto& triangle : loaded.triangles) addShape(world, triangle, filePath, d);
@@ -804,12 +785,13 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
     Fields root(document, "", diagnostics);
     root.vector("gravity", false, scenario.gravity);
 #ifdef FORESIGHT_CLI_WITH_EMBREE
-    dropMeshWorld(scenario.world);
+    scenario.meshWorld.reset();
 #endif
-    if (const Json* world = root.get("world", false)) buildWorld(*world, baseDirectory, scenario.world, diagnostics);
+    if (const Json* world = root.get("world", false)) buildWorld(*world, baseDirectory, scenario.world, scenario.meshWorld, diagnostics);
 #ifdef FORESIGHT_CLI_WITH_EMBREE
     if (diagnostics.ok()) {
-        if (foresight::EmbreeWorld* meshWorld = findMeshWorld(scenario.world)) {
+        if (scenario.meshWorld) {
+            auto* meshWorld = static_cast<foresight::EmbreeWorld*>(scenario.meshWorld.get());
             // The mesh world answers the casts: it gets the primitives too.
             for (const auto& shape : scenario.world.planes()) meshWorld->add(shape);
             for (const auto& shape : scenario.world.spheres()) meshWorld->add(shape);
@@ -850,7 +832,7 @@ bool finite(const foresight::Quat& q) {
 Status runProjectile(const Scenario& scenario, const Prediction& p, PredictionResult& result) {
     const foresight::CollisionWorld* world = scenario.world.shapeCount() > 0 ? &scenario.world : nullptr;
 #ifdef FORESIGHT_CLI_WITH_EMBREE
-    if (const foresight::EmbreeWorld* meshWorld = findMeshWorld(scenario.world)) world = meshWorld;
+    if (scenario.meshWorld) world = scenario.meshWorld.get();
 #endif
     std::vector<foresight::TrajectoryPoint> points;
     if (p.trajectory) points.resize(foresight::trajectoryCapacity(p.time, p.projectile));

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,9 @@ struct Prediction {
 struct Scenario {
     foresight::Vec3 gravity{0.0f, -9.81f, 0.0f};
     foresight::StaticWorld world;
+    /// When meshes went into a BVH backend (EmbreeWorld, holding the primitives too), the world
+    /// the casts go to; null otherwise (then `world` answers).
+    std::unique_ptr<foresight::CollisionWorld> meshWorld;
     std::vector<Prediction> predictions;
 };
 
