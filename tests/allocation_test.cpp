@@ -2,6 +2,7 @@
 // only) by counting versions; after the StaticWorld is built and the trajectory storage is
 // reserved, every prediction and cast must leave the count unchanged.
 
+#include "counting_allocator.h"
 #include "test_util.h"
 
 #include <atomic>
@@ -10,63 +11,6 @@
 #include <new>
 #include <vector>
 
-namespace {
-std::atomic<long> gAllocations{0};
-
-void* countedAllocate(std::size_t size) {
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (size == 0) size = 1;
-    return std::malloc(size);
-}
-
-void* countedAllocateAligned(std::size_t size, std::align_val_t alignment) {
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    const auto align = static_cast<std::size_t>(alignment);
-    std::size_t rounded = (size + align - 1) / align * align;
-    if (rounded == 0) rounded = align;
-    return std::aligned_alloc(align, rounded);
-}
-
-// Out of line so that GCC's -Wmismatched-new-delete does not pair it with the operators.
-[[gnu::noinline]] void countedRelease(void* p) noexcept { std::free(p); }
-} // namespace
-
-void* operator new(std::size_t size) {
-    if (void* p = countedAllocate(size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    if (void* p = countedAllocate(size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return countedAllocate(size); }
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return countedAllocate(size); }
-void* operator new(std::size_t size, std::align_val_t alignment) {
-    if (void* p = countedAllocateAligned(size, alignment)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-    if (void* p = countedAllocateAligned(size, alignment)) return p;
-    throw std::bad_alloc();
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return countedAllocateAligned(size, alignment);
-}
-void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return countedAllocateAligned(size, alignment);
-}
-void operator delete(void* p) noexcept { countedRelease(p); }
-void operator delete[](void* p) noexcept { countedRelease(p); }
-void operator delete(void* p, std::size_t) noexcept { countedRelease(p); }
-void operator delete[](void* p, std::size_t) noexcept { countedRelease(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { countedRelease(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { countedRelease(p); }
-void operator delete(void* p, std::align_val_t) noexcept { countedRelease(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { countedRelease(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { countedRelease(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { countedRelease(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { countedRelease(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { countedRelease(p); }
 
 namespace {
 
@@ -91,9 +35,9 @@ double* volatile vectorSink = nullptr;
 /// Allocations made while running `f` (f must not use gtest assertions that allocate).
 template <class F>
 long allocationsDuring(F&& f) {
-    const long before = gAllocations.load();
+    const long before = ftest::gAllocations.load();
     f();
-    return gAllocations.load() - before;
+    return ftest::gAllocations.load() - before;
 }
 
 class Allocation : public ::testing::Test {

@@ -5,6 +5,7 @@
 //
 // This binary replaces global operator new (and Bullet's btAlignedAlloc) to count allocations.
 
+#include "counting_allocator.h"
 #include "test_util.h"
 
 #include <foresight/bullet_world.h>
@@ -20,18 +21,10 @@
 #include <vector>
 
 namespace {
-std::atomic<long> gAllocations{0};
-
-void* countedAllocate(std::size_t size) {
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(size == 0 ? 1 : size);
-}
-[[gnu::noinline]] void countedRelease(void* p) noexcept { std::free(p); }
-
 // Bullet allocates through btAlignedAlloc, which aligns memory from this function (installed
 // before any Bullet object exists, by a static initialiser).
 void* bulletAllocate(std::size_t size) {
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
+    ftest::countAllocation();
     return std::malloc(size == 0 ? 1 : size);
 }
 void bulletRelease(void* p) { std::free(p); }
@@ -40,19 +33,6 @@ const bool gBulletCounted = [] {
     return true;
 }();
 }  // namespace
-
-void* operator new(std::size_t size) {
-    if (void* p = countedAllocate(size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    if (void* p = countedAllocate(size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { countedRelease(p); }
-void operator delete[](void* p) noexcept { countedRelease(p); }
-void operator delete(void* p, std::size_t) noexcept { countedRelease(p); }
-void operator delete[](void* p, std::size_t) noexcept { countedRelease(p); }
 
 namespace {
 
@@ -653,9 +633,9 @@ TEST(BulletWorld, CastsDoNotAllocate) {
         }
     };
     run();  // warm-up
-    const long before = gAllocations.load();
+    const long before = ftest::gAllocations.load();
     run();
-    EXPECT_EQ(gAllocations.load() - before, 0);
+    EXPECT_EQ(ftest::gAllocations.load() - before, 0);
 }
 
 // The collision filter of the casts: objects whose group the mask excludes are not seen.
