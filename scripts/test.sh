@@ -87,8 +87,15 @@ if [[ "$found" != "$tmp/prefix/"* ]]; then
 fi
 cmake --build "$tmp/example" --parallel "$jobs"
 
-step "running the example (examples/hello_prediction.cpp)"
+step "running the examples (examples/hello_prediction.cpp, and hello_embree.cpp when Embree is built)"
 "$tmp/example/hello_prediction"
+if grep -q '^FORESIGHT_WITH_EMBREE:BOOL=ON' build/CMakeCache.txt; then
+    if [[ ! -x "$tmp/example/hello_embree" ]]; then
+        echo "test.sh: the installed package has no foresight::embree although build/ has it" >&2
+        exit 1
+    fi
+    "$tmp/example/hello_embree"
+fi
 
 step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
 ./build/bench/foresight_bench --benchmark_min_time=0.01

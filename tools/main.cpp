@@ -1,10 +1,12 @@
 /// `foresight`: the command-line tool of the foresight library.
 ///   foresight predict FILE|-     scenario JSON in, result JSON out (the scenario format)
 ///   foresight demo [--json FILE|-] [--scenario FILE|-]
+///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
+#include "compare.h"
 #include "demo.h"
 #include "scenario.h"
 
@@ -39,6 +41,20 @@ int run(int argc, char** argv) {
                      "also write the demo's input scenario to FILE (- for stdout), for `foresight predict`")
         ->type_name("FILE");
 
+    std::string compareFile;
+    foresight_cli::CompareOptions compareOptions;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "Measure the projectile predictions (stepped and exact) against a Bullet rigid-body simulation");
+    compare->add_option("FILE", compareFile, "scenario file, or - for standard input")->type_name("FILE");
+    compare->add_flag("--builtin", compareOptions.builtin,
+                      "the built-in scenes (floor, wall, ramp, stairs, room mesh, demo level): a Markdown table");
+    compare->add_option("--frequency", compareOptions.frequency, "Bullet's step rate in Hz (240 to 100000)")
+        ->type_name("HZ")
+        ->default_val(960);
+    compare->add_flag("--spin", compareOptions.spin, "let the simulated sphere rotate (default: no spin, as a point mass)");
+    compare->add_option("--json", compareOptions.jsonFile, "also write every detail as JSON to FILE (- for stdout)")
+        ->type_name("FILE");
+
     CLI::App* accuracy = app.add_subcommand(
         "accuracy", "Measure how far the article's methods are from the exact ones (Markdown tables)");
 
@@ -52,6 +68,7 @@ int run(int argc, char** argv) {
 
     if (predict->parsed()) return foresight_cli::predictCommand(scenarioFile);
     if (demo->parsed()) return foresight_cli::demoCommand(jsonFile, demoScenarioFile);
+    if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     return 2;
 }

@@ -187,6 +187,11 @@ Status EmbreeWorld::add(const Triangle& triangle) { return mPrimitives.add(trian
 
 std::size_t EmbreeWorld::meshTriangleCount() const { return mImpl ? mImpl->triangles.size() : 0; }
 
+std::span<const Triangle> EmbreeWorld::meshTriangles() const {
+    if (!mImpl) return {};
+    return mImpl->triangles;
+}
+
 Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices,
                             MeshReport* report) {
     MeshReport local;

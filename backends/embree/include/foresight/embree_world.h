@@ -112,6 +112,9 @@ public:
 
     /// Number of mesh triangles (in the BVH).
     std::size_t meshTriangleCount() const;
+    /// The mesh triangles, in the order they were added (degenerate ones skipped), e.g. to
+    /// build the same world in another engine. Valid until the next add or move.
+    std::span<const Triangle> meshTriangles() const;
     /// The internal world holding the primitives.
     const StaticWorld& primitives() const { return mPrimitives; }
 
