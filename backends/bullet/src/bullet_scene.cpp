@@ -17,7 +17,12 @@ BulletScene::BulletScene()
     : mConfiguration(std::make_unique<btDefaultCollisionConfiguration>()),
       mDispatcher(std::make_unique<btCollisionDispatcher>(mConfiguration.get())),
       mBroadphase(std::make_unique<btDbvtBroadphase>()),
-      mWorld(std::make_unique<btCollisionWorld>(mDispatcher.get(), mBroadphase.get(), mConfiguration.get())) {}
+      mSolver(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      mWorld(std::make_unique<btDiscreteDynamicsWorld>(mDispatcher.get(), mBroadphase.get(), mSolver.get(),
+                                                       mConfiguration.get())) {
+    // foresight's standard gravity (Bullet's default is -10).
+    mWorld->setGravity(btVector3(0, -static_cast<btScalar>(kStandardGravity), 0));
+}
 
 BulletScene::~BulletScene() {
     // Objects leave the world before it (and the shapes they use) are destroyed.
@@ -29,6 +34,12 @@ void BulletScene::addObject(std::unique_ptr<btCollisionShape> shape, const btTra
     object->setCollisionShape(shape.get());
     object->setWorldTransform(transform);
     object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
+    // Neutral materials: Bullet multiplies the two bodies' restitution and friction (see the
+    // class comment), so a simulated body's own values become the effective ones.
+    object->setRestitution(btScalar(1));
+    object->setFriction(btScalar(1));
+    object->setRollingFriction(btScalar(0));
+    object->setSpinningFriction(btScalar(0));
     // As a dynamics world files static objects: group StaticFilter, colliding with the rest.
     mWorld->addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
                                btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);

@@ -17,6 +17,8 @@
 #include <foresight/world.h>
 
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <btBulletCollisionCommon.h>
 
 #include <memory>
@@ -99,9 +101,11 @@ private:
     BulletWorldSettings mSettings;
 };
 
-/// A static Bullet world (btCollisionWorld with a btDbvtBroadphase) built from foresight's
-/// shapes, which owns everything Bullet needs. For tests and ground-truth comparisons against
-/// StaticWorld; a game passes its own world to BulletWorld instead.
+/// A static Bullet world (a btDiscreteDynamicsWorld with a btDbvtBroadphase and a
+/// btSequentialImpulseConstraintSolver) built from foresight's shapes, which owns everything
+/// Bullet needs. For tests and ground-truth comparisons against StaticWorld (BulletWorld casts)
+/// and for rigid-body reference simulations (simulateProjectileRigidBody, bullet_simulation.h);
+/// a game passes its own world to BulletWorld instead.
 ///
 /// Shapes map to: Plane -> btStaticPlaneShape; Sphere -> btSphereShape; OrientedBox ->
 /// btBoxShape with its collision margin set to 0 (the outer size is kept; Bullet's default
@@ -109,6 +113,13 @@ private:
 /// triangles -> btBvhTriangleMeshShape (margin 0, quantized BVH) over a btTriangleMesh. All
 /// objects are static (CF_STATIC_OBJECT, filter group StaticFilter). Positions are converted to
 /// btScalar (float in the default Bullet build: about 1e-6 m at 10 m from the origin).
+///
+/// Materials: every static object has restitution 1, friction 1 and rolling and spinning
+/// friction 0. Bullet combines the two bodies of a contact as products (btManifoldResult::
+/// calculateCombinedRestitution and calculateCombinedFriction, Bullet 2.x and 3.x, the latter
+/// clamped to [-10, 10]), so a simulated body's own restitution and friction are the effective
+/// ones. Bullet's defaults (restitution 0, friction 0.5) would make every contact dead and halve
+/// the friction. The casts of BulletWorld do not read materials.
 class BulletScene {
 public:
     BulletScene();
@@ -139,6 +150,11 @@ public:
     const btCollisionWorld& world() const { return *mWorld; }
     /// See world() const.
     btCollisionWorld& world() { return *mWorld; }
+    /// The same world as a dynamics world (for simulations; gravity (0, -kStandardGravity, 0)). Bodies
+    /// added to it are the caller's to remove; objectCount() counts only the static shapes.
+    btDiscreteDynamicsWorld& dynamicsWorld() { return *mWorld; }
+    /// See dynamicsWorld().
+    const btDiscreteDynamicsWorld& dynamicsWorld() const { return *mWorld; }
 
 private:
     void addObject(std::unique_ptr<btCollisionShape> shape, const btTransform& transform);
@@ -146,7 +162,8 @@ private:
     std::unique_ptr<btDefaultCollisionConfiguration> mConfiguration;
     std::unique_ptr<btCollisionDispatcher> mDispatcher;
     std::unique_ptr<btDbvtBroadphase> mBroadphase;
-    std::unique_ptr<btCollisionWorld> mWorld;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> mSolver;
+    std::unique_ptr<btDiscreteDynamicsWorld> mWorld;
     std::vector<std::unique_ptr<btTriangleMesh>> mMeshes;
     std::vector<std::unique_ptr<btCollisionShape>> mShapes;
     std::vector<std::unique_ptr<btCollisionObject>> mObjects;
