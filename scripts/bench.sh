@@ -6,12 +6,128 @@
 #
 # Usage: scripts/bench.sh [benchmark options...], e.g. --benchmark_filter=Vehicle
 #        scripts/bench.sh --instructions   (instruction counts under callgrind instead of times)
-# The JSON results go to build/bench.json (FORESIGHT_BENCH_OUT overrides, relative to the
-# repository root). With FORESIGHT_BENCH_STRICT=1 a missed target makes the script fail
-# (timings are noisy: off by default).
+#        scripts/bench.sh --worlds [benchmark options...]
+#            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
+#            backends): segment casts per second on a mesh of a million triangles through
+#            EmbreeWorld and Bullet's rayTest, target Embree >= 5x Bullet; predictions per second
+#            on the demo level per world; the BVH build times. Progress goes to stderr on a
+#            terminal only; the build's output is shown only if it fails.
+# The JSON results go to build/bench.json (--worlds: build/bench_worlds.json; FORESIGHT_BENCH_OUT
+# overrides, relative to the repository root). With FORESIGHT_BENCH_STRICT=1 a missed target
+# makes the script fail (timings are noisy: off by default). FORESIGHT_BENCH_BUILD_DIR=DIR
+# (--worlds only) builds and runs an already configured tree DIR instead of build/.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
+
+# medians JSON [FIELD]: lines "run_name value" of FIELD (cpu_time by default, in the benchmark's
+# time unit) of the median aggregates in Google Benchmark's JSON output.
+medians() {
+    local json=$1 field=${2:-cpu_time}
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$json" "$field" <<'PY'
+import json, sys
+with open(sys.argv[1]) as f:
+    for b in json.load(f)["benchmarks"]:
+        if b.get("aggregate_name") == "median" and sys.argv[2] in b:
+            print(b["run_name"], b[sys.argv[2]])
+PY
+    else
+        # Google Benchmark writes one "key": value per line; good enough without a JSON parser.
+        awk -v field="\"$field\":" '
+            /"name":/ { name = $2; gsub(/[",]/, "", name) }
+            $1 == field && name ~ /_median$/ {
+                value = $2; gsub(/,/, "", value); sub(/_median$/, "", name); print name, value
+            }' "$json"
+    fi
+}
+
+if [[ "${1:-}" == "--worlds" ]]; then
+    shift
+    progress() { if [[ -t 2 ]]; then echo "bench.sh: $*" >&2; fi; }
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_worlds.json}
+    log=$(mktemp "${TMPDIR:-/tmp}/foresight-bench-worlds.XXXXXX")
+    trap 'rm -f "$log"' EXIT
+    progress "building foresight_bench_worlds in $dir/"
+    if [[ "$dir" == build ]]; then
+        build=(./scripts/build.sh --target foresight_bench_worlds)
+    else
+        build=(cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+            --target foresight_bench_worlds)
+    fi
+    if ! "${build[@]}" >"$log" 2>&1; then
+        cat "$log" >&2
+        echo "bench.sh: building foresight_bench_worlds in $dir/ failed (above); the target exists only" \
+            "with both backends (FORESIGHT_WITH_EMBREE, FORESIGHT_WITH_BULLET)" >&2
+        exit 1
+    fi
+    progress "running $dir/bench/foresight_bench_worlds, 5 repetitions (about two minutes)"
+    # The program's own lines (mesh, BVH builds, agreement of the worlds) go to stderr: kept
+    # for the summary.
+    if ! "$dir/bench/foresight_bench_worlds" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" 2>"$log"; then
+        cat "$log" >&2
+        echo "bench.sh: foresight_bench_worlds failed (above)" >&2
+        exit 1
+    fi
+
+    echo ""
+    echo "Collision worlds, medians of this run ($out); one thread:"
+    echo "  Builds and checks:"
+    sed -n 's/^foresight_bench_worlds: /    /p' "$log"
+    medians "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        { rate[$1] = $2 }
+        function human(x) {
+            if (x >= 1e6) return sprintf("%.3gM", x / 1e6)
+            if (x >= 1e3) return sprintf("%.3gk", x / 1e3)
+            return sprintf("%.3g", x)
+        }
+        function show(label, name) {
+            if (name in rate) printf "    %-48s %10s/s\n", label, human(rate[name])
+            else printf "    %-48s %10s\n", label, "not measured"
+        }
+        function ratio(label, a, b, target) {
+            if (!(a in rate) || !(b in rate) || rate[b] <= 0) {
+                printf "  %-50s not measured (filtered out?)\n", label
+                return
+            }
+            r = rate[a] / rate[b]
+            if (target > 0) {
+                printf "  %-50s %6.2fx  (target >= %gx: %s)\n", label, r, target, (r >= target ? "met" : "MISSED")
+                if (r < target) missed = 1
+            } else {
+                printf "  %-50s %6.2fx\n", label, r
+            }
+        }
+        END {
+            print "  Segment casts on the million-triangle mesh (radius 0):"
+            show("EmbreeWorld::castSegment", "BM_Cast/Embree")
+            show("Bullet btCollisionWorld::rayTest", "BM_Cast/BulletRayTest")
+            show("BulletWorld::castSegment (the adapter)", "BM_Cast/BulletWorld")
+            show("native Embree triangles, rtcIntersect1 (info)", "BM_Cast/EmbreeNative")
+            show("  the same, Embree default scene flags (info)", "BM_Cast/EmbreeNativeDefault")
+            show("Embree user geometry, float test (info)", "BM_Cast/EmbreeUserFloat")
+            ratio("EmbreeWorld / Bullet rayTest", "BM_Cast/Embree", "BM_Cast/BulletRayTest", 5)
+            ratio("native Embree triangles / Bullet rayTest (info)", "BM_Cast/EmbreeNative", "BM_Cast/BulletRayTest", 0)
+            print "  Sphere sweeps, radius 0.1 m (information):"
+            show("EmbreeWorld::castSegment", "BM_Sweep/Embree")
+            show("Bullet convexSweepTest", "BM_Sweep/BulletConvexSweep")
+            show("BulletWorld::castSegment", "BM_Sweep/BulletWorld")
+            print "  Projectile predictions on the demo level (3 s at 50 Hz, 64 throws):"
+            split("Embree Bullet Static", worlds, " ")
+            split("EmbreeWorld BulletWorld StaticWorld(brute-force)", labels, " ")
+            for (i = 1; i <= 3; ++i)
+                for (m = 0; m < 2; ++m) {
+                    method = m == 0 ? "Exact" : "Stepped"
+                    show(labels[i] " " method, "BM_DemoLevel/" worlds[i] "/" method)
+                }
+            ratio("Exact: EmbreeWorld / BulletWorld", "BM_DemoLevel/Embree/Exact", "BM_DemoLevel/Bullet/Exact", 0)
+            ratio("Stepped: EmbreeWorld / BulletWorld", "BM_DemoLevel/Embree/Stepped", "BM_DemoLevel/Bullet/Stepped", 0)
+            if (missed && strict == 1) exit 1
+        }'
+    exit 0
+fi
 
 if [[ "${1:-}" == "--instructions" ]]; then
     # Instruction counts under callgrind: the same every run, whatever else the machine does.
@@ -45,29 +161,9 @@ out=${FORESIGHT_BENCH_OUT:-build/bench.json}
 ./build/bench/foresight_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
     --benchmark_out="$out" --benchmark_out_format=json "$@"
 
-# Lines "run_name median_cpu_time" from the JSON (all times in the same unit: ns by default).
-medians() {
-    if command -v python3 >/dev/null 2>&1; then
-        python3 - "$out" <<'PY'
-import json, sys
-with open(sys.argv[1]) as f:
-    for b in json.load(f)["benchmarks"]:
-        if b.get("aggregate_name") == "median" and "cpu_time" in b:
-            print(b["run_name"], b["cpu_time"])
-PY
-    else
-        # Google Benchmark writes one "key": value per line; good enough without a JSON parser.
-        awk '
-            /"name":/ { name = $2; gsub(/[",]/, "", name) }
-            /"cpu_time":/ && name ~ /_median$/ {
-                value = $2; gsub(/,/, "", value); sub(/_median$/, "", name); print name, value
-            }' "$out"
-    fi
-}
-
 echo ""
 echo "Ratios of median CPU times (this run, $out):"
-medians | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+medians "$out" | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
     { time[$1] = $2 }
     function report(label, exact, reference, target,    ratio) {
         if (!(exact in time) || !(reference in time) || time[reference] <= 0) {

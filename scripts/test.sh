@@ -6,7 +6,8 @@
 #   2. install      `cmake --install build` into a temporary prefix; the standalone project in
 #                   examples/ is configured against it with find_package(foresight CONFIG),
 #                   built with warnings as errors, and run
-#   3. benchmark    build/bench/foresight_bench, very briefly (a smoke test, not a measurement)
+#   3. benchmark    build/bench/foresight_bench, very briefly (a smoke test, not a measurement),
+#                   and build/bench/foresight_bench_worlds when the backends are built
 #   4. build-asan/  debug build with AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
 #                   errors, no benchmarks; ctest, halting on the first sanitizer report
 #
@@ -99,6 +100,12 @@ fi
 
 step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
 ./build/bench/foresight_bench --benchmark_min_time=0.01
+# Built with both the Embree and Bullet backends; about 8 s (the million-triangle mesh's BVHs),
+# and it fails if the worlds disagree on a cast.
+if [[ -x build/bench/foresight_bench_worlds ]]; then
+    step "collision worlds benchmark smoke test (build/bench/foresight_bench_worlds, not a measurement)"
+    ./build/bench/foresight_bench_worlds --benchmark_min_time=0.01
+fi
 
 step "building build-asan/ (Debug, address + undefined sanitizers, -Werror)"
 configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_WERROR=ON \
