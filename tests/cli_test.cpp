@@ -747,11 +747,44 @@ TEST_F(cli, DemoScenarioIsTheCheckedInFileAndPredictReproducesTheDemo) {
     const CliRun scenario = runCli({"demo", "--scenario", "-"});
     ASSERT_EQ(scenario.status, 0) << scenario.err;
     EXPECT_EQ(scenario.out, readFile(kData / "demo_scenario.json"));
+    // The scenario's level mesh cannot go to standard output: a note says where it must be.
+    EXPECT_NE(scenario.err.find("demo_level.obj"), std::string::npos) << scenario.err;
 
+    // The checked-in copy, with the level written beside it by `foresight level`.
+    const fs::path copy = mDir / "demo_scenario.json";
+    fs::copy_file(kData / "demo_scenario.json", copy);
+    const CliRun level = runCli({"level", "--obj", (mDir / "demo_level.obj").string()});
+    ASSERT_EQ(level.status, 0) << level.err;
     const CliRun demo = runCli({"demo", "--json", "-"});
-    const CliRun predict = runCli({"predict", (kData / "demo_scenario.json").string()});
+    const CliRun predict = runCli({"predict", copy.string()});
     ASSERT_EQ(predict.status, 0) << predict.err;
     EXPECT_EQ(predict.out, demo.out);
+}
+
+TEST_F(cli, DemoHasTheCourtyardGrenade) {
+    const CliRun run = runCli({"demo", "--json", "-"});
+    const Json output = parseOutput(run);
+    for (const char* id : {"courtyard_stepped", "courtyard_exact"}) {
+        const Json& grenade = byId(output, id);
+        // Thrown from the doorway (z = -15) into the courtyard: it bounces (floor, a riser of the
+        // stairs, the west wall) and, walls being closed, stays inside the inner courtyard
+        // [-15, 15]^2 (a point projectile touches a wall at most), above the floor.
+        EXPECT_GE(grenade["bounces"].get<int>(), 3) << id;
+        const auto position = grenade["position"].get<std::vector<double>>();
+        EXPECT_GE(position[0], -15.0 - 1e-9) << id; // 1e-9: the skin a bounce leaves is ulps
+        EXPECT_LE(position[0], 15.0) << id;
+        EXPECT_GE(position[1], -1e-9) << id;
+        EXPECT_GE(position[2], -15.0) << id;
+        EXPECT_LE(position[2], 15.0) << id;
+        bool wall = false;
+        for (const auto& point : grenade["trajectory"]) {
+            if (point["event"] == "bounce" && point["normal"] == Json::array({1, 0, 0})) wall = true;
+        }
+        EXPECT_TRUE(wall) << id << ": no bounce off the west wall (normal +x)";
+    }
+    EXPECT_NE(run.out.find("courtyard_exact"), std::string::npos);
+    const CliRun table = runCli({"demo"});
+    EXPECT_NE(table.out.find("courtyard"), std::string::npos) << table.out;
 }
 
 TEST_F(cli, DemoWritesFiles) {
@@ -762,10 +795,67 @@ TEST_F(cli, DemoWritesFiles) {
     EXPECT_NE(run.out.find("difference"), std::string::npos); // the table still goes to stdout
     EXPECT_TRUE(Json::accept(readFile(json)));
     EXPECT_EQ(readFile(scenario), readFile(kData / "demo_scenario.json"));
+    // The level mesh goes beside the scenario, the same bytes as `foresight level --obj`; so
+    // `foresight predict` on the written scenario reproduces the demo.
+    const CliRun level = runCli({"level", "--obj", (mDir / "level.obj").string()});
+    ASSERT_EQ(level.status, 0) << level.err;
+    EXPECT_EQ(readFile(mDir / "demo_level.obj"), readFile(mDir / "level.obj"));
+    const CliRun predict = runCli({"predict", scenario.string()});
+    ASSERT_EQ(predict.status, 0) << predict.err;
+    EXPECT_EQ(predict.out, readFile(json));
 
     const CliRun bad = runCli({"demo", "--json", (mDir / "no-such-dir" / "x.json").string()});
     EXPECT_EQ(bad.status, 2);
     EXPECT_NE(bad.err.find("no-such-dir"), std::string::npos) << bad.err;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Level
+
+TEST_F(cli, LevelWritesEveryFormatAndSaysWhat) {
+    const fs::path obj = mDir / "level.obj", gltf = mDir / "level.gltf", glb = mDir / "level.glb";
+    const CliRun run = runCli({"level", "--obj", obj.string(), "--gltf", gltf.string(), "--glb", glb.string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    // One line per file, naming it, with the triangle count.
+    EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n'), 3) << run.out;
+    for (const fs::path& file : {obj, gltf, glb}) {
+        EXPECT_NE(run.out.find(file.string() + ": "), std::string::npos) << run.out;
+        EXPECT_GT(fs::file_size(file), 1000u) << file;
+    }
+    EXPECT_NE(run.out.find(" triangles"), std::string::npos) << run.out;
+    EXPECT_EQ(readFile(obj).rfind("# foresight level mesh", 0), 0u);
+    EXPECT_TRUE(Json::accept(readFile(gltf)));
+    EXPECT_EQ(readFile(glb).substr(0, 4), "glTF");
+
+    // The room: 12 triangles.
+    const CliRun room = runCli({"level", "--room-size", "4", "3", "5", "--obj", (mDir / "room.obj").string()});
+    ASSERT_EQ(room.status, 0) << room.err;
+    EXPECT_NE(room.out.find(": 12 triangles"), std::string::npos) << room.out;
+    EXPECT_NE(readFile(mDir / "room.obj").find("v 2 3 2.5\n"), std::string::npos);
+}
+
+TEST_F(cli, LevelRefusesBadUsageWithStatusTwo) {
+    struct Case {
+        std::vector<std::string> args;
+        std::string message; ///< part of standard error
+    };
+    const std::string missingDir = (mDir / "no-such-dir" / "level.obj").string();
+    const std::vector<Case> cases{
+        {{"level"}, "nothing to write"},                                  // no output file
+        {{"level", "--room"}, "nothing to write"},                        // still none
+        {{"level", "--gltf", (mDir / "x.glb").string()}, "x.glb: expected a file name ending in .gltf"},
+        {{"level", "--glb", (mDir / "x.gltf").string()}, "x.gltf: expected a file name ending in .glb"},
+        {{"level", "--obj", missingDir}, missingDir + ": cannot write"},  // unwritable
+        {{"level", "--room-size", "1", "0", "1", "--obj", (mDir / "r.obj").string()}, "--room-size"},
+        {{"level", "--room-size", "1", "2", "--obj", (mDir / "r.obj").string()}, "room-size"}, // 2 numbers
+        {{"level", "--frobnicate"}, "frobnicate"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = runCli(c.args);
+        EXPECT_EQ(run.status, 2) << c.args.back() << "\n" << run.err;
+        EXPECT_TRUE(run.out.empty()) << run.out;
+        EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args.back() << "\n" << run.err;
+    }
 }
 
 TEST_F(cli, AccuracyPrintsTheTables) {

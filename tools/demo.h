@@ -1,21 +1,46 @@
 #pragma once
 /// @file demo.h
 /// `foresight demo`: the reference article's three scenarios (a running character, a bouncing
-/// grenade, a turning car), each predicted the article's way ("faithful") and exactly.
+/// grenade, a turning car) and a grenade thrown across the demo level (demo_level.h), each
+/// predicted the article's way ("faithful") and exactly; and `foresight level`, which writes
+/// the demo level's files.
 
 #include "json_output.h"
 
 #include <string>
+#include <vector>
 
 namespace foresight_cli {
 
+/// The file name the demo scenario gives its level mesh (`world.meshes[0].file`), relative to
+/// the scenario file.
+inline constexpr const char* kDemoLevelFile = "demo_level.obj";
+
 /// The demo's input, in the scenario format (`foresight demo --scenario FILE` writes it;
-/// tests/data/demo_scenario.json is a copy).
+/// tests/data/demo_scenario.json is a copy). Its world includes the demo level as the mesh
+/// kDemoLevelFile.
 Json demoScenario();
 
 /// Runs the demo: prints the comparison table to standard output, and writes the full result
 /// (`jsonFile`) and the input scenario (`scenarioFile`) when those are not empty ("-": standard
-/// output, which then holds only that JSON). Returns the exit status.
+/// output, which then holds only that JSON). A scenario file gets the level mesh written beside
+/// it (kDemoLevelFile); with "-" a note on standard error says where it must go. The demo
+/// itself builds the level in memory (makeDemoLevel), without files. Returns the exit status.
 int demoCommand(const std::string& jsonFile, const std::string& scenarioFile);
+
+/// Options of `foresight level`.
+struct LevelOptions {
+    std::string objFile;          ///< Wavefront OBJ output, or empty.
+    std::string gltfFile;         ///< glTF (.gltf, JSON with the buffer embedded) output, or empty.
+    std::string glbFile;          ///< binary glTF (.glb) output, or empty.
+    bool room = false;            ///< the closed room instead of the courtyard.
+    std::vector<double> roomSize; ///< the room's size (3 numbers, implies `room`) [Units: m].
+};
+
+/// `foresight level`: writes the demo level (or the closed room) to every file given, then
+/// prints one line per file (name, triangles) to standard output. Returns 0, or 2 (nothing on
+/// standard output) for no output file, a bad room size, a wrong extension or a write error,
+/// with a message naming the file.
+int levelCommand(const LevelOptions& options);
 
 } // namespace foresight_cli

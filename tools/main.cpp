@@ -3,6 +3,7 @@
 ///   foresight demo [--json FILE|-] [--scenario FILE|-]
 ///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
+///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
@@ -58,6 +59,17 @@ int run(int argc, char** argv) {
     CLI::App* accuracy = app.add_subcommand(
         "accuracy", "Measure how far the article's methods are from the exact ones (Markdown tables)");
 
+    foresight_cli::LevelOptions levelOptions;
+    CLI::App* level = app.add_subcommand(
+        "level", "Write the demo level (a walled courtyard) or a closed room as OBJ and glTF files");
+    level->add_option("--obj", levelOptions.objFile, "write Wavefront OBJ to FILE")->type_name("FILE");
+    level->add_option("--gltf", levelOptions.gltfFile, "write glTF (JSON, buffer embedded) to FILE.gltf")->type_name("FILE");
+    level->add_option("--glb", levelOptions.glbFile, "write binary glTF to FILE.glb")->type_name("FILE");
+    level->add_flag("--room", levelOptions.room, "a closed room seen from inside instead of the courtyard");
+    level->add_option("--room-size", levelOptions.roomSize, "the room's size in metres (default 10 4 10; implies --room)")
+        ->expected(3)
+        ->type_name("X Y Z");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -70,6 +82,7 @@ int run(int argc, char** argv) {
     if (demo->parsed()) return foresight_cli::demoCommand(jsonFile, demoScenarioFile);
     if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
+    if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
     return 2;
 }
 
