@@ -866,3 +866,108 @@ TEST_F(cli, AccuracyPrintsTheTables) {
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------------------------
+// compare: the predictions against a Bullet rigid body (built with the Bullet backend)
+
+/// A build without Bullet refuses `compare` with status 2 and says why; the tests below then skip.
+bool compareIsBuilt() {
+    static const bool built = [] {
+        const CliRun run = runCli({"compare"});
+        return run.err.find("built without Bullet") == std::string::npos;
+    }();
+    return built;
+}
+
+// A ball of 5 cm dropped from 2 m with 3 m/s sideways onto a floor plane (restitution 0.5).
+// Closed form of the first landing: the centre falls 2 - 0.05 m, t = sqrt(2 * 1.95 / 9.81).
+const char* kDropScenario = R"({"world": {"planes": [{"normal": [0, 1, 0], "distance": 0}]},
+  "predictions": [{"id": "ball", "model": "projectile", "position": [0, 2, 0], "velocity": [3, 0, 0],
+                   "time": 1.5, "radius": 0.05, "restitution": 0.5}]})";
+
+TEST_F(cli, CompareDropAgreesWithTheClosedFormAndExactBeatsStepped) {
+    if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";
+    const CliRun run = runCli({"compare", write("drop.json", kDropScenario).string(), "--json", "-"});
+    const Json out = parseOutput(run);
+    ASSERT_EQ(out.at("projectiles").size(), 1u);
+    const Json& ball = out["projectiles"][0];
+    EXPECT_EQ(ball.at("id"), "ball");
+    EXPECT_EQ(ball.at("radius").get<double>(), 0.05);
+    const double landing = std::sqrt(2.0 * 1.95 / 9.81);
+    const Json& physics = ball.at("physics");
+    ASSERT_GE(physics.at("impacts").size(), 2u);
+    // Bullet's touch time is interpolated on its own path (leapfrog: exact on a parabola up to
+    // float rounding): well within one 960 Hz step.
+    EXPECT_NEAR(physics["impacts"][0].at("t").get<double>(), landing, 1.0 / 960.0);
+    const auto touch = vec(physics["impacts"][0].at("position"));
+    EXPECT_NEAR(touch[0], 3.0 * landing, 3.0 / 960.0);  // 3 m/s times one step
+    EXPECT_NEAR(touch[1], 0.05, 1e-3);                  // the centre one radius above the floor
+    // The approach speed is Bullet's at the step that applies the bounce, the one after the
+    // touch: up to two steps of gravity faster than at the touch.
+    EXPECT_NEAR(physics["impacts"][0].at("approach_speed").get<double>(), 9.81 * landing, 2.0 * 9.81 / 960.0);
+
+    const Json& exact = ball.at("exact").at("errors");
+    const Json& stepped = ball.at("stepped").at("errors");
+    // Exact lands where the physics touches (float rounding and the interpolation: < 1 mm, 1 ms).
+    EXPECT_LT(exact.at("landing_distance").get<double>(), 1e-3);
+    EXPECT_LT(exact.at("landing_time").get<double>(), 1e-3);
+    // The article's loop reports the bounce at the end of its 20 ms step: 0.6305 s -> 0.64 s.
+    EXPECT_NEAR(stepped.at("landing_time").get<double>(), 0.64 - landing, 1e-3);
+    EXPECT_EQ(exact.at("bounces"), exact.at("reference_bounces"));
+    // At 1.5 s (after the bounces) exact stays within a centimetre; the article's loop, which
+    // loses the rest of every step that hits, is further off.
+    EXPECT_LT(exact.at("final_distance").get<double>(), 0.01);
+    EXPECT_GT(stepped.at("final_distance").get<double>(), exact.at("final_distance").get<double>());
+    // The reference's own step error (960 against 3840 Hz) is reported and small here.
+    EXPECT_LT(ball.at("physics_step_error").at("final_distance").get<double>(), 0.01);
+}
+
+TEST_F(cli, CompareTableIsDeterministicAndNamesEveryProjectile) {
+    if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";
+    const fs::path file = write("drop.json", kDropScenario);
+    const CliRun first = runCli({"compare", file.string()});
+    const CliRun second = runCli({"compare", file.string()});
+    ASSERT_EQ(first.status, 0) << first.err;
+    EXPECT_EQ(first.out, second.out);
+    for (const char* text : {"ball", "stepped", "exact", "physics", "960 Hz"})
+        EXPECT_NE(first.out.find(text), std::string::npos) << text << " missing from\n" << first.out;
+}
+
+TEST_F(cli, CompareRefusesBadUsageWithStatusTwo) {
+    if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";
+    const fs::path file = write("drop.json", kDropScenario);
+    struct Case {
+        std::vector<std::string> args;
+        const char* message;
+    };
+    const Case cases[] = {
+        {{"compare"}, "expected a scenario FILE"},
+        {{"compare", (mDir / "missing.json").string()}, "missing.json: cannot read"},
+        {{"compare", file.string(), "--frequency", "100"}, "--frequency must be between 240 and 100000"},
+        {{"compare", file.string(), "--builtin"}, "either FILE or --builtin"},
+        {{"compare", write("bad.json", scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 1], "time": 1})")).string()},
+         "predictions[0].velocity"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = runCli(c.args);
+        EXPECT_EQ(run.status, 2) << c.args.back();
+        EXPECT_TRUE(run.out.empty()) << run.out;
+        EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
+    }
+}
+
+#ifdef NDEBUG  // 576 Bullet simulations: seconds in a release build, too slow under sanitizers
+TEST_F(cli, CompareBuiltinPrintsTheReadmeTable) {
+    if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";
+    const CliRun run = runCli({"compare", "--builtin"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    for (const char* scene : {"| flat floor |", "| wall |", "| ramp |", "| stairs |", "| room mesh |", "| demo level |"})
+        EXPECT_NE(run.out.find(scene), std::string::npos) << scene;
+    // On the flat floor every exact throw ends within a centimetre of the physics ("Within 1 cm"
+    // column: stepped / exact / Bullet's own), the article's loop none.
+    const std::size_t row = run.out.find("| flat floor |");
+    ASSERT_NE(row, std::string::npos);
+    const std::string line = run.out.substr(row, run.out.find('\n', row) - row);
+    EXPECT_NE(line.find("| 0 / 2"), std::string::npos) << line;
+}
+#endif

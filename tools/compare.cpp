@@ -486,7 +486,7 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
         scenes.push_back(std::move(scene));
     }
     {
-        BuiltinScene scene{"demo level", "the courtyard of `foresight level`: walls, stairs, ramp, pillars", {}};
+        BuiltinScene scene{"demo level", "the courtyard of `foresight level` (3028 triangles: 30 m walls with a doorway, stairs to a platform, a ramp, pillars, crates); throws from its open middle", {}};
         if (!addMesh(scene.scenario, foresight_level::makeDemoLevel(), error)) return false;
         throws(scene.scenario, "level_", [&](const std::string& id) {
             const RVec3 start(uniform(random, -4, 4), 1.5, uniform(random, -4, 4));
