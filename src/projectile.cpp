@@ -105,6 +105,12 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
     const DVec3 g = decimalVector(settings.gravity);
     const double e = settings.restitution;
     DVec3 p = start, v = startVelocity;
+    // The surface the loop put the projectile on at the last hit (its normal faces the side the
+    // projectile is on), or zero. A chord from that point back into the surface crosses it at
+    // once: a hit at fraction 0, as a plane or a box reports it (and as a game engine's line
+    // cast from a point on a collider does). Two-sided triangles cannot tell which side such a
+    // start is on and ignore their own plane, so without this the loop fell through meshes.
+    DVec3 restingNormal(0.0);
     recorder.add(0.0, TrajectoryEvent::Start, p, v);
     for (std::uint64_t i = 1; i <= steps; ++i) {
         const DVec3 previousPosition = p, previousVelocity = v;
@@ -114,7 +120,23 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
         CastHit hit;
         DVec3 normal(0.0);
         bool bounced = false;
-        if (world.castSegment(cast, hit)) {
+        bool found = world.castSegment(cast, hit);
+        const double away = glm::dot(p - previousPosition, restingNormal);
+        if (away < 0.0 && !(found && hit.fraction <= 0.0f)) {
+            hit.fraction = 0.0f;
+            hit.position = toR(previousPosition);
+            hit.normal = toF(restingNormal);
+            found = true;
+        } else if (away > 0.0 && found && glm::dot(toD(hit.normal), restingNormal) < -0.999 &&
+                   static_cast<double>(hit.fraction) * away <= realUlps(previousPosition, 16.0)) {
+            // Leaving the surface, the chord met that same surface from behind within rounding
+            // of its start (the hit point was reported just behind it): not a hit. Cast again
+            // from a start lifted off the surface, for whatever else lies on the chord.
+            const DVec3 lifted = previousPosition + restingNormal * realUlps(previousPosition, 32.0);
+            found = world.castSegment(makeCast(lifted, p, settings.radius), hit);
+        }
+        restingNormal = DVec3(0.0);
+        if (found) {
             // The article's HitCoef: the hit distance over the chord length (0 for chords
             // shorter than a micrometre), used as a time fraction for the velocity.
             const double fullDistance = glm::length(p - previousPosition);
@@ -134,6 +156,7 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
             v = bounceVelocity(v, normal, e, settings.friction);
             ++result.bounces;
             result.hitNormal = toF(normal);
+            restingNormal = normal;
             bounced = true;
         }
         const double t = static_cast<double>(i) * dt;

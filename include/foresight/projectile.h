@@ -8,7 +8,11 @@
 ///   parabola, casts one segment from the previous to the new position, and on a hit takes the
 ///   velocity at the hit fraction, moves to the hit point and bounces:
 ///   `v += -(1 + e) dot(n, v) n`. `ceil(time / step)` steps (robust: 3 / 0.02 is 150). The
-///   rest of a step after a hit is lost, and a grenade resting on a one-sided floor freezes.
+///   rest of a step after a hit is lost, and a grenade resting on a floor freezes. The next
+///   chord from a hit point back into that surface hits it at fraction 0 on every kind of
+///   surface (planes, boxes, two-sided mesh triangles), as a line cast from a point on a
+///   collider does in an engine, and the same surface met from behind within rounding of the
+///   start is not a hit: the loop never falls through a mesh floor.
 /// - Exact (the default): event driven. The impact time is found on the true parabola (the
 ///   segment cast finds the surface, then the parabola is solved against the surface's tangent
 ///   plane), the rest of the step continues after the bounce, and the result is at exactly
