@@ -88,7 +88,7 @@ if [[ "$found" != "$tmp/prefix/"* ]]; then
 fi
 cmake --build "$tmp/example" --parallel "$jobs"
 
-step "running the examples (examples/hello_prediction.cpp, and hello_embree.cpp when Embree is built)"
+step "running the examples (hello_prediction, and hello_embree / hello_bullet when those backends are built)"
 "$tmp/example/hello_prediction"
 if grep -q '^FORESIGHT_WITH_EMBREE:BOOL=ON' build/CMakeCache.txt; then
     if [[ ! -x "$tmp/example/hello_embree" ]]; then
@@ -96,6 +96,13 @@ if grep -q '^FORESIGHT_WITH_EMBREE:BOOL=ON' build/CMakeCache.txt; then
         exit 1
     fi
     "$tmp/example/hello_embree"
+fi
+if grep -q '^FORESIGHT_WITH_BULLET:BOOL=ON' build/CMakeCache.txt; then
+    if [[ ! -x "$tmp/example/hello_bullet" ]]; then
+        echo "test.sh: the installed package has no foresight::bullet although build/ has it" >&2
+        exit 1
+    fi
+    "$tmp/example/hello_bullet"
 fi
 
 step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
