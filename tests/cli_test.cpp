@@ -971,3 +971,104 @@ TEST_F(cli, CompareBuiltinPrintsTheReadmeTable) {
     EXPECT_NE(line.find("| 0 / 2"), std::string::npos) << line;
 }
 #endif
+
+// ---------------------------------------------------------------------------------------------
+// Pictures: --svg and --html (docs/viewer-format.md)
+
+std::size_t countOf(const std::string& text, const std::string& what) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++count;
+    return count;
+}
+
+TEST_F(cli, PredictSvgDrawsEveryPathInBothViewsAndKeepsTheJson) {
+    const std::string scenario = scenarioWith(
+        R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2, "trajectory": false},
+           {"id": "car", "model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
+            "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": 2},
+           {"id": "turret", "model": "orientation", "orientation": {"w": 1, "x": 0, "y": 0, "z": 0},
+            "angular_velocity": [0, 1, 0], "time": 1})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})");
+    const fs::path svg = mDir / "out.svg";
+    const CliRun withPicture = runCli({"predict", write("s.json", scenario).string(), "--svg", svg.string()});
+    const CliRun without = runCli({"predict", (mDir / "s.json").string()});
+    ASSERT_EQ(withPicture.status, 0) << withPicture.err;
+    // The JSON result is the same with or without a picture ("trajectory": false still holds).
+    EXPECT_EQ(withPicture.out, without.out);
+    const std::string text = readFile(svg);
+    ASSERT_EQ(text.rfind("<?xml", 0), 0u);
+    EXPECT_NE(text.find("<svg xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+    EXPECT_EQ(text.substr(text.size() - 7), "</svg>\n");
+    EXPECT_NE(text.find("Top view"), std::string::npos);
+    EXPECT_NE(text.find("Side view"), std::string::npos);
+    // The projectile and the car move (one line each per view); the turret does not.
+    EXPECT_EQ(countOf(text, "<polyline"), 4u);
+    EXPECT_NE(text.find(">lob (exact)<"), std::string::npos);
+    EXPECT_NE(text.find(">car (exact)<"), std::string::npos);
+    EXPECT_EQ(text.find("turret"), std::string::npos);
+    // The lob bounces on the floor (0.5 m/s at least: 2 s is long enough): markers in both views.
+    EXPECT_GE(countOf(text, "fill=\"white\" stroke=\"#1f6fd1\""), 2u);
+    EXPECT_EQ(text.find("nan"), std::string::npos);
+    EXPECT_EQ(text.find("inf"), std::string::npos);
+}
+
+TEST_F(cli, PicturesThatCannotBeWrittenExitTwoNamingTheFile) {
+    const fs::path file = write("s.json", projectile(""));
+    const std::string target = (mDir / "no" / "such" / "dir" / "out.svg").string();
+    const CliRun run = runCli({"predict", file.string(), "--svg", target});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_NE(run.err.find(target + ": cannot write"), std::string::npos) << run.err;
+}
+
+TEST_F(cli, DemoHtmlOptionsAreChecked) {
+    const CliRun both = runCli({"demo", "--no-html", "--html", (mDir / "x.html").string()});
+    EXPECT_EQ(both.status, 2);
+    EXPECT_NE(both.err.find("contradict"), std::string::npos) << both.err;
+    // --no-html writes nothing into the current directory.
+    const CliRun none = runCli({"demo", "--no-html"}, std::string(), mDir);
+    EXPECT_EQ(none.status, 0) << none.err;
+    EXPECT_FALSE(fs::exists(mDir / "foresight-demo.html"));
+}
+
+/// The picture document embedded in a viewer page (docs/viewer-format.md).
+Json embeddedDocument(const std::string& page) {
+    const std::string open = "<script type=\"application/json\" id=\"foresight-data\">";
+    const std::size_t begin = page.find(open);
+    if (begin == std::string::npos) return Json();
+    const std::size_t end = page.find("</script>", begin);
+    if (end == std::string::npos) return Json();
+    return Json::parse(page.substr(begin + open.size(), end - begin - open.size()), nullptr, false);
+}
+
+TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
+    const CliRun run = runCli({"demo"}, std::string(), mDir);
+    ASSERT_EQ(run.status, 0) << run.err;
+    const fs::path page = mDir / "foresight-demo.html";
+    if (run.err.find("viewer was not built") != std::string::npos) {
+        // A build without Node.js: no page, a note, and --html is refused with status 2.
+        EXPECT_FALSE(fs::exists(page));
+        const CliRun html = runCli({"demo", "--html", (mDir / "x.html").string()});
+        EXPECT_EQ(html.status, 2);
+        EXPECT_TRUE(html.out.empty());
+        GTEST_SKIP() << "the viewer is not built in this configuration";
+    }
+    EXPECT_NE(run.out.find("viewer: foresight-demo.html"), std::string::npos) << run.out;
+    const std::string text = readFile(page);
+    ASSERT_EQ(text.rfind("<!doctype html>", 0), 0u);
+    // Self-contained: no external script, stylesheet or fetch target.
+    EXPECT_EQ(text.find("<script src"), std::string::npos);
+    EXPECT_EQ(text.find("<link"), std::string::npos);
+    const Json document = embeddedDocument(text);
+    ASSERT_TRUE(document.is_object()) << "no picture document in the page";
+    EXPECT_EQ(document.at("version"), 1);
+    // Every demo prediction but none (the demo has no orientation model) is drawn, with its path.
+    std::size_t bounces = 0;
+    for (const auto& prediction : document.at("predictions")) {
+        ASSERT_FALSE(prediction.at("path").empty()) << prediction.at("id");
+        for (const auto& point : prediction["path"]) bounces += point.at("event") == "bounce" ? 1 : 0;
+    }
+    EXPECT_EQ(document["predictions"].size(), 8u);
+    EXPECT_GT(bounces, 5u);
+    EXPECT_EQ(document.at("world").at("meshes").size(), 1u);  // the demo level
+}

@@ -160,11 +160,19 @@ Json demoScenario() {
     return document;
 }
 
-int demoCommand(const std::string& jsonFile, const std::string& scenarioFile) {
+int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, const PictureOptions& requested,
+                bool writeHtml) {
     if (jsonFile == "-" && scenarioFile == "-") {
         std::cerr << "foresight demo: --json - and --scenario - cannot both write to standard output\n";
         return 2;
     }
+    if (!requested.htmlFile.empty() && !viewerAvailable()) {
+        std::cerr << "foresight demo: --html: " << viewerUnavailableReason() << '\n';
+        return 2;
+    }
+    PictureOptions pictures = requested;
+    const bool defaultPage = pictures.htmlFile.empty() && writeHtml && viewerAvailable();
+    if (defaultPage) pictures.htmlFile = kDemoHtmlFile;
     const Json input = demoScenario();
     // The in-process demo needs no file: the level mesh is built in memory and added to the
     // world the scenario's other shapes make.
@@ -174,6 +182,7 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile) {
     Scenario scenario;
     std::vector<PredictionResult> results;
     std::string reason;
+    scenario.recordTrajectories = pictures.wanted();
     if (!buildScenario(withoutMeshes, std::filesystem::path(), scenario, diagnostics) ||
         !addDemoLevel(scenario, reason) || !runScenario(scenario, results, diagnostics)) {
         std::cerr << "foresight demo: the built-in scenario failed:\n";
@@ -200,10 +209,23 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile) {
         std::cerr << jsonFile << ": cannot write: " << reason << '\n';
         return 2;
     }
-    if (jsonFile != "-" && scenarioFile != "-" && !writeTextFile("-", table(scenario, results), reason)) {
-        std::cerr << "foresight demo: cannot write the table: " << reason << '\n';
-        return 1;
+    std::string error;
+    if (pictures.wanted() &&
+        !writePictures(pictures, pictureDocument(scenario, results, "foresight demo"), "foresight demo", error)) {
+        std::cerr << error << '\n';
+        return 2;
     }
+    if (jsonFile != "-" && scenarioFile != "-") {
+        std::string text = table(scenario, results);
+        if (!pictures.htmlFile.empty()) text += "\nviewer: " + pictures.htmlFile + " (open it in a web browser)\n";
+        if (!pictures.svgFile.empty()) text += "picture: " + pictures.svgFile + "\n";
+        if (!writeTextFile("-", text, reason)) {
+            std::cerr << "foresight demo: cannot write the table: " << reason << '\n';
+            return 1;
+        }
+    }
+    if (pictures.htmlFile.empty() && writeHtml && !viewerAvailable())
+        std::cerr << "foresight demo: no viewer page: " << viewerUnavailableReason() << '\n';
     return 0;
 }
 

@@ -6,6 +6,7 @@
 /// the demo level's files.
 
 #include "json_output.h"
+#include "picture.h"
 
 #include <string>
 #include <vector>
@@ -26,7 +27,13 @@ Json demoScenario();
 /// output, which then holds only that JSON). A scenario file gets the level mesh written beside
 /// it (kDemoLevelFile); with "-" a note on standard error says where it must go. The demo
 /// itself builds the level in memory (makeDemoLevel), without files. Returns the exit status.
-int demoCommand(const std::string& jsonFile, const std::string& scenarioFile);
+/// Pictures: `pictures.htmlFile` defaults to kDemoHtmlFile in the current directory when the
+/// viewer is built (and `writeHtml` is true); the table then ends with where it is.
+int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, const PictureOptions& pictures,
+                bool writeHtml = true);
+
+/// Where `foresight demo` writes its viewer page unless told otherwise.
+inline constexpr const char* kDemoHtmlFile = "foresight-demo.html";
 
 /// Options of `foresight level`.
 struct LevelOptions {

@@ -1,6 +1,6 @@
 /// `foresight`: the command-line tool of the foresight library.
-///   foresight predict FILE|-     scenario JSON in, result JSON out (the scenario format)
-///   foresight demo [--json FILE|-] [--scenario FILE|-]
+///   foresight predict FILE|- [--html FILE] [--svg FILE]   scenario JSON in, result JSON out
+///   foresight demo [--json FILE|-] [--scenario FILE|-] [--html FILE|--no-html] [--svg FILE]
 ///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
@@ -9,6 +9,7 @@
 #include "accuracy.h"
 #include "compare.h"
 #include "demo.h"
+#include "picture.h"
 #include "scenario.h"
 
 #include <foresight/config.h>
@@ -31,6 +32,11 @@ int run(int argc, char** argv) {
     CLI::App* predict = app.add_subcommand(
         "predict", "Run every prediction of a JSON scenario and write the JSON result to standard output");
     predict->add_option("FILE", scenarioFile, "scenario file, or - for standard input")->required()->type_name("FILE");
+    foresight_cli::PictureOptions predictPictures;
+    predict->add_option("--html", predictPictures.htmlFile, "also write an interactive 3D view (one HTML file) to FILE")
+        ->type_name("FILE");
+    predict->add_option("--svg", predictPictures.svgFile, "also write a top and a side view (SVG) to FILE")
+        ->type_name("FILE");
 
     std::string jsonFile;
     std::string demoScenarioFile;
@@ -38,6 +44,13 @@ int run(int argc, char** argv) {
         "demo", "Compare the reference article's predictions with exact ones on built-in scenarios");
     demo->add_option("--json", jsonFile, "also write the full result (with trajectories) as JSON to FILE (- for stdout)")
         ->type_name("FILE");
+    foresight_cli::PictureOptions demoPictures;
+    bool demoNoHtml = false;
+    demo->add_option("--html", demoPictures.htmlFile,
+                     "write the interactive 3D view to FILE (default: foresight-demo.html in the current directory)")
+        ->type_name("FILE");
+    demo->add_flag("--no-html", demoNoHtml, "do not write the viewer page");
+    demo->add_option("--svg", demoPictures.svgFile, "also write a top and a side view (SVG) to FILE")->type_name("FILE");
     demo->add_option("--scenario", demoScenarioFile,
                      "also write the demo's input scenario to FILE (- for stdout), for `foresight predict`")
         ->type_name("FILE");
@@ -78,8 +91,14 @@ int run(int argc, char** argv) {
         return status == 0 ? 0 : 2;
     }
 
-    if (predict->parsed()) return foresight_cli::predictCommand(scenarioFile);
-    if (demo->parsed()) return foresight_cli::demoCommand(jsonFile, demoScenarioFile);
+    if (predict->parsed()) return foresight_cli::predictCommand(scenarioFile, predictPictures);
+    if (demo->parsed()) {
+        if (demoNoHtml && !demoPictures.htmlFile.empty()) {
+            std::cerr << "foresight demo: --html and --no-html contradict each other\n";
+            return 2;
+        }
+        return foresight_cli::demoCommand(jsonFile, demoScenarioFile, demoPictures, !demoNoHtml);
+    }
     if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);

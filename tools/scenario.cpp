@@ -1,6 +1,7 @@
 #include "scenario.h"
 
 #include "obj_mesh.h"
+#include "picture.h"
 #include "text_file.h"
 
 #include <algorithm>
@@ -834,11 +835,12 @@ Status runProjectile(const Scenario& scenario, const Prediction& p, PredictionRe
 #ifdef FORESIGHT_CLI_WITH_EMBREE
     if (scenario.meshWorld) world = scenario.meshWorld.get();
 #endif
+    const bool record = p.trajectory || scenario.recordTrajectories;
     std::vector<foresight::TrajectoryPoint> points;
-    if (p.trajectory) points.resize(foresight::trajectoryCapacity(p.time, p.projectile));
+    if (record) points.resize(foresight::trajectoryCapacity(p.time, p.projectile));
     foresight::ProjectileResult out;
     Status status = foresight::predictProjectile(p.position, p.velocity, p.time, p.projectile, world, points, out);
-    if (status == Status::Ok && p.trajectory && out.trajectoryNeeded > points.size()) {
+    if (status == Status::Ok && record && out.trajectoryNeeded > points.size()) {
         // More bounces and contact changes than the first guess: run again with room for all.
         points.resize(out.trajectoryNeeded);
         status = foresight::predictProjectile(p.position, p.velocity, p.time, p.projectile, world, points, out);
@@ -911,6 +913,11 @@ bool resultIsFinite(const PredictionResult& result) {
 }
 
 } // namespace
+
+Status runPrediction(const Scenario& scenario, const Prediction& prediction, PredictionResult& result) {
+    std::string detail;
+    return runPrediction(scenario, prediction, result, detail);
+}
 
 bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics) {
     results.clear();
@@ -991,7 +998,11 @@ Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult
     return document;
 }
 
-int predictCommand(const std::string& file) {
+int predictCommand(const std::string& file, const PictureOptions& pictures) {
+    if (!pictures.htmlFile.empty() && !viewerAvailable()) {
+        std::cerr << "foresight predict: --html: " << viewerUnavailableReason() << '\n';
+        return 2;
+    }
     Diagnostics diagnostics;
     const std::string name = file == "-" ? std::string("<stdin>") : file;
     std::string text;
@@ -1006,6 +1017,7 @@ int predictCommand(const std::string& file) {
     // Meshes are relative to the scenario file, or to the current directory for stdin.
     const std::filesystem::path baseDirectory =
         file == "-" ? std::filesystem::path() : std::filesystem::path(file).parent_path();
+    scenario.recordTrajectories = pictures.wanted();
     const bool ok = parseJsonText(text, name, document, diagnostics) &&
                     buildScenario(document, baseDirectory, scenario, diagnostics) &&
                     runScenario(scenario, results, diagnostics);
@@ -1014,6 +1026,13 @@ int predictCommand(const std::string& file) {
         return 2;
     }
     const std::string output = formatJson(resultDocument(scenario, results));
+    std::string error;
+    if (pictures.wanted() &&
+        !writePictures(pictures, pictureDocument(scenario, results, "foresight: " + name), "foresight: " + name, error)) {
+        printDiagnostics(diagnostics, std::cerr);
+        std::cerr << error << '\n';
+        return 2;
+    }
     printDiagnostics(diagnostics, std::cerr);
     if (!writeTextFile("-", output, reason)) {
         std::cerr << "foresight: cannot write the result: " << reason << '\n';

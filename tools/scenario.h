@@ -19,6 +19,8 @@
 
 namespace foresight_cli {
 
+struct PictureOptions;  // picture.h
+
 /// Problems (exit status 2) and warnings found while reading or running a scenario.
 struct Diagnostics {
     std::vector<std::string> errors;   ///< one line each, "path: message".
@@ -67,6 +69,9 @@ struct Scenario {
     /// the casts go to; null otherwise (then `world` answers).
     std::unique_ptr<foresight::CollisionWorld> meshWorld;
     std::vector<Prediction> predictions;
+    /// Record every projectile's trajectory, also those with "trajectory": false (which the
+    /// JSON output still leaves out): pictures draw them.
+    bool recordTrajectories = false;
 };
 
 /// What a prediction produced (the fields its model uses).
@@ -95,6 +100,9 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
 /// Returns diagnostics.ok().
 bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics);
 
+/// Runs one prediction (as runScenario does, without the checks of its result).
+foresight::Status runPrediction(const Scenario& scenario, const Prediction& prediction, PredictionResult& result);
+
 /// The output document: {"predictions": [...]} in input order.
 Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult>& results);
 
@@ -109,6 +117,8 @@ void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err);
 
 /// `foresight predict FILE`: reads FILE ("-": standard input), writes the result to standard
 /// output. Returns the exit status: 0, or 2 with nothing on standard output.
-int predictCommand(const std::string& file);
+/// With `pictures`, also writes the HTML viewer page and/or the SVG of the scenario and its
+/// results (picture.h); a picture that cannot be written is an error (status 2).
+int predictCommand(const std::string& file, const PictureOptions& pictures);
 
 } // namespace foresight_cli

@@ -1,0 +1,375 @@
+#include "svg.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace foresight_cli {
+
+namespace {
+
+constexpr double kWidth = 900;          // px, whole picture
+constexpr double kMargin = 56;          // px, left and bottom of each panel (axis labels)
+constexpr double kPanelWidth = kWidth - kMargin - 24;
+constexpr double kMaxPanelHeight = 520; // px
+constexpr double kLegendLine = 18;      // px per legend entry
+
+const char* const kFaithfulColours[] = {"#e67e22", "#c0392b", "#b9770e", "#d35400"};
+const char* const kExactColours[] = {"#1f6fd1", "#16a085", "#6c3483", "#117a65"};
+
+std::string number(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2f", value);
+    return buffer;
+}
+
+std::string escape(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+glm::dvec3 vec3(const Json& value, const glm::dvec3& fallback = glm::dvec3(0)) {
+    if (!value.is_array() || value.size() != 3) return fallback;
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) {
+        if (!value[static_cast<std::size_t>(i)].is_number()) return fallback;
+        v[i] = value[static_cast<std::size_t>(i)].get<double>();
+    }
+    return v;
+}
+
+glm::dquat quat(const Json& value) {
+    if (!value.is_object()) return glm::dquat(1, 0, 0, 0);
+    const auto part = [&](const char* key, double fallback) {
+        return value.contains(key) && value[key].is_number() ? value[key].get<double>() : fallback;
+    };
+    glm::dquat q;
+    q.w = part("w", 1);
+    q.x = part("x", 0);
+    q.y = part("y", 0);
+    q.z = part("z", 0);
+    const double length = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    if (!(length > 0) || !std::isfinite(length)) return glm::dquat(1, 0, 0, 0);
+    return glm::dquat(q.w / length, q.x / length, q.y / length, q.z / length);
+}
+
+const Json& member(const Json& object, const char* key) {
+    static const Json none;
+    return object.is_object() && object.contains(key) ? object[key] : none;
+}
+
+/// A grid step of 1, 2 or 5 times a power of ten giving at most about eight lines over `span`.
+double gridStep(double span) {
+    if (!(span > 0)) return 1;
+    const double rough = span / 8;
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    for (const double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * power >= rough) return m * power;
+    return 10 * power;
+}
+
+/// One view: world axes (u, v) of the panel (u to the right, v up the page).
+struct Panel {
+    const char* title;
+    int uAxis, vAxis;             // 0 x, 1 y, 2 z
+    const char* uName;
+    const char* vName;
+    double u0, u1, v0, v1;        // world range
+    double left, top, scale;      // px
+    double height() const { return (v1 - v0) * scale; }
+    double px(double u) const { return left + (u - u0) * scale; }
+    double py(double v) const { return top + (v1 - v) * scale; }
+    double px(const glm::dvec3& p) const { return px(p[uAxis]); }
+    double py(const glm::dvec3& p) const { return py(p[vAxis]); }
+    std::string point(const glm::dvec3& p) const { return number(px(p)) + "," + number(py(p)); }
+};
+
+/// Convex hull of 2D points (Andrew's monotone chain), counter-clockwise.
+std::vector<glm::dvec2> hull(std::vector<glm::dvec2> points) {
+    std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    if (points.size() < 3) return points;
+    std::vector<glm::dvec2> h(2 * points.size());
+    std::size_t k = 0;
+    const auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    for (const auto& p : points) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p) <= 0) --k;
+        h[k++] = p;
+    }
+    for (std::size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(h[k - 2], h[k - 1], points[i]) <= 0) --k;
+        h[k++] = points[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+std::string polygon(const Panel& panel, const std::vector<glm::dvec3>& corners, const std::string& style) {
+    std::vector<glm::dvec2> points;
+    for (const auto& c : corners) points.emplace_back(panel.px(c), panel.py(c));
+    std::string out = "<polygon points=\"";
+    for (const auto& p : hull(points)) out += number(p.x) + "," + number(p.y) + " ";
+    return out + "\" " + style + "/>\n";
+}
+
+std::vector<glm::dvec3> boxCorners(const glm::dvec3& center, const glm::dvec3& half, const glm::dquat& orientation) {
+    std::vector<glm::dvec3> corners;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 local((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y, (i & 4) ? half.z : -half.z);
+        corners.push_back(center + orientation * local);
+    }
+    return corners;
+}
+
+/// The part of the line a u + b v = c inside the panel's range, or nothing.
+std::string planeLine(const Panel& panel, double a, double b, double c) {
+    std::vector<glm::dvec2> points;
+    if (std::abs(b) > 1e-9) {
+        for (const double u : {panel.u0, panel.u1}) {
+            const double v = (c - a * u) / b;
+            if (v >= panel.v0 - 1e-9 && v <= panel.v1 + 1e-9) points.emplace_back(u, v);
+        }
+    }
+    if (std::abs(a) > 1e-9) {
+        for (const double v : {panel.v0, panel.v1}) {
+            const double u = (c - b * v) / a;
+            if (u >= panel.u0 - 1e-9 && u <= panel.u1 + 1e-9) points.emplace_back(u, v);
+        }
+    }
+    if (points.size() < 2) return {};
+    return "<line x1=\"" + number(panel.px(points[0].x)) + "\" y1=\"" + number(panel.py(points[0].y)) + "\" x2=\"" +
+           number(panel.px(points[1].x)) + "\" y2=\"" + number(panel.py(points[1].y)) +
+           "\" stroke=\"#7f8c8d\" stroke-width=\"2\"/>\n";
+}
+
+std::string axes(const Panel& panel) {
+    std::string out;
+    const double width = (panel.u1 - panel.u0) * panel.scale;
+    out += "<text x=\"" + number(panel.left) + "\" y=\"" + number(panel.top - 8) +
+           "\" font-size=\"14\" font-weight=\"bold\">" + panel.title + "</text>\n";
+    out += "<rect x=\"" + number(panel.left) + "\" y=\"" + number(panel.top) + "\" width=\"" + number(width) +
+           "\" height=\"" + number(panel.height()) + "\" fill=\"#fbfbfb\" stroke=\"#555\"/>\n";
+    const auto ticks = [&](double lo, double hi, auto&& draw) {
+        const double step = gridStep(hi - lo);
+        for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) draw(std::abs(t) < 1e-12 ? 0.0 : t);
+    };
+    char label[32];
+    ticks(panel.u0, panel.u1, [&](double u) {
+        out += "<line x1=\"" + number(panel.px(u)) + "\" y1=\"" + number(panel.top) + "\" x2=\"" + number(panel.px(u)) +
+               "\" y2=\"" + number(panel.top + panel.height()) + "\" stroke=\"#e3e3e3\"/>\n";
+        std::snprintf(label, sizeof label, "%g", u);
+        out += "<text x=\"" + number(panel.px(u)) + "\" y=\"" + number(panel.top + panel.height() + 16) +
+               "\" font-size=\"11\" text-anchor=\"middle\">" + label + "</text>\n";
+    });
+    ticks(panel.v0, panel.v1, [&](double v) {
+        out += "<line x1=\"" + number(panel.left) + "\" y1=\"" + number(panel.py(v)) + "\" x2=\"" +
+               number(panel.left + width) + "\" y2=\"" + number(panel.py(v)) + "\" stroke=\"#e3e3e3\"/>\n";
+        std::snprintf(label, sizeof label, "%g", v);
+        out += "<text x=\"" + number(panel.left - 6) + "\" y=\"" + number(panel.py(v) + 4) +
+               "\" font-size=\"11\" text-anchor=\"end\">" + label + "</text>\n";
+    });
+    out += "<text x=\"" + number(panel.left + width / 2) + "\" y=\"" + number(panel.top + panel.height() + 34) +
+           "\" font-size=\"12\" text-anchor=\"middle\">" + panel.uName + " [m]</text>\n";
+    out += "<text x=\"" + number(panel.left - 40) + "\" y=\"" + number(panel.top + panel.height() / 2) +
+           "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 " + number(panel.left - 40) + " " +
+           number(panel.top + panel.height() / 2) + ")\">" + panel.vName + " [m]</text>\n";
+    return out;
+}
+
+struct Style {
+    std::string colour;
+    bool faithful = false;
+};
+
+std::string world(const Panel& panel, const Json& document) {
+    std::string out;
+    const Json& w = member(document, "world");
+    const glm::dvec3 middle = 0.5 * (vec3(member(member(document, "bounds"), "min")) + vec3(member(member(document, "bounds"), "max")));
+    const int other = 3 - panel.uAxis - panel.vAxis;  // the axis the view looks along
+    for (const auto& plane : member(w, "planes")) {
+        const glm::dvec3 n = vec3(member(plane, "normal"));
+        const double d = member(plane, "distance").is_number() ? member(plane, "distance").get<double>() : 0.0;
+        if (std::abs(n[other]) > 0.99) continue;  // seen face on: it fills the view
+        out += planeLine(panel, n[panel.uAxis], n[panel.vAxis], d - n[other] * middle[other]);
+    }
+    const std::string meshStyle = "fill=\"#c8c8c8\" fill-opacity=\"0.35\" stroke=\"#9a9a9a\" stroke-width=\"0.3\"";
+    for (const auto& mesh : member(w, "meshes")) {
+        const Json& positions = member(mesh, "positions");
+        const Json& indices = member(mesh, "indices");
+        if (!positions.is_array() || !indices.is_array()) continue;
+        const std::size_t vertexCount = positions.size() / 3;
+        // One path per mesh (a subpath per triangle): a tenth of a pixel is enough, and the
+        // file stays small for meshes of thousands of triangles.
+        std::string d;
+        char buffer[96];
+        for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+            std::vector<glm::dvec3> corners;
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (!indices[i + k].is_number_unsigned()) break;
+                const auto index = indices[i + k].get<std::size_t>();
+                if (index >= vertexCount) break;
+                corners.emplace_back(positions[3 * index].get<double>(), positions[3 * index + 1].get<double>(),
+                                     positions[3 * index + 2].get<double>());
+            }
+            if (corners.size() != 3) continue;
+            std::snprintf(buffer, sizeof buffer, "M%.1f %.1fL%.1f %.1fL%.1f %.1fZ", panel.px(corners[0]),
+                          panel.py(corners[0]), panel.px(corners[1]), panel.py(corners[1]), panel.px(corners[2]),
+                          panel.py(corners[2]));
+            d += buffer;
+        }
+        if (!d.empty()) out += "<path d=\"" + d + "\" " + meshStyle + "/>\n";
+    }
+    const std::string solidStyle = "fill=\"#bdc3c7\" fill-opacity=\"0.6\" stroke=\"#7f8c8d\"";
+    for (const auto& box : member(w, "boxes"))
+        out += polygon(panel, boxCorners(vec3(member(box, "center")), vec3(member(box, "half_extents")), quat(member(box, "orientation"))),
+                       solidStyle);
+    for (const auto& sphere : member(w, "spheres")) {
+        const glm::dvec3 c = vec3(member(sphere, "center"));
+        const double r = member(sphere, "radius").is_number() ? member(sphere, "radius").get<double>() : 0.0;
+        out += "<circle cx=\"" + number(panel.px(c)) + "\" cy=\"" + number(panel.py(c)) + "\" r=\"" +
+               number(r * panel.scale) + "\" " + solidStyle + "/>\n";
+    }
+    return out;
+}
+
+std::string predictions(const Panel& panel, const Json& document, const std::vector<Style>& styles) {
+    std::string out;
+    // Exact paths first, the article's dashed ones over them (where they coincide, both show).
+    for (const bool faithfulPass : {false, true}) {
+    std::size_t index = 0;
+    for (const auto& prediction : member(document, "predictions")) {
+        const Style& style = styles[index++];
+        if (style.faithful != faithfulPass) continue;
+        const Json& path = member(prediction, "path");
+        if (!path.is_array() || path.empty()) continue;
+        const bool vehicle = member(prediction, "model") == "vehicle";
+        if (vehicle) {
+            const glm::dvec3 half = vec3(member(prediction, "half_extents"), glm::dvec3(0.9, 0.7, 2.2));
+            double lastGhost = -1;
+            for (const auto& point : path) {
+                const double t = member(point, "t").is_number() ? member(point, "t").get<double>() : 0.0;
+                const bool last = &point == &path.back();
+                if (!last && t - lastGhost < 0.5) continue;
+                lastGhost = t;
+                out += polygon(panel, boxCorners(vec3(member(point, "position")), half, quat(member(point, "orientation"))),
+                               "fill=\"" + style.colour + "\" fill-opacity=\"" + (last ? "0.45" : "0.12") +
+                                   "\" stroke=\"" + style.colour + "\" stroke-width=\"1\"");
+            }
+        }
+        std::string line = "<polyline fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"2\"" +
+                           (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + " points=\"";
+        for (const auto& point : path) line += panel.point(vec3(member(point, "position"))) + " ";
+        out += line + "\"/>\n";
+        for (const auto& point : path) {
+            const Json& event = member(point, "event");
+            const glm::dvec3 p = vec3(member(point, "position"));
+            if (event == "bounce" || event == "hit") {
+                out += "<circle cx=\"" + number(panel.px(p)) + "\" cy=\"" + number(panel.py(p)) +
+                       "\" r=\"3.5\" fill=\"white\" stroke=\"" + style.colour + "\" stroke-width=\"1.5\"/>\n";
+            } else if (event == "rest") {
+                out += "<rect x=\"" + number(panel.px(p) - 4) + "\" y=\"" + number(panel.py(p) - 4) +
+                       "\" width=\"8\" height=\"8\" fill=\"" + style.colour + "\"/>\n";
+            }
+        }
+    }
+    }
+    return out;
+}
+
+std::string picture(const Json& document) {
+    glm::dvec3 lo = vec3(member(member(document, "bounds"), "min"), glm::dvec3(-10, 0, -10));
+    glm::dvec3 hi = vec3(member(member(document, "bounds"), "max"), glm::dvec3(10, 2, 10));
+    // A margin of 5% (at least 0.5 m) so that nothing sits on the frame.
+    const glm::dvec3 pad = glm::max(0.05 * (hi - lo), glm::dvec3(0.5));
+    lo -= pad;
+    hi += pad;
+
+    Panel top{"Top view", 0, 2, "x", "z", lo.x, hi.x, lo.z, hi.z, kMargin, 60, 1};
+    top.scale = std::min(kPanelWidth / (hi.x - lo.x), kMaxPanelHeight / (hi.z - lo.z));
+    Panel side{"Side view", 2, 1, "z", "y", lo.z, hi.z, lo.y, hi.y, kMargin, 0, 1};
+    side.scale = std::min(kPanelWidth / (hi.z - lo.z), kMaxPanelHeight / (hi.y - lo.y));
+    side.top = top.top + top.height() + 80;
+
+    std::vector<Style> styles;
+    std::size_t faithfulCount = 0, exactCount = 0;
+    for (const auto& prediction : member(document, "predictions")) {
+        Style style;
+        style.faithful = member(prediction, "variant") == "faithful";
+        style.colour = style.faithful ? kFaithfulColours[faithfulCount++ % 4] : kExactColours[exactCount++ % 4];
+        styles.push_back(style);
+    }
+    const double legendTop = side.top + side.height() + 60;
+    const double height = legendTop + kLegendLine * static_cast<double>(styles.size() + 2) + 16;
+
+    std::string title = member(document, "title").is_string() ? member(document, "title").get<std::string>() : "foresight";
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(kWidth) + "\" height=\"" + number(height) +
+           "\" viewBox=\"0 0 " + number(kWidth) + " " + number(height) + "\" font-family=\"sans-serif\">\n";
+    out += "<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    out += "<text x=\"" + number(kMargin) + "\" y=\"28\" font-size=\"18\">" + escape(title) + "</text>\n";
+    for (const Panel* panel : {&top, &side}) {
+        out += axes(*panel);
+        // Everything inside the panel is clipped to it.
+        const std::string id = panel == &top ? "top" : "side";
+        out += "<clipPath id=\"" + id + "\"><rect x=\"" + number(panel->left) + "\" y=\"" + number(panel->top) +
+               "\" width=\"" + number((panel->u1 - panel->u0) * panel->scale) + "\" height=\"" +
+               number(panel->height()) + "\"/></clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
+        out += world(*panel, document);
+        out += predictions(*panel, document, styles);
+        out += "</g>\n";
+    }
+    // Legend: one line per prediction, then the markers.
+    double y = legendTop;
+    std::size_t index = 0;
+    for (const auto& prediction : member(document, "predictions")) {
+        const Style& style = styles[index++];
+        const std::string id = member(prediction, "id").is_string() ? member(prediction, "id").get<std::string>()
+                                                                    : member(prediction, "id").dump();
+        const std::string method = member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
+        out += "<line x1=\"" + number(kMargin) + "\" y1=\"" + number(y) + "\" x2=\"" + number(kMargin + 36) + "\" y2=\"" +
+               number(y) + "\" stroke=\"" + style.colour + "\" stroke-width=\"2\"" +
+               (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + "/>\n";
+        out += "<text x=\"" + number(kMargin + 44) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">" + escape(id) + " (" +
+               escape(method) + (style.faithful ? ": the article's method" : "") + ")</text>\n";
+        y += kLegendLine;
+    }
+    out += "<circle cx=\"" + number(kMargin + 18) + "\" cy=\"" + number(y) +
+           "\" r=\"3.5\" fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"/><text x=\"" + number(kMargin + 44) +
+           "\" y=\"" + number(y + 4) + "\" font-size=\"12\">bounce</text>\n";
+    out += "<rect x=\"" + number(kMargin + 160) + "\" y=\"" + number(y - 4) + "\" width=\"8\" height=\"8\" fill=\"#333\"/>" +
+           "<text x=\"" + number(kMargin + 176) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">at rest</text>\n";
+    out += "</svg>\n";
+    return out;
+}
+
+} // namespace
+
+std::string svgPicture(const Json& document) {
+    try {
+        return picture(document);
+    } catch (const std::exception& error) {  // a malformed document (nlohmann type errors)
+        return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" "
+               "height=\"40\"><text x=\"10\" y=\"25\">cannot draw this document: " +
+               escape(error.what()) + "</text></svg>\n";
+    }
+}
+
+} // namespace foresight_cli
