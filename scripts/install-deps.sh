@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Installs the Debian packages foresight needs to build, test and benchmark, when missing.
+# Installs the Debian packages foresight needs to build, test and benchmark, when missing, then
+# the HTML viewer's npm packages (viewer/node_modules, from viewer/package-lock.json).
 #
 # Idempotent and silent when everything is present: it only asks dpkg which packages are
 # missing, and runs `apt-get update && apt-get install` for those alone (as root, or through
-# sudo). Set FORESIGHT_SKIP_DEPS=1 to skip the check (e.g. on a non-Debian machine where the
+# sudo); `npm ci` runs only when viewer/node_modules is missing or older than the lock file,
+# with PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 (the browser tests drive Debian's chromium, never a
+# downloaded one). Set FORESIGHT_SKIP_DEPS=1 to skip the check (e.g. on a non-Debian machine where the
 # dependencies were installed another way).
 set -euo pipefail
 
@@ -11,13 +14,36 @@ if [[ "${FORESIGHT_SKIP_DEPS:-0}" == "1" ]]; then
     exit 0
 fi
 
-# Build tools, then libraries. Keep in sync with CONTRIBUTING.md.
+# Build tools, then libraries, then the HTML viewer's: Node.js and npm to bundle it (only when
+# `node`/`npm` are not already on PATH, e.g. from nodesource) and chromium for its browser tests.
+# Keep in sync with CONTRIBUTING.md.
 packages=(
     cmake ninja-build g++ pkg-config
     libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libtinygltf-dev
     libembree-dev libbullet-dev
     libgtest-dev libgmock-dev libbenchmark-dev
+    chromium
 )
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
+
+# viewer/node_modules (npm ci), when missing or older than viewer/package-lock.json.
+viewer_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/viewer"
+install_viewer_modules() {
+    if [[ ! -f "$viewer_dir/package-lock.json" ]]; then
+        return 0
+    fi
+    if [[ -f "$viewer_dir/node_modules/.package-lock.json" &&
+        ! "$viewer_dir/package-lock.json" -nt "$viewer_dir/node_modules/.package-lock.json" ]]; then
+        return 0
+    fi
+    echo "install-deps: installing the viewer's npm packages (npm ci in viewer/)"
+    if ! (cd "$viewer_dir" &&
+        PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error >/dev/null); then
+        echo "install-deps: npm ci failed in $viewer_dir (is the npm registry reachable?)" >&2
+        exit 1
+    fi
+}
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "install-deps: dpkg-query not found (not a Debian-based system?)." >&2
@@ -35,6 +61,7 @@ for package in "${packages[@]}"; do
 done
 
 if ((${#missing[@]} == 0)); then
+    install_viewer_modules
     exit 0
 fi
 
@@ -56,4 +83,5 @@ if ! "${apt_get[@]}" update -qq ||
     echo "install-deps: apt-get failed to install: ${missing[*]}" >&2
     exit 1
 fi
+install_viewer_modules
 echo "install-deps: done"
