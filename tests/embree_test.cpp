@@ -216,15 +216,76 @@ protected:
 };
 Worlds* embree_world::worlds = nullptr;
 
+// EmbreeWorld's documented reach of a graze for a ray cast (embree_world.h): rho divided by
+// the sine of the angle between the segment and the triangle's plane (below 1e-3: 1e-3).
+double grazeReach(const std::vector<Triangle>& triangles, const SegmentCast& cast, const Triangle& t) {
+    double largest = 0.0;
+    for (const Triangle& m : triangles)
+        for (const RVec3& v : {m.a, m.b, m.c})
+            largest = std::max({largest, std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
+    const DVec3 o = d3(cast.origin), d(cast.displacement);
+    const double length = glm::length(d);
+    const double rho = 1e-6 + std::ldexp(std::max({largest, std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + length, -20);
+    const DVec3 n = glm::normalize(glm::cross(d3(t.b) - d3(t.a), d3(t.c) - d3(t.a)));
+    return rho / std::max(std::abs(glm::dot(n, d)) / length, 1e-3);
+}
+
+// The in-plane distance from `p` to the nearest edge line of `t`.
+double edgeDistance(const Triangle& t, const DVec3& p) {
+    const DVec3 a = d3(t.a), b = d3(t.b), c = d3(t.c);
+    const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
+    auto line = [&](const DVec3& u, const DVec3& v) { return std::abs(glm::dot(n, glm::cross(v - u, p - u))) / glm::length(v - u); };
+    return std::min({line(a, b), line(b, c), line(c, a)});
+}
+
+// The mesh triangles whose own exact test gives exactly `hit`.
+std::vector<Triangle> trianglesGiving(const std::vector<Triangle>& triangles, const SegmentCast& cast, const CastHit& hit) {
+    std::vector<Triangle> out;
+    for (const Triangle& t : triangles) {
+        foresight::ClosestHitCaster caster(cast);
+        caster.test(t);
+        CastHit h;
+        if (caster.result(h) && h.fraction == hit.fraction && h.normal == hit.normal) out.push_back(t);
+    }
+    return out;
+}
+
+// Radius 0: EmbreeWorld may differ from StaticWorld only by missing a triangle that StaticWorld
+// hits within the documented graze reach of its edges (Embree's float test can miss it there);
+// it then reports a farther exact hit of another triangle, or none. Returns whether `actual`
+// is such a case (and checks it); counted by the caller.
+bool isDocumentedGraze(const Worlds& w, const Outcome& expected, const Outcome& actual, const SegmentCast& cast) {
+    if (!expected.hit) return false;  // a hit where StaticWorld has none is never allowed
+    if (actual.hit && actual.value.fraction < expected.value.fraction) return false;
+    if (actual.hit && actual.value.fraction == expected.value.fraction && actual.value.normal == expected.value.normal)
+        return false;
+    bool grazed = false;
+    const DVec3 p = d3(cast.origin) + DVec3(cast.displacement) * double(expected.value.fraction);
+    for (const Triangle& t : trianglesGiving(w.meshTriangles, cast, expected.value))
+        // 1e-6 relative: the hit point is rebuilt from the float fraction.
+        grazed = grazed || edgeDistance(t, p) <= grazeReach(w.meshTriangles, cast, t) + 1e-6 * glm::length(DVec3(cast.displacement));
+    if (!grazed) return false;
+    // What EmbreeWorld reports instead is an exact hit of a mesh triangle or the primitives'.
+    if (!actual.hit || !trianglesGiving(w.meshTriangles, cast, actual.value).empty()) return true;
+    StaticWorld primitives;
+    addPrimitives(primitives);
+    CastHit h;
+    return primitives.castSegment(cast, h) && h.fraction == actual.value.fraction && h.normal == actual.value.normal;
+}
+
 void compareOnRandomCasts(const Worlds& w, float radius, std::uint32_t seed) {
     const auto casts = randomCasts(w.meshTriangles, 10000, radius, seed);
-    int hits = 0, atStart = 0;
+    int hits = 0, atStart = 0, grazes = 0;
     for (std::size_t i = 0; i < casts.size(); ++i) {
         Outcome expected, actual;
         expected.hit = w.reference.castSegment(casts[i], expected.value);
         actual.hit = w.embree.castSegment(casts[i], actual.value);
         hits += expected.hit ? 1 : 0;
         atStart += expected.hit && expected.value.fraction == 0.0f ? 1 : 0;
+        if (radius == 0.0f && isDocumentedGraze(w, expected, actual, casts[i])) {
+            ++grazes;
+            continue;
+        }
         expectSame(expected, actual, casts[i], static_cast<int>(i));
         if (::testing::Test::HasFailure()) return;
     }
@@ -232,6 +293,10 @@ void compareOnRandomCasts(const Worlds& w, float radius, std::uint32_t seed) {
     if (radius > 0.0f) {
         EXPECT_GT(atStart, 100);  // starts on a surface, moving in
     }
+    // Grazes come from the casts aimed exactly at edges and vertices (cases 4 and 7, a quarter
+    // of them); most of those agree all the same.
+    EXPECT_LT(grazes, 250) << "grazes " << grazes;
+    std::printf("[          ] %d of %zu casts graze an edge (documented difference)\n", grazes, casts.size());
 }
 
 TEST_F(embree_world, SameHitsAsStaticWorldForRays) { compareOnRandomCasts(*worlds, 0.0f, 1); }
@@ -257,6 +322,89 @@ TEST_F(embree_world, SameHitsBeforeCommit) {
         actual.hit = local.embree.castSegment(cast, actual.value);
         expectSame(expected, actual, cast, 0);
     }
+}
+
+// A closed mesh sharing its vertices: an octahedron subdivided three times and pushed onto a
+// sphere (512 triangles), off the origin.
+Mesh closedSphereMesh(const DVec3& centre, double radius) {
+    Mesh mesh;
+    std::vector<DVec3> points{DVec3(1, 0, 0), DVec3(-1, 0, 0), DVec3(0, 1, 0), DVec3(0, -1, 0), DVec3(0, 0, 1), DVec3(0, 0, -1)};
+    std::vector<std::array<std::uint32_t, 3>> faces{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    for (int level = 0; level < 3; ++level) {
+        std::vector<std::array<std::uint32_t, 3>> finer;
+        std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>> midpoints;
+        auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+            for (const auto& m : midpoints)
+                if (m.first == key) return m.second;
+            points.push_back(glm::normalize(points[a] + points[b]));
+            midpoints.emplace_back(key, static_cast<std::uint32_t>(points.size() - 1));
+            return midpoints.back().second;
+        };
+        for (const auto& f : faces) {
+            const std::uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+            finer.push_back({f[0], ab, ca});
+            finer.push_back({ab, f[1], bc});
+            finer.push_back({ca, bc, f[2]});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = finer;
+    }
+    for (const DVec3& q : points) {
+        const DVec3 v = centre + q * radius;
+        mesh.vertices.push_back(r3(v.x, v.y, v.z));
+    }
+    for (const auto& f : faces) mesh.indices.insert(mesh.indices.end(), f.begin(), f.end());
+    return mesh;
+}
+
+TEST_F(embree_world, RaysThroughSharedEdgesAndVerticesOfAClosedMeshHit) {
+    // Radius 0 through the float fast path: rays aimed exactly at shared vertices and at points
+    // of shared edges (Embree's float test may put them on either side, or on neither triangle
+    // by rounding) must never slip through a closed mesh, from outside or from inside.
+    // Sketch: from far outside at each vertex / edge point (4 directions each); from the centre
+    // outwards at the same points; the box room's corners and edges likewise.
+    Mesh mesh = closedSphereMesh(DVec3(12.25, -3.5, 40.125), 2.0);
+    ASSERT_EQ(mesh.indices.size(), 3u * 512u);
+    addBoxMesh(mesh, DVec3(-5, 0, -4), DVec3(5, 4, 4));
+    EmbreeWorld world;
+    ASSERT_EQ(world.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    ASSERT_TRUE(world.commit());
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto check = [&](const DVec3& from, const DVec3& target, const char* what) {
+        const SegmentCast cast{r3(from.x, from.y, from.z), Vec3((target - from) * 1.5)};
+        CastHit hit;
+        EXPECT_TRUE(world.castSegment(cast, hit)) << what << " aimed from (" << from.x << ", " << from.y << ", " << from.z
+                                                  << ") at (" << target.x << ", " << target.y << ", " << target.z << ")";
+    };
+    const std::size_t sphereIndices = 3 * 512;  // the sphere's come first, then the box's
+    int aims = 0;
+    for (const bool sphere : {true, false}) {
+        const DVec3 centre = sphere ? DVec3(12.25, -3.5, 40.125) : DVec3(0.1, 2.05, -0.2);
+        for (std::size_t t = sphere ? 0 : sphereIndices; t < (sphere ? sphereIndices : mesh.indices.size()); t += 3) {
+            for (int k = 0; k < 3; ++k) {
+                const DVec3 a = d3(mesh.vertices[mesh.indices[t + static_cast<std::size_t>(k)]]);
+                const DVec3 b = d3(mesh.vertices[mesh.indices[t + static_cast<std::size_t>((k + 1) % 3)]]);
+                for (const double s : {0.0, 0.5, u(rng)}) {
+                    const DVec3 target = a + (b - a) * s;
+                    const DVec3 out = glm::normalize(target - centre);
+                    for (int d = 0; d < 4; ++d) {
+                        // From outside, within 60 degrees of the outward direction.
+                        DVec3 side(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1);
+                        side -= out * glm::dot(side, out);
+                        const DVec3 from = target + (out + side * 0.8) * (3.0 + 5.0 * u(rng));
+                        if (sphere) check(from, target, s == 0.0 ? "vertex" : "edge point");
+                        ++aims;
+                    }
+                    check(centre, target, s == 0.0 ? "vertex (from inside)" : "edge point (from inside)");
+                    ++aims;
+                    if (::testing::Test::HasFailure()) return;
+                }
+            }
+        }
+    }
+    EXPECT_GT(aims, 20000);
 }
 
 TEST_F(embree_world, SphereDoesNotPassThroughANarrowGap) {

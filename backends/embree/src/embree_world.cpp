@@ -17,12 +17,7 @@ using DVec3 = glm::dvec3;
 
 DVec3 toD(const RVec3& v) { return DVec3(static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)); }
 
-// Largest float not above x / smallest not below x.
-float floatDown(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-}
+// Smallest float not below x.
 float floatUp(double x) {
     float f = static_cast<float>(x);
     if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
@@ -33,18 +28,21 @@ struct Box {
     DVec3 lo{0.0}, hi{0.0};
 };
 
-// What Embree's callbacks see of the mesh.
-struct GeometryData {
-    const Box* bounds = nullptr;
-    double pad = 0.0;  // the float bounds are the exact ones grown by this [Units: m]
-};
+Box triangleBox(const Triangle& t) {
+    const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
+    return Box{glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
+}
 
 }  // namespace
 
 struct EmbreeWorld::Impl {
     std::vector<Triangle> triangles;  // as added (validated), in order
-    std::vector<Box> bounds;          // exact bounds of each triangle (double)
-    GeometryData geometry;            // for the callbacks (stable address: Impl is on the heap)
+    // What Embree traces: the meshes' own vertices rounded to float once (3 per vertex, shared
+    // by the triangles that share them in the mesh) and 3 indices per kept triangle (triangle
+    // t is triangles[t]).
+    std::vector<float> floatVertices;
+    std::vector<unsigned> vertexIndices;
+    double largest = 0.0;             // largest coordinate magnitude of the mesh [Units: m]
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     bool committed = false;
@@ -61,28 +59,13 @@ struct EmbreeWorld::Impl {
 
 namespace {
 
-void boundsCallback(const RTCBoundsFunctionArguments* args) {
-    const auto* data = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const Box& b = data->bounds[args->primID];
-    const double pad = data->pad;
-    RTCBounds* out = args->bounds_o;
-    out->lower_x = floatDown(b.lo.x - pad);
-    out->lower_y = floatDown(b.lo.y - pad);
-    out->lower_z = floatDown(b.lo.z - pad);
-    out->upper_x = floatUp(b.hi.x + pad);
-    out->upper_y = floatUp(b.hi.y + pad);
-    out->upper_z = floatUp(b.hi.z + pad);
-}
-
-// What one cast's point query needs.
+// What one cast's queries need.
 struct QueryState {
     const Triangle* triangles = nullptr;
-    const Box* bounds = nullptr;
-    SegmentCast cast;
-    float surfaceTolerance = 0.0f;
+    ClosestHitCaster single{SegmentCast{}};  // the cast prepared once, copied per candidate
     DVec3 origin{0.0};
     DVec3 displacement{0.0};
-    DVec3 inverse{0.0};  // 1 / displacement per axis (inf for 0)
+    DVec3 inverse{0.0};  // 1 / displacement per axis (0 for 0)
     double length = 0.0;
     double padding = 0.0;
     // The candidates whose own closest fraction equals the smallest one seen so far. Fractions
@@ -90,12 +73,24 @@ struct QueryState {
     // these all go through one caster at the end, in the order they were added, as in
     // StaticWorld (the smallest distance wins, the first added among equal distances).
     double bestFraction = std::numeric_limits<double>::infinity();
-    std::array<unsigned, 128> ties{};
+    std::array<unsigned, 32> ties;  // the first tieCount are used (left uninitialised: per cast)
     std::size_t tieCount = 0;
-    bool tiesOverflowed = false;  // then every triangle with that fraction is retested in order
+    ClosestHitCaster best{SegmentCast{}};  // the exact test of ties[0] alone
+    bool overflowed = false;  // too many ties or checks: the cast is redone by the exact search
+
+    // Radius 0 (rtcIntersect1 on the float triangles):
+    double rho = 0.0;        // how far from a triangle's edges float and exact may disagree [m]
+    double shift = 0.0;      // the traced ray starts this fraction before the segment
+    float limit = 0.0f;      // the traced ray's current tfar
+    // Points (fractions of the segment) around which every triangle within a radius [m] is
+    // tested exactly (left uninitialised: per cast).
+    std::array<double, 4> checks;
+    std::array<double, 4> checkRadii;
+    std::size_t checkCount = 0;
 };
 
-// Whether the segment origin + s * displacement, s in [0, sMax], meets box `b` grown by `pad`.
+// Whether the segment origin + s * displacement, s in [0, sMax], meets box `b` grown by the
+// padding.
 bool segmentMeetsBox(const QueryState& q, const Box& b, double sMax) {
     double s0 = 0.0, s1 = sMax;
     for (int axis = 0; axis < 3; ++axis) {
@@ -122,24 +117,45 @@ float queryRadius(const QueryState& q, double distance) {
     return floatUp(r);
 }
 
-// Tests one candidate: the closest triangle wins; among equal fractions, the first added.
-bool offerTriangle(QueryState& q, unsigned index) {
-    const double sMax = std::min(1.0, q.bestFraction);
-    if (!segmentMeetsBox(q, q.bounds[index], sMax)) return false;
-    ClosestHitCaster caster(q.cast, q.surfaceTolerance);
-    caster.test(q.triangles[index]);
-    const double f = caster.closestFraction();
-    if (!(f <= 1.0)) return false;
-    if (f > q.bestFraction) return false;
+// Records a triangle's exact fraction `f` (a hit when <= 1): the closest wins; among equal
+// fractions, all are kept for the final ordered retest. Returns whether the best improved.
+bool record(QueryState& q, unsigned index, double f) {
+    if (!(f <= 1.0) || f > q.bestFraction) return false;
     const bool shrink = f < q.bestFraction;
     if (shrink) {
         q.bestFraction = f;
         q.tieCount = 0;
-        q.tiesOverflowed = false;
     }
+    bool known = false;
+    for (std::size_t k = 0; k < q.tieCount; ++k) known = known || q.ties[k] == index;
+    if (known) return shrink;
     if (q.tieCount < q.ties.size()) q.ties[q.tieCount++] = index;
-    else q.tiesOverflowed = true;
+    else q.overflowed = true;
     return shrink;
+}
+
+// Tests one triangle exactly and records it.
+bool testAndRecord(QueryState& q, unsigned index, double* fraction = nullptr) {
+    ClosestHitCaster caster = q.single;
+    caster.test(q.triangles[index]);
+    const double f = caster.closestFraction();
+    if (fraction) *fraction = f;
+    const bool shrink = record(q, index, f);
+    if (shrink) q.best = caster;
+    return shrink;
+}
+
+double exactFraction(const QueryState& q, unsigned index) {
+    ClosestHitCaster caster = q.single;
+    caster.test(q.triangles[index]);
+    return caster.closestFraction();
+}
+
+// Tests one candidate found by a point query (after a box check).
+bool offerTriangle(QueryState& q, unsigned index) {
+    const double sMax = std::min(1.0, q.bestFraction);
+    if (!segmentMeetsBox(q, triangleBox(q.triangles[index]), sMax)) return false;
+    return testAndRecord(q, index);
 }
 
 bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
@@ -153,20 +169,223 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
     return false;
 }
 
-// rtcIntersect1 (radius 0): every primitive whose padded box the segment's ray crosses.
+// A local check (radius 0): every triangle near a point, tested exactly; the radius stays.
+bool localCheckCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<QueryState*>(args->userPtr);
+    offerTriangle(*q, args->primID);
+    return false;
+}
+
+void addCheck(QueryState& q, double fraction, double radius) {
+    if (q.checkCount < q.checks.size()) {
+        q.checks[q.checkCount] = fraction;
+        q.checkRadii[q.checkCount++] = radius;
+    } else {
+        q.overflowed = true;
+    }
+}
+
+// rho divided by the sine of the angle between the segment and the triangle's plane (below
+// 1e-3: 1e-3): how far along the plane float and exact may put the crossing apart. `n` is the
+// triangle's (unnormalised) normal, `area2` its length.
+double grazeReach(const QueryState& q, const DVec3& n, double area2) {
+    const double sine = std::abs(glm::dot(n, q.displacement)) / (area2 * q.length);
+    return q.rho / std::max(sine, 1e-3);
+}
+
+// Whether the exact hit p (on the triangle's plane, inside it) lies within grazeReach of the
+// triangle's edges (float errors along the plane grow as the ray grazes it).
+bool nearEdge(const QueryState& q, const Triangle& t, const DVec3& p) {
+    const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
+    const DVec3 n = glm::cross(b - a, c - a);
+    const double area2 = glm::length(n);  // twice the area
+    const double reach = grazeReach(q, n, area2);
+    // Distance to the line of edge uv: |n . ((v - u) x (p - u))| / (|n| |v - u|).
+    return std::abs(glm::dot(n, glm::cross(b - a, p - a))) < reach * area2 * glm::length(b - a) ||
+           std::abs(glm::dot(n, glm::cross(c - b, p - b))) < reach * area2 * glm::length(c - b) ||
+           std::abs(glm::dot(n, glm::cross(a - c, p - c))) < reach * area2 * glm::length(a - c);
+}
+
+// A triangle Embree's float test hit (at fraction fFloat of the segment) whose exact test gave
+// fraction f: where float and exact may disagree, a local check is queued. Returns whether one
+// was. An exact hit within grazeReach of the triangle's edges: a neighbour across the edge may
+// hit closer (a concave corner), or the float test of a neighbour may have missed; every
+// triangle within 4 reaches of the hit is tested. An exact miss: the ray passes just outside
+// the triangle, where a neighbour sharing the edge or vertex hits (watertightness); the check
+// is centred where the segment's line crosses the triangle's plane (exact, within reach of the
+// edge that float put it inside of).
+bool checkDoubt(QueryState& q, unsigned index, double f, double fFloat) {
+    const Triangle& t = q.triangles[index];
+    const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
+    const DVec3 n = glm::cross(b - a, c - a);
+    const double reach = grazeReach(q, n, glm::length(n));
+    if (f <= 1.0) {
+        if (!nearEdge(q, t, q.origin + q.displacement * f)) return false;
+        addCheck(q, f, 4.0 * reach);
+        return true;
+    }
+    const double dn = glm::dot(n, q.displacement);
+    const double crossing = dn != 0.0 ? -glm::dot(n, q.origin - a) / dn : fFloat;
+    addCheck(q, std::isfinite(crossing) ? std::clamp(crossing, 0.0, 1.0) : std::clamp(fFloat, 0.0, 1.0),
+             4.0 * reach);
+    return true;
+}
+
+// The slow path of radius 0 (a context filter on rtcIntersect1): Embree reports each triangle
+// its float test hits, in no set order; each is tested exactly and recorded, and doubtful ones
+// get a local check (checkDoubt). The traced ray then ends a margin (2 rho) past the best exact
+// hit, so that near-ties are still reported.
 struct RayContext {
     RTCIntersectContext context;  // first member: Embree passes its address back
     QueryState* query;
 };
 
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+void intersectFilter(const RTCFilterFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     QueryState& q = *reinterpret_cast<const RayContext*>(args->context)->query;
-    if (!offerTriangle(q, args->primID)) return;
-    // Cull what lies beyond the closest hit (plus a margin, so that ties are still visited).
-    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, 1);
-    const float far = floatUp(q.bestFraction * (1.0 + 1e-6) + 1e-9);
-    if (far < RTCRayN_tfar(ray, 1, 0)) RTCRayN_tfar(ray, 1, 0) = far;
+    const unsigned index = RTCHitN_primID(args->hit, 1, 0);
+    float& tfar = RTCRayN_tfar(args->ray, 1, 0);
+    const double fFloat = static_cast<double>(tfar) - q.shift;
+    double f = 0.0;
+    testAndRecord(q, index, &f);
+    checkDoubt(q, index, f, fFloat);
+    // Accepted with tfar where the search must go on to (never beyond where it was).
+    const double far = std::min(1.0, q.bestFraction) + q.shift + 2.0 * q.rho / q.length;
+    q.limit = std::min(q.limit, floatUp(far));
+    tfar = q.limit;
+}
+
+// The exact search (radius > 0, and radius 0 when in doubt): one point query, a sphere centred
+// at the segment's start holding every triangle that can be hit, shrunk as hits are found.
+void exactSearch(RTCScene scene, QueryState& q) {
+    RTCPointQuery query;
+    // The centre is rounded to float: grow the radius by that rounding.
+    query.x = static_cast<float>(q.origin.x);
+    query.y = static_cast<float>(q.origin.y);
+    query.z = static_cast<float>(q.origin.z);
+    query.time = 0.0f;
+    const double rounding = glm::length(DVec3(query.x, query.y, query.z) - q.origin);
+    const double padding = q.padding;
+    q.padding += rounding;
+    query.radius = queryRadius(q, q.length * std::min(1.0, q.bestFraction));
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(scene, &query, &context, pointQueryCallback, &q);
+    q.padding = padding;
+}
+
+// Local checks: every triangle within each queued check's radius of its point, tested exactly.
+void runChecks(RTCScene scene, QueryState& q) {
+    for (std::size_t k = 0; k < q.checkCount && !q.overflowed; ++k) {
+        const double f = q.checks[k];
+        if (f > q.bestFraction + 2.0 * q.shift) continue;  // cannot beat the best any more
+        const DVec3 centre = q.origin + q.displacement * f;
+        RTCPointQuery query;
+        query.x = static_cast<float>(centre.x);
+        query.y = static_cast<float>(centre.y);
+        query.z = static_cast<float>(centre.z);
+        query.time = 0.0f;
+        query.radius = floatUp(q.checkRadii[k] + glm::length(DVec3(query.x, query.y, query.z) - centre));
+        RTCPointQueryContext pointContext;
+        rtcInitPointQueryContext(&pointContext);
+        rtcPointQuery(scene, &query, &pointContext, localCheckCallback, &q);
+    }
+}
+
+// Where Embree's float test (float vertices, float ray) and the exact test may disagree, for a
+// segment of the given length [m]: 2^-20 of the largest coordinate involved, eight times the
+// float rounding of a coordinate (2^-24 each for the vertices, the ray's origin and Embree's
+// translation of the vertices to the ray's origin), plus 1 um.
+double floatReach(double largest, double originMagnitude, double length) {
+    return 1e-6 + std::ldexp(std::max(largest, originMagnitude) + length, -20);
+}
+
+// The ray Embree traces for a segment (radius 0): it starts rho before the segment, so that a
+// hit at the very start is reported even when the float test puts it a little behind, and ends
+// rho after it; t is measured along the displacement from that start.
+void prepareRay(RTCRayHit& rayhit, const DVec3& origin, const DVec3& displacement, double shift, float limit) {
+    const DVec3 start = origin - displacement * shift;
+    rayhit.ray.org_x = static_cast<float>(start.x);
+    rayhit.ray.org_y = static_cast<float>(start.y);
+    rayhit.ray.org_z = static_cast<float>(start.z);
+    rayhit.ray.dir_x = static_cast<float>(displacement.x);
+    rayhit.ray.dir_y = static_cast<float>(displacement.y);
+    rayhit.ray.dir_z = static_cast<float>(displacement.z);
+    rayhit.ray.tnear = 0.0f;
+    rayhit.ray.tfar = limit;
+    rayhit.ray.time = 0.0f;
+    rayhit.ray.mask = 0xFFFFFFFFu;
+    rayhit.ray.id = 0;
+    rayhit.ray.flags = 0;
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+}
+
+enum class FastRay { Miss, Hit, Doubt };
+
+// Radius 0, the fast path: one plain rtcIntersect1 (no filter) for Embree's float closest hit,
+// then the exact test of that one triangle (`exact`, a copy of the prepared cast). Hit: the
+// exact test hits within the segment farther than grazeReach from the triangle's edges; it is
+// the mesh's result: a triangle the exact test hits closer, away from its own edges, is hit by
+// the float test too, which would have reported it first unless both hits lie within the float
+// error of each other along the ray (the near-tie exception in embree_world.h). Miss: no float
+// hit (a triangle the exact test hits away from its edges and the segment's ends is hit by the
+// float test). Doubt: anything else (the exact test misses, hits beyond the end or near an
+// edge; about 0.3% of casts): the caller takes the slow path (castRay).
+FastRay fastRay(RTCScene scene, const Triangle* triangles, const DVec3& origin, const DVec3& displacement,
+                double length, double rho, ClosestHitCaster& exact, unsigned& index) {
+    const double shift = rho / length;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    prepareRay(rayhit, origin, displacement, shift, floatUp(1.0 + 2.0 * shift));
+    rtcIntersect1(scene, &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return FastRay::Miss;
+    index = rayhit.hit.primID;
+    const Triangle& t = triangles[index];
+    exact.test(t);
+    const double f = exact.closestFraction();
+    if (!(f <= 1.0)) return FastRay::Doubt;
+    // nearEdge without square roots: the hit p is within reach = rho / max(sine, 1e-3) of the
+    // line of edge uv when (n . (uv x up))^2 max((n . d)^2, 1e-6 |n|^2 L^2) <
+    // rho^2 |n|^4 L^2 |uv|^2 (sine = |n . d| / (|n| L)).
+    const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
+    const DVec3 p = origin + displacement * f;
+    const DVec3 n = glm::cross(b - a, c - a);
+    const double nn = glm::dot(n, n), nd = glm::dot(n, displacement), ll = length * length;
+    const double grazing = std::max(nd * nd, 1e-6 * nn * ll);
+    const double bound = rho * rho * nn * nn * ll;
+    auto near = [&](const DVec3& u, const DVec3& v) {
+        const DVec3 e = v - u;
+        const double side = glm::dot(n, glm::cross(e, p - u));
+        return side * side * grazing < bound * glm::dot(e, e);
+    };
+    return near(a, b) || near(b, c) || near(c, a) ? FastRay::Doubt : FastRay::Hit;
+}
+
+// Radius 0, the slow path: the ray traced again with the filter (every float hit tested
+// exactly, doubtful ones checked locally), and the exhaustive exact search if its fixed-size
+// lists overflow.
+void castRay(RTCScene scene, double rho, QueryState& q) {
+    q.rho = rho;
+    q.shift = q.rho / q.length;
+    q.limit = floatUp(1.0 + 2.0 * q.shift);
+    RayContext context;
+    rtcInitIntersectContext(&context.context);
+    context.query = &q;
+    context.context.filter = intersectFilter;
+    RTCRayHit rayhit;
+    prepareRay(rayhit, q.origin, q.displacement, q.shift, q.limit);
+    rtcIntersect1(scene, &context.context, &rayhit);
+    runChecks(scene, q);
+    if (q.overflowed) {
+        // Rare (many near-ties or doubtful points): the exact search from scratch.
+        q.bestFraction = std::numeric_limits<double>::infinity();
+        q.tieCount = 0;
+        q.overflowed = false;
+        exactSearch(scene, q);
+    }
 }
 
 }  // namespace
@@ -217,12 +436,16 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
         }
     }
     std::vector<Triangle> added;
+    std::vector<unsigned> addedIndices;  // into vertices, 3 per added triangle
     added.reserve(indices.size() / 3);
+    addedIndices.reserve(indices.size());
     for (std::size_t t = 0; t < indices.size() / 3; ++t) {
         const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
         const Status status = validateTriangle(triangle);
         if (status == Status::Ok) {
             added.push_back(triangle);
+            addedIndices.insert(addedIndices.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                                indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
         } else {
             if (r.degenerateTriangles++ == 0) r.firstDegenerateTriangle = t;
         }
@@ -237,9 +460,25 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
         r.error = "too many triangles";
         return Status::DegenerateShape;
     }
+    const std::size_t vertexBase = mImpl->floatVertices.size() / 3;
+    if (vertexBase + vertices.size() > std::numeric_limits<unsigned>::max() - 1u) {
+        r.error = "too many vertices";
+        return Status::DegenerateShape;
+    }
+    // The vertices once, rounded to float: triangles sharing a vertex in the mesh share it in
+    // Embree too (and equal coordinates round equally), so shared edges stay watertight.
+    mImpl->floatVertices.reserve(mImpl->floatVertices.size() + 3 * vertices.size());
+    for (const RVec3& v : vertices) {
+        mImpl->floatVertices.push_back(static_cast<float>(v.x));
+        mImpl->floatVertices.push_back(static_cast<float>(v.y));
+        mImpl->floatVertices.push_back(static_cast<float>(v.z));
+    }
+    mImpl->vertexIndices.reserve(mImpl->vertexIndices.size() + addedIndices.size());
+    for (const std::uint32_t i : addedIndices) mImpl->vertexIndices.push_back(static_cast<unsigned>(vertexBase + i));
     for (const Triangle& triangle : added) {
-        const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
-        mImpl->bounds.push_back(Box{glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))});
+        const Box b = triangleBox(triangle);
+        mImpl->largest = std::max({mImpl->largest, std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z),
+                                   std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z)});
         mImpl->triangles.push_back(triangle);
     }
     r.triangles = added.size();
@@ -264,23 +503,25 @@ bool EmbreeWorld::commit(std::string* error) {
     if (!impl.device) return fail("cannot create a device");
     impl.scene = rtcNewScene(impl.device);
     if (!impl.scene) return fail("cannot create a scene");
-    rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST);
+    // Robust: Embree's watertight float test. The context filter is set only by the casts'
+    // slow path (castRay); plain rtcIntersect1 calls leave it null and pay nothing for it.
+    rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
-    RTCGeometry geometry = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
+    // Native triangles over the meshes' shared float vertices (primID = index in `triangles`).
+    RTCGeometry geometry = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     if (!geometry) return fail("cannot create a geometry");
-    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(impl.triangles.size()));
-    // Bounds padding: covers the shape tests' edge margin (1e-9 of an edge), and the rounding of
-    // a ray's origin to float when that origin is no farther out than twice the mesh
-    // (2^-24 of a coordinate); see castSegment.
-    double largest = 0.0;
-    for (const Box& b : impl.bounds)
-        largest = std::max({largest, std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z), std::abs(b.hi.x),
-                            std::abs(b.hi.y), std::abs(b.hi.z)});
-    impl.geometry.bounds = impl.bounds.data();
-    impl.geometry.pad = 1e-6 + std::ldexp(largest, -21);
-    rtcSetGeometryUserData(geometry, &impl.geometry);
-    rtcSetGeometryBoundsFunction(geometry, boundsCallback, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, intersectCallback);
+    const std::size_t vertexCount = impl.floatVertices.size() / 3;
+    const std::size_t count = impl.triangles.size();
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                   RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+    if (!vertices || !indices) {
+        rtcReleaseGeometry(geometry);
+        return fail("cannot allocate the mesh buffers");
+    }
+    std::copy(impl.floatVertices.begin(), impl.floatVertices.end(), vertices);
+    std::copy(impl.vertexIndices.begin(), impl.vertexIndices.end(), indices);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(impl.scene, geometry);
     rtcReleaseGeometry(geometry);
@@ -293,6 +534,7 @@ bool EmbreeWorld::commit(std::string* error) {
 bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     ClosestHitCaster caster(cast, mSettings.surfaceTolerance);
     if (!caster.valid()) return false;
+    const ClosestHitCaster pristine = caster;
     // The primitives first, in StaticWorld's order.
     for (const Plane& p : mPrimitives.planes()) caster.test(p);
     for (const Sphere& s : mPrimitives.spheres()) caster.test(s);
@@ -301,69 +543,54 @@ bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
 
     const Impl* impl = mImpl.get();
     if (impl && !impl->triangles.empty()) {
+        const DVec3 origin = toD(cast.origin), displacement(cast.displacement);
+        const double length = glm::length(displacement);
+        const double originMagnitude = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
+        const bool built = impl->committed && impl->scene;
+        double rho = 0.0;
+        if (built && cast.radius <= 0.0f) {
+            rho = floatReach(impl->largest, originMagnitude, length);
+            ClosestHitCaster exact = pristine;
+            unsigned index = 0;
+            switch (fastRay(impl->scene, impl->triangles.data(), origin, displacement, length, rho, exact, index)) {
+            case FastRay::Miss: return caster.result(hit);
+            case FastRay::Hit:
+                // Strictly closer than the primitives: its own test is the result (the same as
+                // testing it after them); otherwise the primitives win or tie, in their order.
+                if (exact.closestFraction() < caster.closestFraction()) caster = exact;
+                else caster.test(impl->triangles[index]);
+                return caster.result(hit);
+            case FastRay::Doubt: break;
+            }
+        }
         QueryState q;
         q.triangles = impl->triangles.data();
-        q.bounds = impl->bounds.data();
-        q.cast = cast;
-        q.surfaceTolerance = mSettings.surfaceTolerance;
-        q.origin = toD(cast.origin);
-        q.displacement = DVec3(cast.displacement);
-        q.length = glm::length(q.displacement);
+        q.single = pristine;
+        q.origin = origin;
+        q.displacement = displacement;
+        q.length = length;
         for (int axis = 0; axis < 3; ++axis)
             q.inverse[axis] = q.displacement[axis] != 0.0 ? 1.0 / q.displacement[axis] : 0.0;
-        const double magnitude = std::max({std::abs(q.origin.x), std::abs(q.origin.y), std::abs(q.origin.z)}) + q.length;
+        const double magnitude = originMagnitude + q.length;
         q.padding = std::max(0.0, static_cast<double>(cast.radius)) +
                     static_cast<double>(std::max(0.0f, mSettings.surfaceTolerance)) + 1e-4 + 1e-6 * magnitude;
-        // The float ray Embree traces: the displacement is float already (exact); the origin
-        // rounds to float, within the bounds' padding unless it lies far outside the mesh.
-        const DVec3 rayOrigin(static_cast<float>(q.origin.x), static_cast<float>(q.origin.y),
-                              static_cast<float>(q.origin.z));
-        const bool rayExact = glm::length(rayOrigin - q.origin) * 2.0 <= impl->geometry.pad;
-        if (impl->committed && impl->scene && cast.radius <= 0.0f && rayExact) {
-            RayContext context;
-            rtcInitIntersectContext(&context.context);
-            context.query = &q;
-            RTCRayHit rayhit;
-            rayhit.ray.org_x = static_cast<float>(rayOrigin.x);
-            rayhit.ray.org_y = static_cast<float>(rayOrigin.y);
-            rayhit.ray.org_z = static_cast<float>(rayOrigin.z);
-            rayhit.ray.dir_x = cast.displacement.x;
-            rayhit.ray.dir_y = cast.displacement.y;
-            rayhit.ray.dir_z = cast.displacement.z;
-            rayhit.ray.tnear = 0.0f;
-            rayhit.ray.tfar = std::nextafter(1.0f, 2.0f);
-            rayhit.ray.time = 0.0f;
-            rayhit.ray.mask = 0xFFFFFFFFu;
-            rayhit.ray.id = 0;
-            rayhit.ray.flags = 0;
-            rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-            rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(impl->scene, &context.context, &rayhit);
-        } else if (impl->committed && impl->scene) {
-            RTCPointQuery query;
-            // The centre is rounded to float: grow the radius by that rounding.
-            query.x = static_cast<float>(q.origin.x);
-            query.y = static_cast<float>(q.origin.y);
-            query.z = static_cast<float>(q.origin.z);
-            query.time = 0.0f;
-            const double rounding = glm::length(DVec3(query.x, query.y, query.z) - q.origin);
-            q.padding += rounding;
-            query.radius = queryRadius(q, q.length);
-            RTCPointQueryContext context;
-            rtcInitPointQueryContext(&context);
-            rtcPointQuery(impl->scene, &query, &context, pointQueryCallback, &q);
+        if (built && cast.radius <= 0.0f) {
+            castRay(impl->scene, rho, q);
+        } else if (built) {
+            exactSearch(impl->scene, q);
         } else {
             for (unsigned i = 0; i < impl->triangles.size(); ++i) offerTriangle(q, i);
         }
-        if (q.tiesOverflowed) {
-            // Rare (more than 128 triangles at exactly the same fraction): all of them, in order.
+        if (q.overflowed) {
+            // Rare (more than 32 triangles at exactly the same fraction): all of them, in order.
             for (unsigned i = 0; i < impl->triangles.size(); ++i) {
-                if (!segmentMeetsBox(q, impl->bounds[i], std::min(1.0, q.bestFraction))) continue;
-                ClosestHitCaster single(cast, mSettings.surfaceTolerance);
-                single.test(impl->triangles[i]);
-                if (single.closestFraction() == q.bestFraction) caster.test(impl->triangles[i]);
+                if (!segmentMeetsBox(q, triangleBox(impl->triangles[i]), std::min(1.0, q.bestFraction))) continue;
+                if (exactFraction(q, i) == q.bestFraction) caster.test(impl->triangles[i]);
             }
+        } else if (q.tieCount == 1 && q.bestFraction < caster.closestFraction()) {
+            // One closest triangle, strictly closer than the primitives: its own test is the
+            // result (the same as testing it after them).
+            caster = q.best;
         } else {
             std::sort(q.ties.begin(), q.ties.begin() + static_cast<std::ptrdiff_t>(q.tieCount));
             for (std::size_t k = 0; k < q.tieCount; ++k) caster.test(impl->triangles[q.ties[k]]);
