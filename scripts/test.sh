@@ -9,7 +9,8 @@
 #   3. benchmark    build/bench/foresight_bench, very briefly (a smoke test, not a measurement),
 #                   and build/bench/foresight_bench_worlds when the backends are built
 #   4. build-asan/  debug build with AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
-#                   errors, no benchmarks; ctest, halting on the first sanitizer report
+#                   errors, no benchmarks, no browser tests (the same JavaScript as in build/);
+#                   ctest, halting on the first sanitizer report
 #
 # Each configuration is built once, with every core (FORESIGHT_JOBS overrides the count).
 # Cheap checks run first so that a failure shows up early.
@@ -68,6 +69,11 @@ configure_and_build build -DCMAKE_BUILD_TYPE=Release -DFORESIGHT_WERROR=ON -DFOR
     -DFORESIGHT_BUILD_BENCHMARKS=ON
 
 step "testing build/"
+# The viewer's browser tests must be there: install-deps.sh installs Node.js, npm ci and chromium.
+if ! ctest --test-dir build -N | grep -q 'viewer\.demo_page'; then
+    echo "test.sh: the viewer's browser tests are not registered in build/ (Node.js, viewer/node_modules or chromium missing?)" >&2
+    exit 1
+fi
 run_ctest build
 
 step "installing build/ into a temporary prefix and building examples/ against it"
@@ -117,7 +123,8 @@ fi
 step "building build-asan/ (Debug, address + undefined sanitizers, -Werror)"
 configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_WERROR=ON \
     -DFORESIGHT_SANITIZE=address,undefined -DFORESIGHT_DOUBLE_PRECISION=OFF \
-    -DFORESIGHT_BUILD_TESTS=ON -DFORESIGHT_BUILD_TOOLS=ON -DFORESIGHT_BUILD_BENCHMARKS=OFF
+    -DFORESIGHT_BUILD_TESTS=ON -DFORESIGHT_BUILD_TOOLS=ON -DFORESIGHT_BUILD_BENCHMARKS=OFF \
+    -DFORESIGHT_BROWSER_TESTS=OFF
 
 step "testing build-asan/ (sanitizers halt on the first error)"
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1 \

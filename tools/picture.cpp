@@ -227,9 +227,18 @@ namespace {
 
 /// "</" becomes "<\/" so that neither the JSON nor the script can end their <script> element
 /// early (valid in JSON strings and in JavaScript strings, regular expressions and comments).
-[[maybe_unused]] std::string scriptSafe(std::string text) {
-    for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.insert(at + 1, "\\");
-    return text;
+[[maybe_unused]] std::string scriptSafe(const std::string& text) {
+    // Built by appending (GCC 12 reports a false -Wrestrict for std::string::insert here).
+    std::string out;
+    out.reserve(text.size() + 64);
+    std::size_t from = 0;
+    for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 2)) {
+        out.append(text, from, at + 1 - from);
+        out += '\\';
+        from = at + 1;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
 }
 
 [[maybe_unused]] std::string htmlEscape(const std::string& text) {
@@ -268,7 +277,19 @@ std::string htmlPage(const Json& document, const std::string& title) {
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" +
         htmlEscape(title) + "</title></head>\n<body><script type=\"application/json\" id=\"foresight-data\">";
-    page += scriptSafe(document.dump(-1, ' ', false, Json::error_handler_t::replace));
+    // Every '<' of the JSON (only ever inside its strings) as \u003c: no id or title can open
+    // or close an element ("</script>", "<!--") inside the data block.
+    std::string data = document.dump(-1, ' ', false, Json::error_handler_t::replace);
+    std::string escaped;
+    escaped.reserve(data.size());
+    for (const char c : data) {
+        if (c == '<') {
+            escaped += "\\u003c";
+        } else {
+            escaped += c;
+        }
+    }
+    page += escaped;
     page += "</script>\n<script>";
     page += scriptSafe(std::string(kViewerBundle, kViewerBundleSize));
     page += "</script></body></html>\n";
