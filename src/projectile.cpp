@@ -93,6 +93,29 @@ SegmentCast makeCast(const DVec3& from, const DVec3& to, float radius) {
     return cast;
 }
 
+// The exact method's cast of a chord from -> to. The world sees a body at `to` as toR(to), and
+// the next chord is cast from there, so this one must reach it: the float displacement's
+// rounding (up to 2^-24 of each component: 7 nm on a 0.12 m chord) could otherwise stop it
+// short of a surface that the body ends on, or just beyond (a step ending exactly on a wall's
+// plane), and the next chord, starting behind that surface, would not see it. The displacement
+// is lengthened by 2^-22 so that every component surely reaches its target; a hit within that
+// overshoot (nanometres past the end) is an impact at the end of the chord.
+SegmentCast makeChordCast(const DVec3& from, const DVec3& to, float radius) {
+    constexpr double kOvershoot = 1.0 + 0x1.0p-22;
+    SegmentCast cast;
+    cast.origin = toR(from);
+    RVec3 end = toR(to);
+#if defined(__GNUC__)
+    // GCC 12 at -O2 (its SLP vectorizer) was seen to drop the float rounding of a float build's
+    // origin and end here (double -> float -> double folded to the double): the displacement
+    // then missed the rounded end by up to half an ulp. Read them back from memory.
+    asm volatile("" : : "r"(&cast.origin), "r"(&end) : "memory");
+#endif
+    cast.displacement = toF((toD(end) - toD(cast.origin)) * kOvershoot);
+    cast.radius = radius;
+    return cast;
+}
+
 bool isFinite(const ProjectileResult& r) {
     return detail::isFinite(r.position) && detail::isFinite(r.velocity) && std::isfinite(r.time);
 }
@@ -243,6 +266,12 @@ private:
         const DVec3 p0 = mBody.position, v0 = mBody.velocity;
         double duration = h;
         bool returnsToSurface = false;
+        // Clear of the surfaces it was on: they can no longer be seen from behind at a start.
+        const double clear = 2.0 * liftDistance();
+        if (mHadImpact && std::abs(glm::dot(mLastSurfaceNormal, p0 - mLastSurfacePoint)) > clear)
+            mHadImpact = false;
+        if (mHadContact && std::abs(glm::dot(mContactNormal, p0 - mContactPoint)) > clear)
+            mHadContact = false;
         if (mHasLastSurface) {
             // After a bounce the body starts on the surface it left. A world need not report a
             // surface the cast starts on (two-sided triangles, most engines' meshes), so the
@@ -286,28 +315,75 @@ private:
 
     // Casts the chord p0 -> p1. A chord that starts on `surface` (the one just left, or slid
     // on) may be reported as hitting it at once; then it is cast again lifted off that surface
-    // by liftDistance(), so that the surface cannot mask the obstacles ahead.
+    // by liftDistance(), so that the surface cannot mask the obstacles ahead. A chord that starts
+    // a hair behind a surface the body is on (seenFromBehind) is cast again from its front.
     bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
                   CastHit& hit) const {
-        if (!mWorld.castSegment(makeCast(p0, p1, mSettings.radius), hit)) return false;
+        if (!mWorld.castSegment(makeChordCast(p0, p1, mSettings.radius), hit)) return false;
+        if (!onSurface && !mHadImpact && !mHadContact) return true;  // in free flight
+        return recastOffSurfaces(p0, p1, onSurface, surface, hit);
+    }
+
+    // castPath's rest, for a hit near surfaces the body is on (kept out of the common path).
+    bool recastOffSurfaces(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
+                           CastHit& hit) const {
+        DVec3 start = p0, end = p1;
+        for (int round = 0; round < 2; ++round) {  // at most the two surfaces of seenFromBehind
+            const DVec3* n = seenFromBehind(hit, start);
+            if (n == nullptr) break;
+            const DVec3 nudge = *n * (2.0 * behindTolerance(start));
+            start += nudge;
+            end += nudge;
+            if (!mWorld.castSegment(makeChordCast(start, end, mSettings.radius), hit)) return false;
+        }
         if (!onSurface) return true;
         // A hit is that surface when it lies in its plane with its normal.
         const double lift = liftDistance();
         const auto isThatSurface = [&](const CastHit& h) {
             return glm::dot(toD(h.normal), surface) >= 0.999 &&
-                   std::abs(glm::dot(surface, toD(h.position) - p0)) <= lift;
+                   std::abs(glm::dot(surface, toD(h.position) - start)) <= lift;
         };
         if (!isThatSurface(hit)) return true;
         CastHit blocker;
-        if (mWorld.castSegment(makeCast(p0, p0 + surface * lift, mSettings.radius), blocker) &&
+        if (mWorld.castSegment(makeCast(start, start + surface * lift, mSettings.radius), blocker) &&
             !isThatSurface(blocker)) {
             // Wedged: another surface is right above this one. That one is hit at once.
             hit = blocker;
             hit.fraction = 0.0f;
-            hit.position = toR(p0);
+            hit.position = toR(start);
             return true;
         }
-        return mWorld.castSegment(makeCast(p0 + surface * lift, p1 + surface * lift, mSettings.radius), hit);
+        return mWorld.castSegment(makeChordCast(start + surface * lift, end + surface * lift, mSettings.radius), hit);
+    }
+
+    // How far behind a surface it is on rounding can leave the body: a few ulps of Real, and
+    // the world's own plane (e.g. a triangle's normal from its vertices, in double) against the
+    // one the body was put on (the hit's float normal, 1e-7 off, through a point metres away
+    // at most): 1 micrometre.
+    static double behindTolerance(const DVec3& p) { return 1e-6 + realUlps(p, 4.0); }
+
+    // The normal of the surface the body is on that `hit` is, when the world reports that
+    // surface from behind right at the chord's `start`; null otherwise. The body is put on a
+    // surface's plane as the world's float normal through the hit point defines it (after an
+    // impact), or at a probe's rounded hit point (sliding); the world's plane differs by that
+    // rounding, and on an oblique surface the body may lie a hair behind it. A two-sided
+    // triangle then reports itself from behind at once, with the reversed normal, as the body
+    // moves out: crossing its plane towards the front, which is no impact for a body on the
+    // front. The surfaces the body is on: the last one it hit, and the one it slides or slid
+    // on (an impact on an obstacle can end a slide: the body then leaves both at once). A
+    // surface facing one of them from further than rounding (a wedge) stays a hit.
+    const DVec3* seenFromBehind(const CastHit& hit, const DVec3& start) const {
+        const double tolerance = behindTolerance(start);
+        const DVec3 normal = toD(hit.normal);
+        const DVec3 position = toD(hit.position);
+        const auto matches = [&](const DVec3& n, const DVec3& point) {
+            return glm::dot(normal, n) <= -0.999 &&
+                   std::abs(glm::dot(n, start - point)) <= tolerance &&
+                   std::abs(glm::dot(n, position - start)) <= tolerance;
+        };
+        if (mHadImpact && matches(mLastSurfaceNormal, mLastSurfacePoint)) return &mLastSurfaceNormal;
+        if (mHadContact && matches(mContactNormal, mContactPoint)) return &mContactNormal;
+        return nullptr;
     }
 
     struct Impact {
@@ -342,10 +418,22 @@ private:
         }
     }
 
+    // An impact point p, reached with `velocity`, moved back along that path by a few ulps.
+    // Where another surface's plane passes through the impact point too (a corner, an edge,
+    // a step ending on a plane), the body is on both at once; the world reports one, and the
+    // next chord, starting exactly on (or, by rounding, behind) the other's plane, would not
+    // see it (a two-sided triangle cannot tell which side such a start is on) and pass
+    // through it. Backed off, the body is surely on the side it came from, and meets the
+    // other surface at once. Away from the surface hit, which is then projected on.
+    static DVec3 backedOff(const DVec3& p, const DVec3& velocity) {
+        const double speed = glm::length(velocity);
+        return speed > 0.0 ? p - velocity * (realUlps(p, 8.0) / speed) : p;
+    }
+
     // Moves along the parabola from (p0, v0) for s seconds to an impact with the surface through
     // `surfacePoint` with normal n, and responds to it.
     void arriveAt(const DVec3& p0, const DVec3& v0, double s, const DVec3& n, const DVec3& surfacePoint) {
-        DVec3 p = p0 + v0 * s + 0.5 * mGravity * s * s;
+        DVec3 p = backedOff(p0 + v0 * s + 0.5 * mGravity * s * s, v0 + mGravity * s);
         p -= n * glm::dot(n, p - surfacePoint);  // onto the surface the world reported
         p += n * skinDistance(p);                 // and surely on its front side
         mBody = {p, v0 + mGravity * s};
@@ -394,7 +482,7 @@ private:
             // Out of the obstacle if rounding left the body behind its plane, and a skin off
             // it; not onto its plane, which would lift the body off the surface it slides on
             // when the obstacle leans over it.
-            DVec3 p = p0 + v0 * s + 0.5 * a * s * s;
+            DVec3 p = backedOff(p0 + v0 * s + 0.5 * a * s * s, v0 + a * s);
             p -= found.normal * std::min(0.0, glm::dot(found.normal, p - found.surfacePoint));
             p += found.normal * skinDistance(p);
             mBody = {p, v0 + a * s};
@@ -410,6 +498,7 @@ private:
         if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
             const DVec3 support = toD(hit.normal);
             mBody.position = toD(hit.position);
+            mContactPoint = mBody.position;
             if (glm::dot(support, n) < 1.0 - 1e-12) {
                 mContactNormal = support;
                 v1 -= glm::dot(v1, support) * support;
@@ -452,7 +541,9 @@ private:
             // geometrically forever: Zeno).
             v -= glm::dot(v, n) * n;
             mInContact = true;
+            mHadContact = true;
             mContactNormal = n;
+            mContactPoint = mBody.position;
         } else if (mInContact) {
             const DVec3& floor = mContactNormal;
             if (glm::dot(v, floor) > restSpeed(floor)) {
@@ -470,6 +561,7 @@ private:
         }
         mBody.velocity = v;
         mHasLastSurface = !mInContact;
+        mHadImpact = true;
         mLastSurfaceNormal = n;
         mLastSurfacePoint = mBody.position;
         mRecorder.add(mTime, TrajectoryEvent::Bounce, mBody.position, v, n);
@@ -488,6 +580,9 @@ private:
     DVec3 mLastSurfaceNormal{0.0};
     DVec3 mLastSurfacePoint{0.0};
     DVec3 mContactNormal{0.0};
+    DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
+    bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
+    bool mHadContact = false;  // mContactNormal and mContactPoint are set
     bool mAtRest = false;
     bool mStopped = false;
     std::uint32_t mEvents = 0;

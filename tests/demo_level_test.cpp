@@ -607,7 +607,6 @@ TEST(demo_level, ExactThrowsNeverEndBelowTheFloorNorPassThroughASolid) {
                     problem = "below the floor";  // 1 mm: far above the skin (ulps)
                 }
                 if (deepestInside(p, which) > 0.01) problem = "inside " + which->part;
-                if (problem.rfind("inside ramp", 0) == 0) break;
                 if (std::abs(p.x) <= kDoorHalfWidth && p.z <= -kInner && p.z >= -kOuter && p.y < kDoorHeight) {
                     throughDoorway = true;
                 }
@@ -617,14 +616,9 @@ TEST(demo_level, ExactThrowsNeverEndBelowTheFloorNorPassThroughASolid) {
                 }
             }
         }
-        // Known library issue (see RampSlopeIsNotPassedThrough below): a bounce on the ramp's
-        // oblique slope can be followed, at the same instant, by an impact on the same triangle
-        // from behind, and the grenade goes into the ramp. Such throws are counted, not checked
-        // further; every other throw must pass every check.
-        if (problem.rfind("inside ramp", 0) == 0) {
-            ++rampEntries;
-            continue;
-        }
+        // Throws into the ramp used to be a known issue (see RampSlopeIsNotPassedThrough below):
+        // counted separately, and none is allowed.
+        if (problem.rfind("inside ramp", 0) == 0) ++rampEntries;
         const DVec3 end = result.position;
         if (problem.empty() && std::abs(end.x) <= kFloorHalf && std::abs(end.z) <= kFloorHalf && end.y < -1e-3) {
             problem = "ends below the floor";
@@ -644,18 +638,16 @@ TEST(demo_level, ExactThrowsNeverEndBelowTheFloorNorPassThroughASolid) {
     EXPECT_EQ(failures, 0);
     EXPECT_EQ(lowThrows, (kThrows + 1) / 2);
     EXPECT_GT(bounces, kThrows);  // the throws do meet the level (several bounces each on average)
-    EXPECT_LT(rampEntries, kThrows / 10);  // the known issue stays what it is (about 2%), not the rule
-    std::printf("demo level: %d exact throws, %d bounces, %d left through the doorway, %d went into the ramp "
-                "(known issue)\n",
+    EXPECT_EQ(rampEntries, 0);  // was about 2% before the exact projectile's fix for oblique slopes
+    std::printf("demo level: %d exact throws, %d bounces, %d left through the doorway, %d went into the ramp\n",
                 kThrows, bounces, doorwayExits, rampEntries);
 }
 
 // A grenade landing on the ramp's slope (17.35 degrees, two triangles) must bounce off it and
-// stay above it. Today the exact predictor, right after the bounce, reports a second impact at
-// the same instant on the same triangle from behind (normal reversed; the body was put a few
-// ulps on the wrong side of the oblique plane) and flies on inside the ramp. Disabled until the
-// exact projectile handles it (src/projectile.cpp); run with --gtest_also_run_disabled_tests.
-TEST(demo_level, DISABLED_RampSlopeIsNotPassedThrough) {
+// stay above it. The exact predictor used to report, right after the bounce, a second impact at
+// the same instant on the same triangle from behind (normal reversed: the body was put on the
+// plane of the hit's float normal, a hair behind the triangle's own) and fly on inside the ramp.
+TEST(demo_level, RampSlopeIsNotPassedThrough) {
     const LevelMesh& mesh = level();
     const LevelMesh::Part* ramp = findPart(mesh, "ramp");
     ASSERT_NE(ramp, nullptr);

@@ -118,4 +118,77 @@ TEST(DoublePrecision, ProjectileOnAFarPlaneMatchesTheOrigin) {
     }
 }
 
+// Two-sided triangles at double resolution: the body is put on surfaces to ulps of double,
+// where the float normal a world reports, and a cast's float displacement, are much coarser.
+
+/// Adds the quad a b c d (in order) as two triangles.
+void addQuad(StaticWorld& world, const DVec3& a, const DVec3& b, const DVec3& c, const DVec3& d) {
+    ASSERT_EQ(world.add(foresight::Triangle{a, b, c}), Status::Ok);
+    ASSERT_EQ(world.add(foresight::Triangle{a, c, d}), Status::Ok);
+}
+
+TEST(DoublePrecision, BounceOnAnObliqueSlopeIsNotFollowedByAHitFromBehind) {
+    // The demo level's ramp slope (17.35 degrees, two triangles). The bounce put the body on
+    // the plane of the hit's float normal, 1e-11 m behind the triangles' own plane; the next
+    // cast met the triangle from behind at once and the body went on inside the ramp.
+    StaticWorld world;
+    addQuad(world, DVec3(-1, 0, 11), DVec3(-1, 0, 14), DVec3(-7, 1.875, 14), DVec3(-7, 1.875, 11));
+    if (HasFatalFailure()) return;
+    ProjectileSettings settings;
+    settings.restitution = 0.69054931402206421f;
+    std::vector<TrajectoryPoint> points(foresight::trajectoryCapacity(0.2f, settings));
+    ProjectileResult result;
+    ASSERT_EQ(foresight::predictProjectile(RVec3(-4.1496719085437608, 1.1732715847369795, 13.272881517199785),
+                                           Vec3(-1.0579562187194824f, -2.213991641998291f, -3.7539980411529541f),
+                                           0.2f, settings, &world, points, result),
+              Status::Ok);
+    EXPECT_EQ(result.bounces, 1u);
+    for (std::size_t k = 0; k < result.trajectorySize; ++k) {
+        const DVec3 p = points[k].position;
+        // Above the slope y = (-1 - x) 1.875 / 6; 1e-9 m: double rounding and the skin are ulps.
+        EXPECT_GE(p.y, (-1.0 - p.x) * 1.875 / 6.0 - 1e-9) << "t=" << points[k].time;
+    }
+}
+
+TEST(DoublePrecision, StepEndingExactlyOnAWallOfTrianglesBouncesOffIt) {
+    // x = 0 - 6 t reaches the wall x = -15 at t = 2.5 s, a step boundary; at double resolution
+    // x = -15.000000000000043 there. The cast's float displacement (0.12 m to 7e-9 m) stopped
+    // short of the wall, and the next cast started behind it: the body went through.
+    StaticWorld world;
+    addQuad(world, DVec3(-15, -60, -60), DVec3(-15, -60, 60), DVec3(-15, 60, 60), DVec3(-15, 60, -60));
+    if (HasFatalFailure()) return;
+    ProjectileSettings settings;
+    std::vector<TrajectoryPoint> points(foresight::trajectoryCapacity(3.0f, settings));
+    ProjectileResult result;
+    ASSERT_EQ(foresight::predictProjectile(RVec3(0, 1.5, -13), Vec3(-6, 6, 11), 3.0f, settings, &world, points, result),
+              Status::Ok);
+    EXPECT_EQ(result.bounces, 1u);
+    for (std::size_t k = 0; k < result.trajectorySize; ++k) {
+        EXPECT_GE(points[k].position.x, -15.0 - 1e-9) << "t=" << points[k].time;  // ulps of double
+    }
+    EXPECT_NEAR(result.position.x, -13.5, 1e-9);  // back at e * 6 = 3 m/s for 0.5 s
+}
+
+TEST(DoublePrecision, ImpactExactlyOnTheEdgeOfTwoWallsOfTrianglesBouncesOffBoth) {
+    // Walls x = -5 and z = -5 of triangles; the diagonal throw reaches their edge at t = 0.625 s
+    // exactly. The bounce off one wall left the body exactly on the other's plane, where a
+    // two-sided triangle ignores a start: it went through that wall.
+    StaticWorld world;
+    addQuad(world, DVec3(-5, -20, -5), DVec3(-5, -20, 20), DVec3(-5, 20, 20), DVec3(-5, 20, -5));
+    addQuad(world, DVec3(-5, -20, -5), DVec3(20, -20, -5), DVec3(20, 20, -5), DVec3(-5, 20, -5));
+    if (HasFatalFailure()) return;
+    ProjectileSettings settings;
+    settings.restitution = 0.38f;
+    std::vector<TrajectoryPoint> points(foresight::trajectoryCapacity(1.5f, settings));
+    ProjectileResult result;
+    ASSERT_EQ(foresight::predictProjectile(RVec3(-3.75, 1.5, -3.75), Vec3(-2.0f, -1.25f, -2.0f), 1.5f, settings, &world,
+                                           points, result),
+              Status::Ok);
+    EXPECT_EQ(result.bounces, 2u);
+    for (std::size_t k = 0; k < result.trajectorySize; ++k) {
+        EXPECT_GE(points[k].position.x, -5.0 - 1e-9) << "t=" << points[k].time;
+        EXPECT_GE(points[k].position.z, -5.0 - 1e-9) << "t=" << points[k].time;
+    }
+}
+
 } // namespace
