@@ -562,7 +562,7 @@ const BigWorlds& bigWorlds() {
         BuildTimer commitTimer;
         std::string error;
         if (!w->embree->commit(&error)) fail(error);
-        note("EmbreeWorld: addMesh " + added + "; commit (user-geometry BVH) " +
+        note("EmbreeWorld: addMesh " + added + "; commit (BVH of native triangles) " +
              commitTimer.report());
 
         std::string bulletReport;
