@@ -1072,3 +1072,128 @@ TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
     EXPECT_GT(bounces, 5u);
     EXPECT_EQ(document.at("world").at("meshes").size(), 1u);  // the demo level
 }
+
+// ---------------------------------------------------------------------------------------------
+// aim: firing solutions (/work/shared/spec/aim-format.md). Each solution is checked with the
+// closed-form flight from + v t + g t^2 / 2 against the target's p + v t + a t^2 / 2.
+
+namespace {
+
+const char* kAimExample = R"({
+  "gravity": [0, -9.81, 0],
+  "shots": [
+    {"id": "rifle", "from": [0, 1.6, 0], "speed": 300, "gravity": [0, 0, 0],
+     "target": {"position": [40, 1, 30], "velocity": [3, 0, -1]}},
+    {"id": "mortar", "from": [0, 0, 0], "speed": 40, "arc": "high",
+     "target": {"position": [120, 3, 20]}},
+    {"id": "grenade", "from": [0, 1.6, 0], "speed": 18, "arc": "all",
+     "target": {"position": [10, 0, 12], "velocity": [2, 0, 0], "acceleration": [0, 0, 0.5]}}
+  ]
+})";
+
+/// Distance between the shot and the target at the solution's time (double closed forms).
+double aimMiss(const std::array<double, 3>& from, const std::array<double, 3>& gravity, const Json& target,
+               const Json& solution) {
+    const double t = solution.at("time").get<double>();
+    const auto v = vec(solution.at("velocity"));
+    const auto p = vec(target.at("position"));
+    const auto tv = target.contains("velocity") ? vec(target["velocity"]) : std::array<double, 3>{0, 0, 0};
+    const auto ta = target.contains("acceleration") ? vec(target["acceleration"]) : std::array<double, 3>{0, 0, 0};
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        const double shot = from[k] + v[k] * t + 0.5 * gravity[k] * t * t;
+        const double aimed = p[k] + tv[k] * t + 0.5 * ta[k] * t * t;
+        sum += (shot - aimed) * (shot - aimed);
+    }
+    return std::sqrt(sum);
+}
+
+TEST_F(cli, AimSpecExampleSolutionsMeetTheirTargets) {
+    const CliRun run = runCli({"aim", write("shots.json", kAimExample).string()});
+    const Json out = parseOutput(run);
+    const Json in = Json::parse(kAimExample);
+    ASSERT_EQ(out.at("shots").size(), 3u);
+    const std::array<std::size_t, 3> expected = {1, 1, 2};  // low, high, all (two arcs)
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Json& shot = in["shots"][i];
+        const Json& result = out["shots"][i];
+        EXPECT_EQ(result.at("id"), shot.at("id"));
+        const auto gravity = vec(shot.contains("gravity") ? shot["gravity"] : in["gravity"]);
+        ASSERT_EQ(result.at("solutions").size(), expected[i]) << result;
+        double previous = 0;
+        for (const auto& solution : result["solutions"]) {
+            // Printed floats (velocity, time) round-trip to ~6e-8 relative: ~1e-4 m over these flights.
+            EXPECT_LT(aimMiss(vec(shot.at("from")), gravity, shot.at("target"), solution), 1e-3) << solution;
+            const auto v = vec(solution.at("velocity"));
+            EXPECT_NEAR(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), shot.at("speed").get<double>(), 1e-3);
+            EXPECT_GT(solution.at("time").get<double>(), previous);
+            previous = solution.at("time").get<double>();
+        }
+    }
+    // The mortar's high arc at 40 m/s on a static target: elevation above 45 degrees.
+    EXPECT_GT(out["shots"][1]["solutions"][0].at("elevation").get<double>(), 0.785398);
+    // Deterministic: the same bytes every run, from a file or standard input.
+    EXPECT_EQ(runCli({"aim", "-"}, kAimExample).out, run.out);
+}
+
+TEST_F(cli, AimOutOfRangeIsAnEmptyListAndExtensionsWork) {
+    const CliRun run = runCli({"aim", "-"}, R"({"shots": [
+        {"id": 1, "from": [0, 0, 0], "speed": 10, "target": {"position": [100, 0, 0]}},
+        {"id": 2, "from": [0, 0, 0], "horizontal_speed": 10, "target": {"position": [30, 2, 40]}},
+        {"id": 3, "from": [0, 0, 0], "apex_height": 10, "target": {"position": [20, 0, 0]}},
+        {"id": 4, "from": [0, 0, 0], "apex_height": 3, "apex_above": "target", "target": {"position": [20, 5, 0]}},
+        {"id": 5, "from": [0, 0, 0], "speed": 20, "max_time": 0.5, "arc": "all", "target": {"position": [20, 0, 0]}}]})");
+    const Json out = parseOutput(run);
+    ASSERT_EQ(out.at("shots").size(), 5u);
+    EXPECT_TRUE(out["shots"][0].at("solutions").empty());  // range 10^2 / 9.81 = 10.2 m
+    // Lateral 10 m/s over 50 m: 5 s.
+    ASSERT_EQ(out["shots"][1]["solutions"].size(), 1u);
+    EXPECT_NEAR(out["shots"][1]["solutions"][0].at("time").get<double>(), 5.0, 1e-5);
+    // Apex 10 m above the start: vertical speed sqrt(2 g 10), flight 2 w / g.
+    ASSERT_EQ(out["shots"][2]["solutions"].size(), 1u);
+    const double w = std::sqrt(2 * 9.81 * 10);
+    EXPECT_NEAR(out["shots"][2]["solutions"][0]["velocity"][1].get<double>(), w, 1e-4);
+    EXPECT_NEAR(out["shots"][2]["solutions"][0].at("time").get<double>(), 2 * w / 9.81, 1e-5);
+    // Apex 3 m above a target 5 m up: vertical speed sqrt(2 g 8).
+    ASSERT_EQ(out["shots"][3]["solutions"].size(), 1u);
+    EXPECT_NEAR(out["shots"][3]["solutions"][0]["velocity"][1].get<double>(), std::sqrt(2 * 9.81 * 8), 1e-4);
+    // max_time 0.5 s: the low arc (0.53 s at 20 m/s and 20 m) is already too late.
+    EXPECT_TRUE(out["shots"][4].at("solutions").empty());
+}
+
+TEST_F(cli, AimErrorsNameTheJsonPathAndExitTwo) {
+    const CliRun run = runCli({"aim", "-"}, R"({"gravity": [0, -9.81], "shots": [
+        {"from": [0, 0, 0], "speed": -1, "arc": "mid", "max_time": -2,
+         "target": {"position": [1, 2, 3], "velocty": [1, 1, 1]}},
+        {"from": [0, 0, 0], "target": {}},
+        {"from": [0, 0, 0], "speed": 5, "apex_height": 2, "target": {"position": [1, 0, 0]}},
+        {"from": [0, 0, 0], "apex_height": 2, "gravity": [0, 0, 0], "target": {"position": [1, 0, 0]}},
+        {"from": [0, 0, 0], "speed": 1e39, "target": {"position": [1, 0, 0]}}]})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    for (const char* line : {"gravity: expected 3 finite numbers", "shots[0].speed: must be >= 0 (got -1)",
+                             "shots[0].arc: unknown arc \"mid\"", "shots[0].max_time: time must be >= 0 (got -2)",
+                             "shots[0].target.velocty: unknown key", "shots[1].speed: missing required field",
+                             "shots[1].target.position: missing required field",
+                             "shots[2]: give one of \"speed\", \"horizontal_speed\" and \"apex_height\"",
+                             "shots[3].apex_height: needs gravity", "shots[4].speed: expected a finite number"}) {
+        EXPECT_NE(run.err.find(line), std::string::npos) << "missing: " << line << "\n" << run.err;
+    }
+    // Not JSON, a duplicate key, a missing file, no shots.
+    const CliRun syntax = runCli({"aim", "-"}, "{\"shots\": [");
+    EXPECT_EQ(syntax.status, 2);
+    EXPECT_NE(syntax.err.find("<stdin>: invalid JSON"), std::string::npos) << syntax.err;
+    const CliRun duplicate = runCli({"aim", "-"}, R"({"shots": [], "shots": []})");
+    EXPECT_EQ(duplicate.status, 2);
+    EXPECT_NE(duplicate.err.find("shots: duplicate key"), std::string::npos) << duplicate.err;
+    const CliRun missing = runCli({"aim", (mDir / "nope.json").string()});
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
+    const CliRun empty = runCli({"aim", "-"}, "{}");
+    EXPECT_EQ(empty.status, 2);
+    EXPECT_NE(empty.err.find("shots: missing required field"), std::string::npos) << empty.err;
+    EXPECT_EQ(runCli({"aim", "-"}, R"({"shots": []})").out, "{\"shots\": []}\n");
+}
+
+} // namespace

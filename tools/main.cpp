@@ -4,9 +4,11 @@
 ///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
+///   foresight aim FILE|-           firing solutions (aim-format.md): JSON shots in, JSON solutions out
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
+#include "aim.h"
 #include "compare.h"
 #include "demo.h"
 #include "picture.h"
@@ -83,6 +85,11 @@ int run(int argc, char** argv) {
         ->expected(3)
         ->type_name("X Y Z");
 
+    std::string aimFile;
+    CLI::App* aim = app.add_subcommand(
+        "aim", "Firing solutions: launch velocities that meet moving targets (JSON in and out)");
+    aim->add_option("FILE", aimFile, "shots file, or - for standard input")->required()->type_name("FILE");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -102,6 +109,7 @@ int run(int argc, char** argv) {
     if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
+    if (aim->parsed()) return foresight_cli::aimCommand(aimFile);
     return 2;
 }
 

@@ -2,6 +2,7 @@
 /// @file foresight.h
 /// Everything of foresight's core library: include this, link foresight::foresight.
 
+#include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/config.h>
 #include <foresight/orientation.h>

@@ -1,0 +1,17 @@
+#pragma once
+/// @file aim.h
+/// `foresight aim FILE|-`: firing solutions (contract: /work/shared/spec/aim-format.md).
+/// JSON shots in, JSON solutions out, through foresight::aimProjectile. Errors follow the
+/// scenario format's rules: one `path: message` line per problem, exit status 2, nothing on
+/// standard output.
+
+#include <string>
+
+namespace foresight_cli {
+
+/// `foresight aim FILE` ("-": standard input): writes {"shots": [...]} to standard output.
+/// Returns the exit status: 0, 2 (invalid input or unreadable file; nothing on standard output)
+/// or 1 (standard output cannot be written).
+int aimCommand(const std::string& file);
+
+} // namespace foresight_cli
