@@ -6,6 +6,8 @@
 #
 # Usage: scripts/bench.sh [benchmark options...], e.g. --benchmark_filter=Vehicle
 #        scripts/bench.sh --instructions   (instruction counts under callgrind instead of times)
+#        scripts/bench.sh --planning [benchmark options...]   throw planning on the demo level
+#            (bench/bench_planning.cpp, Embree backend): ms per plan, target < 5; success rate
 #        scripts/bench.sh --worlds [benchmark options...]
 #            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
 #            backends): segment casts per second on a mesh of a million triangles through
@@ -126,6 +128,29 @@ if [[ "${1:-}" == "--worlds" ]]; then
             ratio("Stepped: EmbreeWorld / BulletWorld", "BM_DemoLevel/Embree/Stepped", "BM_DemoLevel/Bullet/Stepped", 0)
             if (missed && strict == 1) exit 1
         }'
+    exit 0
+fi
+
+if [[ "${1:-}" == "--planning" ]]; then
+    # Throw planning on the demo level (bench/bench_planning.cpp, needs the Embree backend):
+    # plans per second, ms per plan (target < 5 for BM_Plan/Courtyard) and the success rate.
+    shift
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_planning.json}
+    if [[ "$dir" == build ]]; then
+        ./scripts/build.sh --target foresight_bench_planning >/dev/null
+    else
+        cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
+            --target foresight_bench_planning >/dev/null
+    fi
+    "$dir/bench/foresight_bench_planning" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
+    echo "Throw planning on the demo level, medians of this run ($out):"
+    medians "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        { ms = 1000 / $2; printf "  %-22s %8.3f ms per plan\n", $1, ms
+          if ($1 ~ /Courtyard/ && ms >= 5) missed = 1 }
+        END { if (missed) { print "  target missed: BM_Plan/Courtyard >= 5 ms per plan"; if (strict == 1) exit 1 } }'
+    medians "$out" success | awk '{ printf "  %-22s %8.1f%% of the pairs get a plan\n", $1, 100 * $2 }'
     exit 0
 fi
 

@@ -1074,6 +1074,85 @@ TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// plan: throw planning (tools/README.md). Every plan is checked with `foresight predict`: its
+// velocity, thrown with the same settings, ends within the acceptance radius of the target.
+
+namespace {
+
+const char* const kPlanDocument = R"({
+  "world": {"planes": [{"normal": [0, 1, 0], "distance": 0}],
+            "boxes": [{"center": [0, 1, 4], "half_extents": [3, 1, 0.25],
+                       "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}]},
+  "throws": [
+    {"id": "over the crate", "start": [0, 1.5, 0], "target": [1, 0, 8], "fuse": 3,
+     "max_speed": 20, "acceptance_radius": 0.4, "restitution": 0.5, "plans": 2, "trajectory": true},
+    {"id": 7, "start": [0, 1.5, 0], "target": [0, 0, 300], "fuse": 2, "max_speed": 10}
+  ]
+})";
+
+TEST_F(cli, PlanVelocitiesEndWithinTheRadiusWhenPredicted) {
+    const CliRun run = runCli({"plan", write("plan.json", kPlanDocument).string()});
+    const Json output = parseOutput(run);
+    ASSERT_EQ(output.at("throws").size(), 2u);
+    const Json& found = output["throws"][0];
+    EXPECT_EQ(found.at("id"), "over the crate");
+    ASSERT_GE(found.at("plans").size(), 1u) << run.out;
+    for (const Json& plan : found["plans"]) {
+        EXPECT_LE(plan.at("distance").get<double>(), 0.4);
+        EXPECT_LE(plan.at("speed").get<double>(), 20.0 * (1 + 1e-6));
+        ASSERT_TRUE(plan.at("trajectory").is_array());
+        EXPECT_EQ(plan["trajectory"].back().at("event"), "end");
+        const Json scenario = {
+            {"world", Json::parse(kPlanDocument).at("world")},
+            {"predictions",
+             {{{"model", "projectile"}, {"position", {0, 1.5, 0}}, {"velocity", plan.at("velocity")},
+               {"time", 3}, {"restitution", 0.5}, {"trajectory", false}}}}};
+        const Json predicted = parseOutput(predict(scenario.dump()));
+        const Json& end = predicted.at("predictions").at(0).at("position");
+        const double dx = end[0].get<double>() - 1, dy = end[1].get<double>(), dz = end[2].get<double>() - 8;
+        EXPECT_LE(std::sqrt(dx * dx + dy * dy + dz * dz), 0.4) << plan.dump();
+        EXPECT_EQ(end, plan.at("position")); // the same prediction, printed the same way
+    }
+    // Out of reach (300 m at 10 m/s for 2 s): no plan, not an error; how close it came.
+    const Json& far = output["throws"][1];
+    EXPECT_EQ(far.at("id"), 7);
+    EXPECT_TRUE(far.at("plans").empty());
+    EXPECT_GT(far.at("closest_distance").get<double>(), 250.0);
+}
+
+TEST_F(cli, PlanIsDeterministic) {
+    const fs::path file = write("plan.json", kPlanDocument);
+    const CliRun a = runCli({"plan", file.string()}), b = runCli({"plan", "-"}, kPlanDocument);
+    ASSERT_EQ(a.status, 0) << a.err;
+    EXPECT_EQ(a.out, b.out);
+}
+
+TEST_F(cli, PlanRefusesBadInputNamingEveryPath) {
+    const CliRun run = runCli({"plan", "-"}, R"({"world": {"planes": [{"normal": [0, 0, 0], "distance": 0}]},
+      "throws": [{"start": [0, 1], "target": [1, 0, 1], "fuse": 0, "max_speed": -1, "acceptance_radius": 0,
+                  "restitution": 2, "plans": 0, "speed": 3}, 5], "predictions": []})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    for (const char* expected :
+         {"world.planes[0].normal: ", "throws[0].start: expected 3 finite numbers", "throws[0].fuse: must be > 0",
+          "throws[0].max_speed: must be > 0", "throws[0].acceptance_radius: must be > 0",
+          "throws[0].restitution: restitution must be in [0, 1]", "throws[0].plans: expected an integer",
+          "throws[0].speed: unknown key", "throws[1]: expected an object", "predictions: unknown key"})
+        EXPECT_NE(run.err.find(expected), std::string::npos) << expected << "\n" << run.err;
+    const CliRun missing = runCli({"plan", "-"}, R"({"throws": [{"start": [0, 1, 0]}]})");
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.err.find("throws[0].target: missing required field"), std::string::npos) << missing.err;
+    EXPECT_NE(missing.err.find("throws[0].fuse: missing required field"), std::string::npos) << missing.err;
+    const CliRun cap = runCli({"plan", "-"},
+                              R"({"throws": [{"start": [0, 1, 0], "target": [1, 0, 1], "fuse": 1e6, "max_speed": 5}]})");
+    EXPECT_EQ(cap.status, 2);
+    EXPECT_NE(cap.err.find("throws[0]: too many steps"), std::string::npos) << cap.err;
+    EXPECT_EQ(runCli({"plan"}).status, 2); // usage: FILE is required
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
 // aim: firing solutions (/work/shared/spec/aim-format.md). Each solution is checked with the
 // closed-form flight from + v t + g t^2 / 2 against the target's p + v t + a t^2 / 2.
 

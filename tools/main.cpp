@@ -5,6 +5,7 @@
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
 ///   foresight aim FILE|-           firing solutions (aim-format.md): JSON shots in, JSON solutions out
+///   foresight plan FILE|-          throw planning: launch velocities that reach a target at the fuse
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
@@ -12,6 +13,7 @@
 #include "compare.h"
 #include "demo.h"
 #include "picture.h"
+#include "plan.h"
 #include "scenario.h"
 
 #include <foresight/config.h>
@@ -90,6 +92,11 @@ int run(int argc, char** argv) {
         "aim", "Firing solutions: launch velocities that meet moving targets (JSON in and out)");
     aim->add_option("FILE", aimFile, "shots file, or - for standard input")->required()->type_name("FILE");
 
+    std::string planFile;
+    CLI::App* plan = app.add_subcommand(
+        "plan", "Find launch velocities that put a grenade near a target when its fuse runs out (JSON in and out)");
+    plan->add_option("FILE", planFile, "plan document, or - for standard input")->required()->type_name("FILE");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -110,6 +117,7 @@ int run(int argc, char** argv) {
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
     if (aim->parsed()) return foresight_cli::aimCommand(aimFile);
+    if (plan->parsed()) return foresight_cli::planCommand(planFile);
     return 2;
 }
 

@@ -9,5 +9,6 @@
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
 #include <foresight/status.h>
+#include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
 #include <foresight/world.h>
