@@ -70,5 +70,25 @@ double decimalValue(float x);
 // The rotation of angle |w| t about w / |w| in double, exact for small angles (no NaN at 0).
 DQuat rotationFromAngularVelocityD(const DVec3& angularVelocity, double time);
 
+// Series-guarded coefficients of the rotation integrals (the vehicle's closed-form arc, the
+// dead-reckoning body-axis integrals).
+
+// sin(x) / x, exact near 0.
+inline double sinc(double x) {
+    if (std::abs(x) < 1e-4) return 1.0 - x * x / 6.0;  // next term x^4/120 < 1e-18
+    return std::sin(x) / x;
+}
+
+// (x - sin x) / x^3, exact near 0 (the direct form cancels catastrophically there).
+inline double xMinusSinOverCube(double x) {
+    if (std::abs(x) < 0.5) {
+        const double x2 = x * x;
+        // Taylor series; the first omitted term, x^10 / 13!, is below 1.5e-13 * 2^-10 here.
+        return 1.0 / 6.0 -
+               x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
+    }
+    return (x - std::sin(x)) / (x * x * x);
+}
+
 }  // namespace detail
 FORESIGHT_NAMESPACE_END

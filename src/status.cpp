@@ -24,6 +24,7 @@ const char* statusMessage(Status status) {
     case Status::TooManySteps: return "too many steps (time / step is over the work cap)";
     case Status::TooManyEvents: return "too many bounces and contact changes (over the work cap)";
     case Status::NonFiniteResult: return "result is not finite (inputs too large)";
+    case Status::InvalidAlgorithm: return "unknown dead-reckoning algorithm";
     }
     return "unknown status";
 }

@@ -53,23 +53,6 @@ DQuat compose(const DQuat& q, const DQuat& r, AngularFrame frame) {
     return glm::normalize(frame == AngularFrame::Body ? q * r : r * q);
 }
 
-// sin(x) / x, exact near 0.
-double sinc(double x) {
-    if (std::abs(x) < 1e-4) return 1.0 - x * x / 6.0;  // next term x^4/120 < 1e-18
-    return std::sin(x) / x;
-}
-
-// (x - sin x) / x^3, exact near 0 (the direct form cancels catastrophically there).
-double xMinusSinOverCube(double x) {
-    if (std::abs(x) < 0.5) {
-        const double x2 = x * x;
-        // Taylor series; the first omitted term, x^10 / 13!, is below 1.5e-13 * 2^-10 here.
-        return 1.0 / 6.0 -
-               x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
-    }
-    return (x - std::sin(x)) / (x * x * x);
-}
-
 }  // namespace
 
 float signedVehicleSpeed(Vec3 velocity, Vec3 forwardWorld) {

@@ -23,6 +23,7 @@ enum class Status : std::uint8_t {
     TooManySteps,       ///< The prediction would take more steps than the settings' cap.
     TooManyEvents,      ///< The prediction hit its cap on bounces and contact changes.
     NonFiniteResult,    ///< The inputs are valid but so large that the result overflows.
+    InvalidAlgorithm,   ///< A dead-reckoning algorithm outside the DIS enumeration (1 to 9).
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never null.
