@@ -580,8 +580,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "world.triangles[0][2]: expected 3 finite numbers"},
         // Names.
         ErrorCase{"UnknownModel", scenarioWith(R"({"model": "teleport"})"), "predictions[0].model: unknown model \"teleport\""},
-        ErrorCase{"DeadReckoningNotYet", scenarioWith(R"({"model": "dead_reckoning", "algorithm": "FPW"})"),
-                  "predictions[0].model: \"dead_reckoning\" is not supported yet"},
+        ErrorCase{"UnknownDeadReckoningAlgorithm", scenarioWith(R"({"model": "dead_reckoning", "algorithm": "DRM_FPW"})"),
+                  "predictions[0].algorithm: unknown algorithm \"DRM_FPW\" (expected STATIC, FPW"},
         ErrorCase{"UnknownProjectileMethod", projectile(R"(, "method": "iterative")"), "predictions[0].method: unknown method"},
         ErrorCase{"UnknownVehicleMethod", vehicle(R"(, "method": "stepped")"), "predictions[0].method: unknown method"},
         ErrorCase{"UnknownFrame", orientation(R"({"w": 1, "x": 0, "y": 0, "z": 0})", R"(, "frame": "local")"),
@@ -1276,3 +1276,149 @@ TEST_F(cli, AimErrorsNameTheJsonPathAndExitTwo) {
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------------------------
+// dead_reckoning: the DIS models through `foresight predict` (geocentric positions, 0.01 m).
+
+namespace {
+
+/// A number as JSON text that reads back to the same double.
+std::string jsonNumber(double value) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+
+/// The DIS body-to-world quaternion of Euler angles (psi, theta, phi) [deg]: Rz Ry Rx, as JSON.
+std::string disOrientation(double psiDeg, double thetaDeg, double phiDeg) {
+    const double d = 3.14159265358979323846 / 360.0;  // half a degree in radians
+    const double cz = std::cos(psiDeg * d), sz = std::sin(psiDeg * d);
+    const double cy = std::cos(thetaDeg * d), sy = std::sin(thetaDeg * d);
+    const double cx = std::cos(phiDeg * d), sx = std::sin(phiDeg * d);
+    // (cz + sz k)(cy + sy j)(cx + sx i)
+    const double w = cz * cy * cx + sz * sy * sx;
+    const double x = cz * cy * sx - sz * sy * cx;
+    const double y = cz * sy * cx + sz * cy * sx;
+    const double z = sz * cy * cx - cz * sy * sx;
+    return R"({"w": )" + jsonNumber(w) + R"(, "x": )" + jsonNumber(x) + R"(, "y": )" + jsonNumber(y) +
+           R"(, "z": )" + jsonNumber(z) + "}";
+}
+
+/// open-dis-java's espdu4 (sign +1, DR1-DR5) or espdu8 (sign -1, DR1, DR6-DR9), 0.5 s ahead.
+std::string towersHines(const std::string& id, const std::string& algorithm, double sign) {
+    const double r = 3.14159265358979323846 / 180.0;
+    return R"({"id": ")" + id + R"(", "model": "dead_reckoning", "algorithm": ")" + algorithm +
+           R"(", "position": [)" + jsonNumber(-sign * 6378137.0) + ", " + jsonNumber(-sign * 5.0) + ", " +
+           jsonNumber(-sign * 10.0) + R"(], "velocity": [30, 35, 40], "acceleration": [-80, -85, -90], "orientation": )" +
+           disOrientation(15, 20, 25) + R"(, "angular_velocity": [)" + jsonNumber(sign * 60 * r) + ", " +
+           jsonNumber(sign * 65 * r) + ", " + jsonNumber(sign * 70 * r) + R"(], "time": 0.5})";
+}
+
+} // namespace
+
+TEST_F(cli, DeadReckoningReproducesTheTowersAndHinesCasesAtGeocentricScale) {
+    struct Case {
+        const char* id;
+        const char* algorithm;
+        double sign;
+        std::array<double, 3> position;
+        std::array<double, 3> velocity;
+    };
+    // Published (DR4, DR8) and derived values, 2 decimals, as open-dis-java's tests use them.
+    const Case cases[] = {
+        {"dr1b", "STATIC", 1, {-6378137.0, -5.0, -10.0}, {30, 35, 40}},
+        {"dr2", "FPW", 1, {-6378122.0, 12.5, 10.0}, {30, 35, 40}},
+        {"dr3", "RPW", 1, {-6378122.0, 12.5, 10.0}, {30, 35, 40}},
+        {"dr4", "RVW", 1, {-6378132.0, 1.88, -1.25}, {-10, -7.5, -5}},
+        {"dr5", "FVW", 1, {-6378132.0, 1.88, -1.25}, {-10, -7.5, -5}},
+        {"dr1w", "STATIC", -1, {6378137.0, 5.0, 10.0}, {30, 35, 40}},
+        {"dr6", "FPB", -1, {6378157.13, 18.06, 28.85}, {30, 35, 40}},
+        {"dr7", "RPB", -1, {6378156.77, 18.75, 28.73}, {30, 35, 40}},
+        {"dr8", "RVB", -1, {6378144.03, 10.46, 18.32}, {-10, -7.5, -5}},
+        {"dr9", "FVB", -1, {6378144.46, 9.62, 18.47}, {-10, -7.5, -5}},
+    };
+    std::string predictions;
+    for (const Case& c : cases) predictions += (predictions.empty() ? "" : ", ") + towersHines(c.id, c.algorithm, c.sign);
+    const CliRun run = predict(R"({"predictions": [)" + predictions + "]}");
+    ASSERT_EQ(run.status, 0) << run.err;
+    const Json output = parseOutput(run);
+    for (const Case& c : cases) {
+        const Json& p = byId(output, c.id);
+        EXPECT_EQ(p["model"], "dead_reckoning");
+        EXPECT_EQ(p["algorithm"], c.algorithm);
+        ASSERT_TRUE(p.contains("position") && p.contains("velocity") && p.contains("orientation")) << p.dump();
+        const auto position = vec(p["position"]);
+        const auto velocity = vec(p["velocity"]);
+        for (int i = 0; i < 3; ++i) {
+            // 0.01: the published values' 2 decimals; a float position would be 0.5 m coarse.
+            EXPECT_NEAR(position[i], c.position[i], 0.01) << c.id << " position " << i;
+            EXPECT_NEAR(velocity[i], c.velocity[i], 0.01) << c.id << " velocity " << i;
+        }
+    }
+    // DR8's orientation: psi, theta, phi = -23.07, -8.68, -10.86 degrees (published).
+    const Json& q = byId(output, "dr8")["orientation"];
+    const double w = q["w"].get<double>(), x = q["x"].get<double>(), y = q["y"].get<double>(), z = q["z"].get<double>();
+    const double deg = 180.0 / 3.14159265358979323846;
+    EXPECT_NEAR(std::atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)) * deg, -23.07, 0.01);
+    EXPECT_NEAR(std::asin(2 * (w * y - z * x)) * deg, -8.68, 0.01);
+    EXPECT_NEAR(std::atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)) * deg, -10.86, 0.01);
+}
+
+TEST_F(cli, DeadReckoningSpecExampleFollowsTheTurningTank) {
+    // The format's example: RVB, body velocity 8 m/s growing at 2 m/s^2 along body x, turning
+    // at w about z from the identity for 2 s. Closed form of the planar path (heading w s):
+    //   x = (8 + 2t) sin(wt)/w + 2 (cos(wt) - 1)/w^2,  y = 8/w - (8 + 2t) cos(wt)/w + 2 sin(wt)/w^2.
+    const CliRun run = predict(R"({"predictions": [
+        {"id": "tank", "model": "dead_reckoning", "algorithm": "RVB", "position": [0, 0, 0],
+         "velocity": [8, 0, 0], "acceleration": [2, 0, 0],
+         "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0.785398], "time": 2}]})");
+    const Json output = parseOutput(run);
+    const Json& tank = byId(output, "tank");
+    const double w = static_cast<double>(0.785398f), t = 2.0;
+    const auto position = vec(tank["position"]);
+    EXPECT_NEAR(position[0], (8 + 2 * t) * std::sin(w * t) / w + 2 * (std::cos(w * t) - 1) / (w * w), 1e-5);
+    EXPECT_NEAR(position[1], 8 / w - (8 + 2 * t) * std::cos(w * t) / w + 2 * std::sin(w * t) / (w * w), 1e-5);
+    EXPECT_NEAR(position[2], 0.0, 1e-9);
+    // Body axes, as the input: 8 + 2 * 2 along x.
+    EXPECT_EQ(vec(tank["velocity"]), (std::array<double, 3>{12, 0, 0}));
+    const Json& q = tank["orientation"];
+    const double sign = q["w"].get<double>() < 0 ? -1.0 : 1.0;
+    EXPECT_NEAR(sign * q["w"].get<double>(), std::cos(0.5 * w * t), 1e-6);  // float quaternion
+    EXPECT_NEAR(sign * q["z"].get<double>(), std::sin(0.5 * w * t), 1e-6);
+}
+
+TEST_F(cli, DeadReckoningFieldsAreRequiredWhenTheAlgorithmUsesThem) {
+    // FPW uses neither acceleration nor angular velocity: both may be left out.
+    const CliRun fpw = predict(R"({"predictions": [{"model": "dead_reckoning", "algorithm": "FPW",
+        "position": [6378137, 0, 0], "velocity": [0, 0.01, 0], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0},
+        "time": 1}]})");
+    const Json output = parseOutput(fpw);
+    // 1 cm at 6.4e6 m (a float position would not move).
+    EXPECT_NEAR(vec(output["predictions"][0]["position"])[1], 0.01, 1e-9);
+    EXPECT_EQ(vec(output["predictions"][0]["position"])[0], 6378137.0);
+
+    const CliRun run = predict(R"({"predictions": [
+        {"model": "dead_reckoning", "algorithm": "RVB", "position": [0, 0, 0], "velocity": [1, 0, 0],
+         "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "time": 1},
+        {"model": "dead_reckoning", "algorithm": "rvb", "position": [0, 0, 0], "velocity": [1, 0, 0],
+         "acceleration": [0, 0, 0], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0], "time": 1},
+        {"model": "dead_reckoning", "position": [0, 0, 0], "velocity": [1, 0, 0],
+         "orientation": {"w": 0, "x": 0, "y": 0, "z": 0}, "time": -1},
+        {"model": "dead_reckoning", "algorithm": "FPW", "position": [0, 0, 0], "velocity": [1, 0, 0],
+         "acceleration": [0, "a", 0], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocty": [0, 0, 0], "time": 1},
+        {"model": "dead_reckoning", "algorithm": 8, "position": [0, 0, 0], "velocity": [1, 0, 0],
+         "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "time": 1}]})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    for (const char* line : {"predictions[0].acceleration: missing required field",
+                             "predictions[0].angular_velocity: missing required field",
+                             "predictions[1].algorithm: unknown algorithm \"rvb\"",
+                             "predictions[2].algorithm: missing required field",
+                             "predictions[2].orientation: quaternion has zero length",
+                             "predictions[2].time: time must be >= 0 (got -1)",
+                             "predictions[3].acceleration: expected 3 finite numbers",
+                             "predictions[3].angular_velocty: unknown key (did you mean \"angular_velocity\"?)",
+                             "predictions[4].algorithm: expected a string, got a number"}) {
+        EXPECT_NE(run.err.find(line), std::string::npos) << "missing: " << line << "\n" << run.err;
+    }
+}

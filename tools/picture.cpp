@@ -50,6 +50,7 @@ const char* methodName(const Prediction& p) {
     case Model::Orientation: return "orientation";
     case Model::Projectile: return p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped" : "exact";
     case Model::Vehicle: return p.vehicleIterative ? "iterative" : "exact";
+    case Model::DeadReckoning: return foresight::deadReckoningAlgorithmName(p.deadReckoning);
     }
     return "";
 }
@@ -62,6 +63,7 @@ const char* variantName(const Prediction& p) {
     case Model::Orientation: return "exact";
     case Model::Projectile: return p.projectile.method == foresight::ProjectileMethod::Stepped ? "faithful" : "exact";
     case Model::Vehicle: return p.vehicleIterative ? "faithful" : "exact";
+    case Model::DeadReckoning: return "exact";
     }
     return "exact";
 }
@@ -195,6 +197,8 @@ Json pictureDocument(const Scenario& scenario, const std::vector<PredictionResul
     for (std::size_t i = 0; i < scenario.predictions.size() && i < results.size(); ++i) {
         const Prediction& p = scenario.predictions[i];
         if (p.model == Model::Orientation) continue;  // nothing moves
+        // Geocentric network entities are not drawn (the viewer's format has no such model).
+        if (p.model == Model::DeadReckoning) continue;
         Json entry = Json::object();
         entry["id"] = p.id.is_null() ? Json(p.path) : p.id;
         entry["model"] = modelName(p.model);

@@ -44,6 +44,7 @@ const char* modelName(Model model) {
     case Model::Orientation: return "orientation";
     case Model::Projectile: return "projectile";
     case Model::Vehicle: return "vehicle";
+    case Model::DeadReckoning: return "dead_reckoning";
     }
     return "?";
 }
@@ -720,6 +721,27 @@ void readVehicle(Fields& f, Prediction& p) {
     }
 }
 
+/// The DIS models. `acceleration` and `angular_velocity` are required when the algorithm uses
+/// them and accepted (checked, then ignored) when it does not: a DIS entity state carries both.
+void readDeadReckoning(Fields& f, Prediction& p) {
+    std::string algorithm;
+    bool known = false;
+    if (f.string("algorithm", true, algorithm)) {
+        known = foresight::findDeadReckoningAlgorithm(algorithm, p.deadReckoning);
+        if (!known) {
+            f.diagnostics().error(f.at("algorithm"),
+                                  "unknown algorithm " + jsonQuoted(algorithm) +
+                                      " (expected STATIC, FPW, RPW, RVW, FVW, FPB, RPB, RVB or FVB)");
+        }
+    }
+    f.position("position", true, p.position);
+    f.vector("velocity", true, p.velocity);
+    f.vector("acceleration", known && foresight::deadReckoningUsesAcceleration(p.deadReckoning), p.acceleration);
+    f.quaternion("orientation", true, p.orientation);
+    f.vector("angular_velocity", known && foresight::deadReckoningRotates(p.deadReckoning), p.angularVelocity);
+    f.time("time", true, p.time);
+}
+
 void readPrediction(const Json& item, const std::string& path, Scenario& scenario, Diagnostics& d) {
     if (!expectObject(item, path, d, "{\"model\", ...}")) return;
     const std::size_t errorsBefore = d.errors.size();
@@ -746,11 +768,10 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
     } else if (model == "vehicle") {
         p.model = Model::Vehicle;
     } else if (model == "dead_reckoning") {
-        d.error(f.at("model"), "\"dead_reckoning\" is not supported yet");
-        return;
+        p.model = Model::DeadReckoning;
     } else {
         d.error(f.at("model"), "unknown model " + jsonQuoted(model) +
-                                   " (expected linear, accelerated, orientation, projectile or vehicle)");
+                                   " (expected linear, accelerated, orientation, projectile, vehicle or dead_reckoning)");
         return;
     }
 
@@ -770,6 +791,7 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
         break;
     case Model::Projectile: readProjectile(f, p, scenario.gravity); break;
     case Model::Vehicle: readVehicle(f, p); break;
+    case Model::DeadReckoning: readDeadReckoning(f, p); break;
     }
     f.finish();
     if (d.errors.size() == errorsBefore) scenario.predictions.push_back(std::move(p));
@@ -900,6 +922,22 @@ Status runPrediction(const Scenario& scenario, const Prediction& p, PredictionRe
         result.orientation = out.orientation;
         return Status::Ok;
     }
+    case Model::DeadReckoning: {
+        foresight::DeadReckoningState start;
+        start.algorithm = p.deadReckoning;
+        start.position = p.position;
+        start.velocity = p.velocity;
+        start.acceleration = p.acceleration;
+        start.orientation = p.orientation;
+        start.angularVelocity = p.angularVelocity;
+        foresight::DeadReckoningResult out;
+        const Status status = foresight::predictDeadReckoning(start, p.time, out);
+        if (status != Status::Ok) return status;
+        result.position = out.position;
+        result.velocity = out.velocity;
+        result.orientation = out.orientation;
+        return Status::Ok;
+    }
     }
     return Status::Ok;
 }
@@ -980,6 +1018,12 @@ Json resultJson(const Prediction& p, const PredictionResult& result) {
     case Model::Vehicle:
         out["method"] = p.vehicleIterative ? "iterative" : "exact";
         if (p.vehicleIterative) out["iterations"] = p.iterations;
+        out["position"] = jsonPosition(result.position);
+        out["velocity"] = jsonVector(result.velocity);
+        out["orientation"] = jsonQuaternion(result.orientation);
+        break;
+    case Model::DeadReckoning:
+        out["algorithm"] = foresight::deadReckoningAlgorithmName(p.deadReckoning);
         out["position"] = jsonPosition(result.position);
         out["velocity"] = jsonVector(result.velocity);
         out["orientation"] = jsonQuaternion(result.orientation);

@@ -32,7 +32,7 @@ struct Diagnostics {
 };
 
 /// The prediction models of the format.
-enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle };
+enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle, DeadReckoning };
 
 /// The model's name in the format ("linear", ...).
 const char* modelName(Model model);
@@ -44,12 +44,12 @@ struct Prediction {
     Model model = Model::Linear;
     float time = 0;   ///< [Units: s]
 
-    // linear, accelerated, projectile, vehicle
+    // linear, accelerated, projectile, vehicle, dead_reckoning
     foresight::RVec3 position{0};
     foresight::Vec3 velocity{0};
-    // accelerated
+    // accelerated, dead_reckoning
     foresight::Vec3 acceleration{0};
-    // orientation, vehicle
+    // orientation, vehicle, dead_reckoning
     foresight::Quat orientation = glm::identity<foresight::Quat>();
     foresight::Vec3 angularVelocity{0};
     foresight::AngularFrame frame = foresight::AngularFrame::Body;
@@ -59,6 +59,8 @@ struct Prediction {
     // vehicle
     bool vehicleIterative = false;
     int iterations = 4;
+    // dead_reckoning ("algorithm")
+    foresight::DeadReckoningAlgorithm deadReckoning = foresight::DeadReckoningAlgorithm::Fpw;
 };
 
 /// A validated scenario, ready to run.
