@@ -1422,3 +1422,119 @@ TEST_F(cli, DeadReckoningFieldsAreRequiredWhenTheAlgorithmUsesThem) {
         EXPECT_NE(run.err.find(line), std::string::npos) << "missing: " << line << "\n" << run.err;
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// danger: grenade danger zones and vehicles against characters (tools/README.md)
+
+namespace {
+
+// A free throw from (0, 1, 0) at (4, 6, 0) m/s, fuse 1 s: the centre is (4, 1 + 6 - g / 2, 0).
+// A car at 10 m/s towards a standing sphere (radius 0.5) 30 m ahead: its front (2.2 m) touches
+// it at (30 - 2.2 - 0.5) / 10 = 2.73 s.
+const std::string kDangerFile = R"({"predictions": [
+  {"id": "grenade", "model": "projectile", "position": [0, 1, 0], "velocity": [4, 6, 0], "time": 1,
+   "trajectory": false, "blast_radius": 3,
+   "points": [{"position": [5, 2, 0], "time": 1.5}, {"position": [5, 2, 0], "time": 0.5},
+              {"position": [20, 0, 0]}]},
+  {"id": "car", "model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
+   "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0], "time": 5,
+   "characters": [{"id": "guard", "position": [0, 0, 30], "velocity": [0, 0, 0], "radius": 0.5},
+                  {"position": [10, 0, 0], "velocity": [0, 0, 0], "radius": 0.5, "half_axis": [0, 0.5, 0]}]}
+]})";
+
+std::string dangerWith(const std::string& projectileExtra, const std::string& vehicleExtra = std::string(),
+                       const std::string& root = std::string()) {
+    return R"({)" + root + R"("predictions": [
+      {"model": "projectile", "position": [0, 1, 0], "velocity": [4, 6, 0], "time": 1)" + projectileExtra + R"(},
+      {"model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
+       "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0], "time": 5)" + vehicleExtra + "}]}";
+}
+
+} // namespace
+
+TEST_F(cli, DangerAnswersMatchTheClosedForms) {
+    const CliRun run = runCli({"danger", write("danger.json", kDangerFile).string()});
+    const Json output = parseOutput(run);
+    EXPECT_EQ(run.err, "");
+    EXPECT_EQ(output.at("tolerance"), 0.001);
+    const Json& grenade = byId(output, "grenade");
+    EXPECT_EQ(grenade.at("model"), "projectile");
+    const auto center = vec(grenade.at("danger_zone").at("center"));
+    EXPECT_NEAR(center[0], 4.0, 1e-9);
+    EXPECT_NEAR(center[1], 1.0 + 6.0 - 9.81 / 2.0, 1e-9);  // the exact predictor, in double
+    EXPECT_EQ(grenade["danger_zone"].at("radius"), 3);
+    EXPECT_EQ(grenade["danger_zone"].at("time"), 1);
+    ASSERT_EQ(grenade.at("points").size(), 3u);
+    const Json& inside = grenade["points"][0];
+    EXPECT_EQ(inside.at("danger_start"), 1);
+    EXPECT_EQ(inside.at("safe"), false);  // at 1.5 s, within 3 m of the centre
+    EXPECT_EQ(grenade["points"][1].at("safe"), true);  // before the fuse
+    const Json& far = grenade["points"][2];
+    EXPECT_TRUE(far.at("danger_start").is_null());
+    EXPECT_FALSE(far.contains("safe"));
+    // The path's closest approach to (20, 0, 0) over [0, 1]: the end, (4, 2.095, 0).
+    EXPECT_NEAR(far.at("closest_approach").at("distance").get<double>(), std::hypot(16.0, 1.0 + 6.0 - 9.81 / 2.0),
+                1e-5);  // float distance
+    EXPECT_EQ(far["closest_approach"].at("time"), 1);
+    EXPECT_FALSE(grenade.contains("trajectory"));
+    const Json& car = byId(output, "car");
+    ASSERT_EQ(car.at("characters").size(), 2u);
+    const Json& guard = car["characters"][0];
+    EXPECT_EQ(guard.at("id"), "guard");
+    EXPECT_EQ(guard.at("contact"), true);
+    const double contact = guard.at("contact_time").get<double>();
+    EXPECT_LE(contact, 2.73 + 1e-6);           // never later
+    EXPECT_GE(contact, 2.73 - 1e-4 - 1e-6);    // the tolerance (1 mm at 10 m/s)
+    EXPECT_NEAR(guard.at("closest_approach").at("distance").get<double>(), -0.5, 1e-5);
+    // A capsule 10 m to the side: never touched; closest 10 - 0.9 - 0.5 at t = 0 (constant).
+    const Json& side = car["characters"][1];
+    EXPECT_FALSE(side.contains("id"));
+    EXPECT_EQ(side.at("contact"), false);
+    EXPECT_FALSE(side.contains("contact_time"));
+    EXPECT_NEAR(side.at("closest_approach").at("distance").get<double>(), 8.6, 1e-5);
+    // Standard input, and the same bytes every run.
+    const CliRun again = runCli({"danger", "-"}, kDangerFile);
+    EXPECT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(again.out, run.out);
+}
+
+TEST_F(cli, DangerRefusesBadInputNamingThePath) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {dangerWith(""), "predictions[0].blast_radius: missing required field"},
+        {dangerWith(R"(, "blast_radius": -1)"), "predictions[0].blast_radius: a blast radius must be >= 0"},
+        {dangerWith(R"(, "blast_radius": 2, "contact_radius": "x")"), "predictions[0].contact_radius: expected a finite number"},
+        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0]}])"), "predictions[0].points[0].position: expected 3 finite numbers"},
+        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0, 0], "tme": 1}])"), "predictions[0].points[0].tme: unknown key"},
+        {dangerWith(R"(, "blast_radius": 2, "veloctiy": [0, 0, 0])"), "predictions[0].veloctiy: unknown key"},
+        {dangerWith(R"(, "blast_radius": 2)", R"(, "characters": [{"position": [0, 0, 9], "velocity": [0, 0, 0]}])"),
+         "predictions[1].characters[0].radius: missing required field"},
+        {dangerWith(R"(, "blast_radius": 2)", R"(, "characters": [{"position": [0, 0, 9], "velocity": [0, 0, 0], "radius": 1, "speed": 2}])"),
+         "predictions[1].characters[0].speed: unknown key"},
+        {dangerWith(R"(, "blast_radius": 2)", R"(, "half_extents": [1, 0, 1])"), "predictions[1].half_extents: "},
+        {dangerWith(R"(, "blast_radius": 2)", R"(, "method": "iterative")"), "predictions[1].method: foresight danger follows the exact path"},
+        {dangerWith(R"(, "blast_radius": 2)", "", R"("tolerance": 0, )"), "tolerance: expected a number > 0"},
+        {dangerWith(R"(, "blast_radius": 2, "time": -1)"), "predictions[0].time: "},
+        {R"({"predictions": [{"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1}]})",
+         "predictions[0].model: foresight danger takes projectile and vehicle predictions"},
+        {"[1, 2]", "(root): expected a JSON object"},
+        {"{", "invalid JSON"},
+    };
+    for (const auto& [input, expected] : cases) {
+        const CliRun run = runCli({"danger", write("danger.json", input).string()});
+        EXPECT_EQ(run.status, 2) << input << "\n" << run.err;
+        EXPECT_EQ(run.out, "");
+        EXPECT_NE(run.err.find(expected), std::string::npos) << "expected: " << expected << "\nstderr: " << run.err;
+        EXPECT_EQ(run.err.find("internal error"), std::string::npos) << run.err;
+    }
+    // All problems in one pass.
+    const CliRun run = runCli({"danger", write("danger.json", dangerWith(R"(, "blast_radius": -1)", R"(, "box_center": 1)")).string()});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("predictions[0].blast_radius"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("predictions[1].box_center"), std::string::npos) << run.err;
+    // Usage: the file is required; a missing file is named.
+    EXPECT_EQ(runCli({"danger"}).status, 2);
+    const CliRun missing = runCli({"danger", (mDir / "none.json").string()});
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_TRUE(missing.out.empty());
+    EXPECT_NE(missing.err.find("none.json: cannot read"), std::string::npos) << missing.err;
+}

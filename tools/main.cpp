@@ -2,6 +2,7 @@
 ///   foresight predict FILE|- [--html FILE] [--svg FILE]   scenario JSON in, result JSON out
 ///   foresight demo [--json FILE|-] [--scenario FILE|-] [--html FILE|--no-html] [--svg FILE]
 ///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
+///   foresight danger FILE|-        danger for AI: grenade danger zones, vehicles against characters
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
 ///   foresight aim FILE|-           firing solutions (aim-format.md): JSON shots in, JSON solutions out
@@ -11,6 +12,7 @@
 #include "accuracy.h"
 #include "aim.h"
 #include "compare.h"
+#include "danger.h"
 #include "demo.h"
 #include "picture.h"
 #include "plan.h"
@@ -97,6 +99,13 @@ int run(int argc, char** argv) {
         "plan", "Find launch velocities that put a grenade near a target when its fuse runs out (JSON in and out)");
     plan->add_option("FILE", planFile, "plan document, or - for standard input")->required()->type_name("FILE");
 
+    std::string dangerFile;
+    CLI::App* danger = app.add_subcommand(
+        "danger", "Danger for AI: grenade danger zones and safe points, vehicles against characters (JSON in and out)");
+    danger->add_option("FILE", dangerFile, "danger file (a scenario with danger keys), or - for standard input")
+        ->required()
+        ->type_name("FILE");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -116,6 +125,7 @@ int run(int argc, char** argv) {
     if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
+    if (danger->parsed()) return foresight_cli::dangerCommand(dangerFile);
     if (aim->parsed()) return foresight_cli::aimCommand(aimFile);
     if (plan->parsed()) return foresight_cli::planCommand(planFile);
     return 2;

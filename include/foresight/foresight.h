@@ -5,6 +5,7 @@
 #include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/config.h>
+#include <foresight/danger.h>
 #include <foresight/dead_reckoning.h>
 #include <foresight/orientation.h>
 #include <foresight/projectile.h>
