@@ -25,6 +25,11 @@ const char* statusMessage(Status status) {
     case Status::TooManyEvents: return "too many bounces and contact changes (over the work cap)";
     case Status::NonFiniteResult: return "result is not finite (inputs too large)";
     case Status::InvalidAlgorithm: return "unknown dead-reckoning algorithm";
+    case Status::InvalidSpeed: return "speed must be > 0 and finite";
+    case Status::InvalidFuse: return "fuse time must be > 0 and finite";
+    case Status::InvalidSetting: return "a settings value is outside its documented range";
+    case Status::TimeWentBackwards: return "time is earlier than the previous call's";
+    case Status::NoUpdate: return "no update has been accepted yet";
     }
     return "unknown status";
 }

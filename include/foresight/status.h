@@ -24,6 +24,11 @@ enum class Status : std::uint8_t {
     TooManyEvents,      ///< The prediction hit its cap on bounces and contact changes.
     NonFiniteResult,    ///< The inputs are valid but so large that the result overflows.
     InvalidAlgorithm,   ///< A dead-reckoning algorithm outside the DIS enumeration (1 to 9).
+    InvalidSpeed,       ///< A projectile speed (or speed cap) is zero, negative or not finite.
+    InvalidFuse,        ///< A fuse time is zero, negative or not finite.
+    InvalidSetting,     ///< A settings field is outside its documented range.
+    TimeWentBackwards,  ///< A time is earlier than the one given to the previous call.
+    NoUpdate,           ///< A receiver was asked for a pose before it accepted any update.
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never null.

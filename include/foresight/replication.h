@@ -1,0 +1,250 @@
+#pragma once
+/// @file replication.h
+/// Network replication with dead reckoning: the sender that decides when an entity must send a
+/// state update, and the receiver that turns the updates it gets into a smooth rendered pose.
+///
+/// Time: every time here is a `double` [Units: s] on one clock shared by sender and receiver
+/// (DIS absolute timestamps, or a game's synchronised network clock). Updates carry the
+/// sender's timestamp and the receiver extrapolates from it, never from the time of receipt,
+/// so latency does not add error to the extrapolation itself. Doubles keep a 1 ms resolution
+/// for 285 years of session time; floats would lose it after 2.3 hours.
+///
+/// Both classes hold fixed-size state only: no call allocates, none throws, and the same calls
+/// in the same order give bit-identical results.
+
+#include <foresight/dead_reckoning.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+FORESIGHT_NAMESPACE_BEGIN
+
+// ---------------------------------------------------------------------------------------------
+// Sender
+// ---------------------------------------------------------------------------------------------
+
+/// When an entity must send an update. Defaults are the DIS defaults (IEEE 1278.1 thresholds:
+/// 1 m, 3 degrees; heartbeat 5 s).
+struct SenderSettings {
+    /// [Units: m] [Limit: > 0, finite] send when the receivers' extrapolated position is this
+    /// far from the true position.
+    float positionThreshold = 1.0f;
+    /// [Units: rad] [Limit: > 0, finite] send when the extrapolated orientation is this far
+    /// from the true one, measured as the angle of the rotation between them (0 to pi).
+    float orientationThreshold = 0.05235987755982988f; // 3 degrees
+    /// [Units: s] [Limit: > 0, finite] send at least this often, even when nothing changed.
+    float heartbeat = 5.0f;
+};
+
+/// Checks every field of `settings` against its documented range.
+/// @return Ok or InvalidSetting.
+Status validateSenderSettings(const SenderSettings& settings);
+
+/// Why an update was sent: a bit set (several reasons can hold at once).
+enum SendReason : std::uint8_t {
+    SendReasonNone = 0,         ///< no update is needed.
+    SendReasonFirst = 1,        ///< the first update of the entity.
+    SendReasonPosition = 2,     ///< the position error reached positionThreshold.
+    SendReasonOrientation = 4,  ///< the orientation error reached orientationThreshold.
+    SendReasonHeartbeat = 8,    ///< heartbeat seconds passed since the last update.
+    SendReasonAlgorithm = 16,   ///< the entity's dead-reckoning algorithm changed.
+};
+
+/// What DeadReckoningSender::update decided.
+struct SendDecision {
+    std::uint8_t reasons = SendReasonNone; ///< SendReason bits; non-zero means "send now".
+    /// [Units: m] distance between the receivers' extrapolation and the truth, before sending.
+    float positionError = 0.0f;
+    /// [Units: rad] rotation angle between the extrapolated and the true orientation (0 to pi).
+    float orientationError = 0.0f;
+    /// True when an update must be sent now (`reasons != SendReasonNone`).
+    bool send() const { return reasons != SendReasonNone; }
+};
+
+/// Decides, tick by tick, when one entity must send a state update: it extrapolates its last
+/// sent update exactly as every receiver does and compares that with the entity's true state.
+class DeadReckoningSender {
+public:
+    /// A sender with `settings` (checked by the first update).
+    explicit DeadReckoningSender(const SenderSettings& settings = {});
+
+    /// Compares the truth at `time` with what receivers extrapolate from the last sent update.
+    /// When `decision.send()` is true the caller sends `truth` stamped with `time`, and the
+    /// sender records it as the last sent update.
+    /// @param time   [Units: s] [Limit: finite, >= the previous call's time].
+    /// @param truth  the entity's true state now, with the algorithm receivers should use.
+    /// @return Ok, InvalidSetting, TimeWentBackwards, or validateDeadReckoningState's refusals;
+    ///         on a refusal nothing changes and `decision` is untouched.
+    Status update(double time, const DeadReckoningState& truth, SendDecision& decision);
+
+    /// True once an update has been sent.
+    bool hasSent() const { return m_hasSent; }
+    /// The last update sent (meaningful once hasSent()).
+    const DeadReckoningState& lastSent() const { return m_lastSent; }
+    /// [Units: s] the timestamp of the last update sent (meaningful once hasSent()).
+    double lastSentTime() const { return m_lastSentTime; }
+    /// The settings in use.
+    const SenderSettings& settings() const { return m_settings; }
+    /// Forgets every update: the next update() sends with SendReasonFirst.
+    void reset();
+
+private:
+    SenderSettings m_settings;
+    DeadReckoningState m_lastSent{};
+    double m_lastSentTime = 0.0;
+    double m_lastTime = 0.0;
+    bool m_hasSent = false;
+    bool m_hasTime = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Receiver
+// ---------------------------------------------------------------------------------------------
+
+/// How the receiver hides the jump when a new update disagrees with what it was showing.
+enum class Smoothing : std::uint8_t {
+    /// Show the new update's extrapolation at once (a visible jump at every correction).
+    Snap,
+    /// Blend from the old update's extrapolation to the new one's, linearly over blendTime
+    /// (position lerp, orientation slerp).
+    LinearBlend,
+    /// Projective velocity blending (C. Murphy, "Believable Dead Reckoning for Networked
+    /// Games", Game Engine Gems 2, 2011): project from the shown position with a velocity
+    /// blended from the shown one to the new one, then blend that projection towards the new
+    /// update's extrapolation over blendTime.
+    ProjectiveVelocityBlending,
+    /// Keep the shown-minus-new offset at the moment of the update and let it decay
+    /// exponentially with half-life decayHalfLife (position and rotation angle).
+    ExponentialDecay,
+};
+
+/// Extrapolate from the newest update, or interpolate between buffered updates in the past.
+enum class ReceiverMode : std::uint8_t {
+    /// Show the newest update extrapolated to now (dead reckoning), with smoothing.
+    Extrapolate,
+    /// Show the entity interpolationDelay seconds in the past, between the two buffered
+    /// updates around that time (Source's entity interpolation); extrapolate from the newest
+    /// update, up to extrapolationLimit, when the buffer runs dry.
+    Interpolate,
+};
+
+/// How a receiver shows a remote entity.
+struct ReceiverSettings {
+    ReceiverMode mode = ReceiverMode::Extrapolate;               ///< extrapolate or interpolate.
+    Smoothing smoothing = Smoothing::ProjectiveVelocityBlending; ///< Extrapolate mode only.
+    /// [Units: s] [Limit: > 0, finite] duration of LinearBlend and ProjectiveVelocityBlending.
+    float blendTime = 0.2f;
+    /// [Units: s] [Limit: > 0, finite] half-life of the ExponentialDecay offset.
+    float decayHalfLife = 0.1f;
+    /// [Units: m] [Limit: > 0; infinity disables] a correction longer than this snaps (a
+    /// teleport, a respawn): blending across it would sweep the entity through the level.
+    float teleportDistance = 10.0f;
+    /// [Units: s] [Limit: >= 0; infinity disables] extrapolate at most this far past the
+    /// newest update's timestamp, then hold there (Source's cl_extrapolate_amount, 0.25 s).
+    float extrapolationLimit = 0.25f;
+    /// [Units: s] [Limit: > 0, finite] how far in the past Interpolate mode renders (Source's
+    /// cl_interp, 0.1 s).
+    float interpolationDelay = 0.1f;
+};
+
+/// Checks every field of `settings` against its documented range.
+/// @return Ok or InvalidSetting.
+Status validateReceiverSettings(const ReceiverSettings& settings);
+
+/// What DeadReckoningReceiver::receive did with an update.
+enum class UpdateOutcome : std::uint8_t {
+    Accepted,     ///< applied, smoothed per the settings.
+    Snapped,      ///< applied with a snap: the first update, Snap smoothing, or a teleport.
+    Buffered,     ///< Interpolate mode: a late update stored in order (still in the future of
+                  ///< the render time), or any update stored before it is shown.
+    OutOfOrder,   ///< dropped: older than the newest update (Extrapolate mode), or older than
+                  ///< the render time (Interpolate mode).
+    Duplicate,    ///< dropped: same timestamp as an update already received.
+    Invalid,      ///< dropped: NaN or infinite fields, zero quaternion, unknown algorithm, or a
+                  ///< non-finite timestamp.
+};
+
+/// Counts of what a receiver did, for statistics and tests.
+struct ReceiverCounters {
+    std::uint64_t accepted = 0;    ///< updates applied or buffered (Accepted, Snapped, Buffered).
+    std::uint64_t snaps = 0;       ///< updates that snapped (first, Snap smoothing, teleports).
+    std::uint64_t teleports = 0;   ///< snaps caused by teleportDistance.
+    std::uint64_t outOfOrder = 0;  ///< OutOfOrder updates dropped.
+    std::uint64_t duplicates = 0;  ///< Duplicate updates dropped.
+    std::uint64_t invalid = 0;     ///< Invalid updates dropped.
+    std::uint64_t held = 0;        ///< sample() calls that hit extrapolationLimit and held.
+    std::uint64_t futureUpdates = 0; ///< updates stamped later than the receive time (treated
+                                     ///< as age 0 until their timestamp: never extrapolated
+                                     ///< backwards).
+};
+
+/// The pose a receiver shows at a time, in world axes.
+struct ReceivedPose {
+    RVec3 position{0};                        ///< [Units: m], world axes.
+    Vec3 velocity{0};                         ///< [Units: m/s], world axes (converted for `*B`).
+    Quat orientation = glm::identity<Quat>(); ///< body-to-world, unit.
+    bool held = false; ///< true when extrapolationLimit stopped the extrapolation.
+};
+
+/// Shows one remote entity from the updates it receives.
+class DeadReckoningReceiver {
+public:
+    /// Updates kept for Interpolate mode (the newest ones; older ones are forgotten).
+    static constexpr std::size_t kBufferCapacity = 32;
+
+    /// A receiver with `settings` (checked by the first call).
+    explicit DeadReckoningReceiver(const ReceiverSettings& settings = {});
+
+    /// Takes an update stamped `timestamp` (sender clock) that arrives at `receiveTime`.
+    /// Bad or stale updates are dropped and counted, never applied (see UpdateOutcome).
+    /// @param receiveTime [Units: s] the receiver's time now; the correction starts here.
+    UpdateOutcome receive(double timestamp, const DeadReckoningState& state, double receiveTime);
+
+    /// The pose to show at `time` [Units: s]. Times may go backwards (a replay); smoothing
+    /// then clamps to its start.
+    /// @return Ok; InvalidSetting; NoUpdate before the first accepted update;
+    ///         NonFiniteInput for a NaN or infinite time; `out` untouched unless Ok.
+    Status sample(double time, ReceivedPose& out);
+
+    /// The counters since construction or the last reset().
+    const ReceiverCounters& counters() const { return m_counters; }
+    /// The settings in use.
+    const ReceiverSettings& settings() const { return m_settings; }
+    /// Forgets every update and counter.
+    void reset();
+
+private:
+    struct Snapshot {
+        double timestamp = 0.0;
+        DeadReckoningState state{};
+    };
+    ReceiverSettings m_settings;
+    ReceiverCounters m_counters;
+    std::array<Snapshot, kBufferCapacity> m_buffer{}; // ring, ordered by timestamp
+    std::size_t m_bufferStart = 0;
+    std::size_t m_bufferCount = 0;
+    // Extrapolate mode: the update being shown and the correction in progress.
+    Snapshot m_current{};
+    ReceivedPose m_shownAtCorrection{}; // what was shown when the correction started
+    Snapshot m_previous{};              // the update shown before m_current (LinearBlend)
+    double m_correctionStart = 0.0;
+    bool m_hasCurrent = false;
+    bool m_correcting = false;
+};
+
+/// Extrapolates many entities to one time, as a receiver does every frame (the batch form of
+/// predictDeadReckoning, no smoothing). Entities that predictDeadReckoning refuses keep their
+/// state and are counted.
+/// @param states      updates, one per entity.
+/// @param timestamps  [Units: s] each update's timestamp, same length as `states`.
+/// @param time        [Units: s] the time to extrapolate to; an entity stamped later is shown
+///                    at its update (age 0).
+/// @param out         receives one result per entity; same length as `states`.
+/// @return the number of entities refused (their `out` is their update as given).
+std::size_t predictDeadReckoningBatch(std::span<const DeadReckoningState> states,
+                                      std::span<const double> timestamps, double time,
+                                      std::span<DeadReckoningResult> out);
+
+FORESIGHT_NAMESPACE_END
