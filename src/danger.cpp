@@ -434,7 +434,7 @@ Status validateProjectileDanger(const ProjectileDanger& danger) {
     if (const Status s = checkTrajectory(danger.trajectory); s != Status::Ok) return s;
     if (!isFinite(danger.fuseTime) || !isFinite(danger.blastRadius) || !isFinite(danger.contactRadius))
         return Status::NonFiniteInput;
-    if (danger.fuseTime < 0.0f) return Status::NegativeTime;
+    if (danger.fuseTime < 0.0f) return Status::InvalidFuse;
     if (danger.blastRadius < 0.0f || danger.contactRadius < 0.0f) return Status::InvalidRadius;
     return Status::Ok;
 }

@@ -451,11 +451,11 @@ Status validateThrowPlanRequest(const ThrowPlanRequest& request) {
         !std::isfinite(request.distinctAngle))
         return Status::NonFiniteInput;
     if (Status s = validateProjectileSettings(request.settings); s != Status::Ok) return s;
-    if (!(request.fuseTime > 0.0f)) return Status::NegativeTime;
+    if (!(request.fuseTime > 0.0f)) return Status::InvalidFuse;
     if (!(request.acceptanceRadius > 0.0f)) return Status::InvalidRadius;
     if (!(request.maxSpeed > 0.0f) || !(request.minSpeed >= 0.0f) ||
         !(request.minSpeed <= request.maxSpeed))
-        return Status::ZeroVector;
+        return Status::InvalidSpeed;
     const ThrowPlanBudget& b = request.budget;
     if (request.maxPlans == 0 || b.azimuthSamples == 0 || b.elevationSamples == 0 ||
         b.speedSamples == 0 || b.refinements == 0 || b.refinements > kMaxThrowPlanRefinements ||

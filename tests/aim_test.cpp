@@ -2,8 +2,10 @@
 // the closed-form parabola in double, and must meet the target within 1e-3 m at its time.
 // References: the range formula R = v^2 sin(2 theta) / g, the straight-line intercept of a
 // crossing target, sqrt(2 h / g), and a brute-force time scan of |d(t)| - s t on random problems.
-// Built into foresight_tests (float positions) and foresight_double_tests (double positions).
+// Built into foresight_aim_tests (float positions) and foresight_aim_double_tests (double
+// positions); each binary counts heap allocations (counting_allocator.h).
 
+#include "counting_allocator.h"
 #include "test_util.h"
 
 #include <algorithm>
@@ -451,6 +453,43 @@ TEST(Aim, RefusalsLeaveTheOutputUntouched) {
 }
 
 // Finite but absurd input: a velocity beyond the float range is NonFiniteResult, not inf.
+// aimProjectile is a per-frame call: every constraint, moving and static targets, no heap use.
+TEST(Aim, DoesNotAllocate) {
+    std::array<FiringSolution, foresight::kMaxFiringSolutions> storage{};
+    std::size_t total = 0;
+    std::size_t calls = 0;
+    long allocations = 0;
+    for (const AimConstraint constraint : {AimConstraint::Speed, AimConstraint::HorizontalSpeed,
+                                           AimConstraint::ApexAboveStart, AimConstraint::ApexAboveTarget}) {
+        for (const float gravity : {0.0f, -9.81f}) {
+            if (gravity == 0.0f && (constraint == AimConstraint::ApexAboveStart ||
+                                    constraint == AimConstraint::ApexAboveTarget))
+                continue; // an apex needs gravity (refused: ZeroVector)
+            AimShot shot;
+            shot.from = ftest::toR(DVec3(0, 1.5, 0));
+            shot.constraint = constraint;
+            shot.speed = 30.0f;
+            shot.apexHeight = 4.0f;
+            shot.gravity = Vec3(0.0f, gravity, 0.0f);
+            shot.maxTime = 10.0f;
+            AimTarget target;
+            target.position = ftest::toR(DVec3(20, 0, 15));
+            target.velocity = Vec3(-3.0f, 0.0f, 2.0f);
+            target.acceleration = Vec3(0.5f, 0.0f, -1.0f);
+            std::size_t count = 0;
+            const long before = ftest::gAllocations.load();
+            const Status status = foresight::aimProjectile(shot, target, storage, count);
+            allocations += ftest::gAllocations.load() - before;
+            ASSERT_EQ(status, Status::Ok);
+            total += count;
+            ++calls;
+        }
+    }
+    EXPECT_EQ(calls, 6u);
+    EXPECT_GE(total, calls); // every shot has a solution: the solvers ran to the end
+    EXPECT_EQ(allocations, 0);
+}
+
 TEST(Aim, OverflowIsNonFiniteResult) {
     AimShot shot = shotAt(1.0f);
     shot.constraint = AimConstraint::HorizontalSpeed;

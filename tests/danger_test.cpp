@@ -661,7 +661,7 @@ TEST(DangerProjectile, RefusesBadInput) {
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.fuseTime = kNaN; }), Status::NonFiniteInput);
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.blastRadius = INFINITY; }), Status::NonFiniteInput);
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.contactRadius = kNaN; }), Status::NonFiniteInput);
-    EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.fuseTime = -1.0f; }), Status::NegativeTime);
+    EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.fuseTime = -1.0f; }), Status::InvalidFuse);
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.blastRadius = -1.0f; }), Status::InvalidRadius);
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.contactRadius = -1.0f; }), Status::InvalidRadius);
     EXPECT_EQ(zoneStatus([](ProjectileDanger& d) { d.trajectory = {}; }), Status::InvalidStep);

@@ -101,7 +101,7 @@ struct ClosestApproach {
 /// when a time, position or velocity is not finite.
 Status validateTrajectory(std::span<const TrajectoryPoint> trajectory);
 
-/// Checks a projectile danger: validateTrajectory, then NonFiniteInput, NegativeTime (fuse time
+/// Checks a projectile danger: validateTrajectory, then NonFiniteInput, InvalidFuse (fuse time
 /// < 0) or InvalidRadius (a negative radius).
 Status validateProjectileDanger(const ProjectileDanger& danger);
 

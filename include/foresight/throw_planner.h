@@ -97,9 +97,9 @@ struct ThrowPlanResult {
     Vec3 closestVelocity{0};          ///< the launch velocity of that throw [Units: m/s].
 };
 
-/// Checks a request as planThrow does: Ok, NonFiniteInput (any NaN or infinity), NegativeTime
+/// Checks a request as planThrow does: Ok, NonFiniteInput (any NaN or infinity), InvalidFuse
 /// (fuseTime <= 0: a zero fuse is refused too), InvalidRadius (acceptanceRadius <= 0),
-/// ZeroVector (maxSpeed <= 0, or minSpeed outside [0, maxSpeed]: no launch velocity exists),
+/// InvalidSpeed (maxSpeed <= 0, or minSpeed outside [0, maxSpeed]: no launch velocity exists),
 /// InvalidIterations (maxPlans or a budget count is 0, or refinements over
 /// kMaxThrowPlanRefinements),
 /// what validateProjectileSettings returns for the settings, or TooManySteps (fuseTime / step
