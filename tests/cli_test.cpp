@@ -787,6 +787,44 @@ TEST_F(cli, DemoHasTheCourtyardGrenade) {
     EXPECT_NE(table.out.find("courtyard"), std::string::npos) << table.out;
 }
 
+// The demo shows one answer of each AI use: a firing solution, a planned throw, danger.
+TEST_F(cli, DemoShowsTheAiUses) {
+    const CliRun table = runCli({"demo", "--no-html"});
+    ASSERT_EQ(table.status, 0) << table.err;
+    for (const char* text : {"AI uses", "aim ", "2 solutions", "plan ", "danger ", "unsafe from 4.00 s", "safe (",
+                             "touches the pedestrian"})
+        EXPECT_NE(table.out.find(text), std::string::npos) << text << "\n" << table.out;
+    const Json output = parseOutput(runCli({"demo", "--json", "-"}));
+    // The turret's shot, flown by the exact predictor, meets the accelerating runner at chest
+    // height: (0, 1, 0) + (3, 0, 4) t + (0, 0, 1) t^2 at the shot's time (1e-3 m: the aim
+    // contract's hit tolerance).
+    const Json& shot = byId(output, "aim_shot");
+    const double t = shot.at("trajectory").back().at("t").get<double>();
+    const Json scenario = Json::parse(runCli({"demo", "--scenario", "-"}).out);
+    for (const auto& prediction : scenario.at("predictions"))
+        if (prediction.at("id") == "aim_target" || prediction.at("id") == "aim_shot") {
+            EXPECT_EQ(prediction.at("time").get<double>(), t) << prediction.at("id");
+        }
+    const auto hit = vec(shot.at("position"));
+    const auto runner = vec(byId(output, "aim_target").at("position"));
+    EXPECT_NEAR(hit[0], runner[0], 1e-3);
+    EXPECT_NEAR(hit[1], runner[1], 1e-3);
+    EXPECT_NEAR(hit[2], runner[2], 1e-3);
+    EXPECT_NEAR(hit[0], 3.0 * t, 1e-3);
+    EXPECT_NEAR(hit[1], 1.0, 1e-3);
+    EXPECT_NEAR(hit[2], 4.0 * t + t * t, 1e-3);
+    EXPECT_EQ(shot.at("bounces"), 0);  // nothing in the way
+    const auto speed = vec(byId(output, "aim_shot").at("trajectory")[0].at("velocity"));
+    EXPECT_NEAR(std::sqrt(speed[0] * speed[0] + speed[1] * speed[1] + speed[2] * speed[2]), 20.0, 1e-5);
+    // The planned throw ends within its 1 m acceptance radius of the platform's corner at 4 s.
+    const Json& thrown = byId(output, "planned_throw");
+    const auto end = vec(thrown.at("position"));
+    EXPECT_LE(std::hypot(end[0] + 14.4, end[1] - 1.875, end[2] - 14.4), 1.0);
+    EXPECT_GE(thrown.at("bounces").get<int>(), 1);
+    // The pedestrian is drawn beside the car.
+    EXPECT_EQ(byId(output, "pedestrian").at("model"), "linear");
+}
+
 TEST_F(cli, DemoWritesFiles) {
     const fs::path json = mDir / "demo.json";
     const fs::path scenario = mDir / "scenario.json";
@@ -1068,9 +1106,15 @@ TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
         ASSERT_FALSE(prediction.at("path").empty()) << prediction.at("id");
         for (const auto& point : prediction["path"]) bounces += point.at("event") == "bounce" ? 1 : 0;
     }
-    EXPECT_EQ(document["predictions"].size(), 8u);
+    EXPECT_EQ(document["predictions"].size(), 12u);  // the article's 8, the AI's 4
     EXPECT_GT(bounces, 5u);
     EXPECT_EQ(document.at("world").at("meshes").size(), 1u);  // the demo level
+    // The planned grenade's blast (5 m) where the throw ends at its fuse.
+    ASSERT_EQ(document.at("danger_zones").size(), 1u);
+    const Json& zone = document["danger_zones"][0];
+    EXPECT_EQ(zone.at("id"), "planned_throw");
+    EXPECT_EQ(zone.at("radius"), 5);
+    EXPECT_EQ(zone.at("time"), 4);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1496,6 +1540,40 @@ TEST_F(cli, DangerAnswersMatchTheClosedForms) {
     const CliRun again = runCli({"danger", "-"}, kDangerFile);
     EXPECT_EQ(again.status, 0) << again.err;
     EXPECT_EQ(again.out, run.out);
+}
+
+TEST_F(cli, DangerPicturesDrawTheDangerZones) {
+    const fs::path svg = mDir / "danger.svg";
+    const fs::path html = mDir / "danger.html";
+    const fs::path input = write("danger.json", kDangerFile);
+    const CliRun plain = runCli({"danger", input.string()});
+    const CliRun run = runCli({"danger", input.string(), "--svg", svg.string(), "--html", html.string()});
+    if (run.status == 2 && run.err.find("viewer was not built") != std::string::npos) {
+        GTEST_SKIP() << "the viewer is not built in this configuration";
+    }
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(run.out, plain.out);  // pictures change nothing in the answers
+    // The SVG: the blast sphere (radius 3 m) as a dashed red circle in each view, and its legend.
+    const std::string text = readFile(svg);
+    std::size_t circles = 0;
+    for (std::size_t at = text.find("stroke-dasharray=\"4 3\""); at != std::string::npos;
+         at = text.find("stroke-dasharray=\"4 3\"", at + 1))
+        ++circles;
+    EXPECT_EQ(circles, 3u) << "two views and the legend";
+    EXPECT_NE(text.find("danger zone (blast)"), std::string::npos);
+    // The page holds the zone as docs/viewer-format.md describes it: centre (4, 1 + 6 - g/2, 0).
+    const Json document = embeddedDocument(readFile(html));
+    ASSERT_EQ(document.at("danger_zones").size(), 1u);
+    const Json& zone = document["danger_zones"][0];
+    EXPECT_EQ(zone.at("id"), "grenade");
+    EXPECT_EQ(zone.at("radius"), 3);
+    EXPECT_EQ(zone.at("time"), 1);
+    EXPECT_NEAR(zone.at("center")[1].get<double>(), 1.0 + 6.0 - 9.81 / 2.0, 1e-9);
+    // An unwritable picture: status 2, named, nothing on standard output.
+    const CliRun bad = runCli({"danger", input.string(), "--svg", (mDir / "no" / "dir" / "x.svg").string()});
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_NE(bad.err.find("x.svg"), std::string::npos) << bad.err;
 }
 
 TEST_F(cli, DangerRefusesBadInputNamingThePath) {

@@ -268,8 +268,10 @@ bool buildDangerInput(const Json& document, const std::filesystem::path& baseDir
     return scenarioOk && diagnostics.ok();
 }
 
-bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics) {
-    std::vector<PredictionResult> results;
+bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
+               std::vector<PredictionResult>* kept) {
+    std::vector<PredictionResult> own;
+    std::vector<PredictionResult>& results = kept ? *kept : own;
     if (!runScenario(input.scenario, results, diagnostics)) return false;
     Json predictions = Json::array();
     for (std::size_t i = 0; i < input.scenario.predictions.size(); ++i) {
@@ -384,7 +386,11 @@ Json dangerZonesJson(const DangerInput& input, const std::vector<PredictionResul
     return zones;
 }
 
-int dangerCommand(const std::string& file) {
+int dangerCommand(const std::string& file, const PictureOptions& pictures) {
+    if (!pictures.htmlFile.empty() && !viewerAvailable()) {
+        std::cerr << "foresight danger: --html: " << viewerUnavailableReason() << '\n';
+        return 2;
+    }
     Diagnostics diagnostics;
     const std::string name = file == "-" ? std::string("<stdin>") : file;
     std::string text;
@@ -398,11 +404,21 @@ int dangerCommand(const std::string& file) {
     Json output;
     const std::filesystem::path baseDirectory =
         file == "-" ? std::filesystem::path() : std::filesystem::path(file).parent_path();
+    std::vector<PredictionResult> results;
     const bool ok = parseJsonText(text, name, document, diagnostics) &&
                     buildDangerInput(document, baseDirectory, input, diagnostics) &&
-                    runDanger(input, output, diagnostics);
+                    runDanger(input, output, diagnostics, &results);
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
+    if (pictures.wanted()) {
+        Json picture = pictureDocument(input.scenario, results, "foresight danger: " + name);
+        picture["danger_zones"] = dangerZonesJson(input, results);
+        std::string error;
+        if (!writePictures(pictures, picture, "foresight danger: " + name, error)) {
+            std::cerr << error << '\n';
+            return 2;
+        }
+    }
     if (!writeTextFile("-", formatJson(output), reason)) {
         std::cerr << "foresight: cannot write the result: " << reason << '\n';
         return 1;

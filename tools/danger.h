@@ -10,6 +10,7 @@
 /// (projectiles), or per character its first contact and closest approach (vehicles).
 
 #include "json_output.h"
+#include "picture.h"
 #include "scenario.h"
 
 #include <foresight/danger.h>
@@ -50,8 +51,10 @@ struct DangerInput {
 bool buildDangerInput(const Json& document, const std::filesystem::path& baseDirectory, DangerInput& input,
                       Diagnostics& diagnostics);
 
-/// Runs the predictions and the danger queries; the output document, or errors.
-bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics);
+/// Runs the predictions and the danger queries; the output document, or errors. With
+/// `results`, the predictions' results are kept there (for pictures).
+bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
+               std::vector<PredictionResult>* results = nullptr);
 
 /// The picture document's `danger_zones` (docs/viewer-format.md) of the projectiles of `input`,
 /// from `results` (runScenario on input.scenario, which records every trajectory): one
@@ -60,7 +63,8 @@ bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics)
 Json dangerZonesJson(const DangerInput& input, const std::vector<PredictionResult>& results);
 
 /// `foresight danger FILE` ("-": standard input). Returns the exit status: 0, or 2 with nothing
-/// on standard output (problems on standard error, `path: message`).
-int dangerCommand(const std::string& file);
+/// on standard output (problems on standard error, `path: message`). With `pictures`, also
+/// writes the viewer page and/or the SVG of the predictions with their danger zones.
+int dangerCommand(const std::string& file, const PictureOptions& pictures = {});
 
 } // namespace foresight_cli

@@ -2,8 +2,9 @@
 /// @file demo.h
 /// `foresight demo`: the reference article's three scenarios (a running character, a bouncing
 /// grenade, a turning car) and a grenade thrown across the demo level (demo_level.h), each
-/// predicted the article's way ("faithful") and exactly; and `foresight level`, which writes
-/// the demo level's files.
+/// predicted the article's way ("faithful") and exactly; one answer of each AI use (a firing
+/// solution, a planned throw, danger: tools/README.md), computed when it runs; and
+/// `foresight level`, which writes the demo level's files.
 
 #include "json_output.h"
 #include "picture.h"
@@ -19,7 +20,8 @@ inline constexpr const char* kDemoLevelFile = "demo_level.obj";
 
 /// The demo's input, in the scenario format (`foresight demo --scenario FILE` writes it;
 /// tests/data/demo_scenario.json is a copy). Its world includes the demo level as the mesh
-/// kDemoLevelFile.
+/// kDemoLevelFile. Its last four predictions come from the AI answers (aim_target, aim_shot,
+/// planned_throw, pedestrian), computed here. An empty object if that fails (never expected).
 Json demoScenario();
 
 /// Runs the demo: prints the comparison table to standard output, and writes the full result

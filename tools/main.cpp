@@ -2,11 +2,14 @@
 ///   foresight predict FILE|- [--html FILE] [--svg FILE]   scenario JSON in, result JSON out
 ///   foresight demo [--json FILE|-] [--scenario FILE|-] [--html FILE|--no-html] [--svg FILE]
 ///   foresight compare FILE|--builtin   the predictions against a Bullet rigid body (ground truth)
-///   foresight danger FILE|-        danger for AI: grenade danger zones, vehicles against characters
+///   foresight danger FILE|- [--html FILE] [--svg FILE]
+///                                  danger for AI: grenade danger zones, vehicles against characters
 ///   foresight accuracy             the article against the exact methods (Markdown tables)
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
 ///   foresight aim FILE|-           firing solutions (aim-format.md): JSON shots in, JSON solutions out
 ///   foresight plan FILE|-          throw planning: launch velocities that reach a target at the fuse
+///   foresight netsim [--trajectory NAME] [--csv FILE] [--json|--markdown] [--svg FILE] ...
+///                                  dead reckoning through a simulated link: errors, updates, jumps
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
@@ -14,6 +17,7 @@
 #include "compare.h"
 #include "danger.h"
 #include "demo.h"
+#include "netsim.h"
 #include "picture.h"
 #include "plan.h"
 #include "scenario.h"
@@ -105,6 +109,14 @@ int run(int argc, char** argv) {
     danger->add_option("FILE", dangerFile, "danger file (a scenario with danger keys), or - for standard input")
         ->required()
         ->type_name("FILE");
+    foresight_cli::PictureOptions dangerPictures;
+    danger->add_option("--html", dangerPictures.htmlFile, "also write an interactive 3D view with the danger zones to FILE")
+        ->type_name("FILE");
+    danger->add_option("--svg", dangerPictures.svgFile, "also write a top and a side view (SVG) with the danger zones to FILE")
+        ->type_name("FILE");
+
+    foresight_cli::NetsimOptions netsimOptions;
+    CLI::App* netsim = foresight_cli::addNetsimCommand(app, netsimOptions);
 
     try {
         app.parse(argc, argv);
@@ -125,9 +137,10 @@ int run(int argc, char** argv) {
     if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
-    if (danger->parsed()) return foresight_cli::dangerCommand(dangerFile);
+    if (danger->parsed()) return foresight_cli::dangerCommand(dangerFile, dangerPictures);
     if (aim->parsed()) return foresight_cli::aimCommand(aimFile);
     if (plan->parsed()) return foresight_cli::planCommand(planFile);
+    if (netsim->parsed()) return foresight_cli::netsimCommand(netsimOptions);
     return 2;
 }
 

@@ -294,6 +294,23 @@ std::string predictions(const Panel& panel, const Json& document, const std::vec
     return out;
 }
 
+/// Danger zones (docs/viewer-format.md): the blast sphere's outline in each view, translucent red.
+std::string dangerZones(const Panel& panel, const Json& document) {
+    std::string out;
+    const Json& zones = member(document, "danger_zones");
+    if (!zones.is_array()) return out;
+    for (const auto& zone : zones) {
+        const Json& radius = member(zone, "radius");
+        if (!radius.is_number() || !(radius.get<double>() > 0.0)) continue;
+        const glm::dvec3 c = vec3(member(zone, "center"));
+        out += "<circle cx=\"" + number(panel.px(c)) + "\" cy=\"" + number(panel.py(c)) + "\" r=\"" +
+               number(radius.get<double>() * panel.scale) +
+               "\" fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" stroke-width=\"1.5\" "
+               "stroke-dasharray=\"4 3\"/>\n";
+    }
+    return out;
+}
+
 std::string picture(const Json& document) {
     glm::dvec3 lo = vec3(member(member(document, "bounds"), "min"), glm::dvec3(-10, 0, -10));
     glm::dvec3 hi = vec3(member(member(document, "bounds"), "max"), glm::dvec3(10, 2, 10));
@@ -333,6 +350,7 @@ std::string picture(const Json& document) {
                "\" width=\"" + number((panel->u1 - panel->u0) * panel->scale) + "\" height=\"" +
                number(panel->height()) + "\"/></clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
         out += world(*panel, document);
+        out += dangerZones(*panel, document);
         out += predictions(*panel, document, styles);
         out += "</g>\n";
     }
@@ -356,6 +374,12 @@ std::string picture(const Json& document) {
            "\" y=\"" + number(y + 4) + "\" font-size=\"12\">bounce</text>\n";
     out += "<rect x=\"" + number(kMargin + 160) + "\" y=\"" + number(y - 4) + "\" width=\"8\" height=\"8\" fill=\"#333\"/>" +
            "<text x=\"" + number(kMargin + 176) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">at rest</text>\n";
+    if (member(document, "danger_zones").is_array() && !member(document, "danger_zones").empty()) {
+        out += "<circle cx=\"" + number(kMargin + 300) + "\" cy=\"" + number(y) +
+               "\" r=\"6\" fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" stroke-width=\"1.5\" "
+               "stroke-dasharray=\"4 3\"/><text x=\"" + number(kMargin + 316) + "\" y=\"" + number(y + 4) +
+               "\" font-size=\"12\">danger zone (blast)</text>\n";
+    }
     out += "</svg>\n";
     return out;
 }
