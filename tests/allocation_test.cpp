@@ -154,4 +154,57 @@ TEST_F(Allocation, StaticWorldCastsDoNotAllocate) {
     EXPECT_EQ(hits, 200); // every cast reaches at least the floor
 }
 
+TEST_F(Allocation, ReplicationDoesNotAllocate) {
+    // Sender, receivers in every smoothing and in Interpolate mode (past the ring's capacity, so
+    // that it wraps), bad packets, and the batch.
+    using foresight::DeadReckoningState;
+    using foresight::ReceivedPose;
+    using foresight::ReceiverSettings;
+    DeadReckoningState state;
+    state.algorithm = foresight::DeadReckoningAlgorithm::Rvw;
+    state.velocity = Vec3(3.0f, 0.0f, 1.0f);
+    state.acceleration = Vec3(0.0f, -1.0f, 0.0f);
+    state.angularVelocity = Vec3(0.0f, 0.4f, 0.0f);
+    DeadReckoningState bad = state;
+    bad.orientation = glm::identity<foresight::Quat>() * 0.0f;
+    foresight::DeadReckoningSender sender;
+    ReceiverSettings settings[5];
+    settings[1].smoothing = foresight::Smoothing::LinearBlend;
+    settings[2].smoothing = foresight::Smoothing::ExponentialDecay;
+    settings[3].smoothing = foresight::Smoothing::Snap;
+    settings[4].mode = foresight::ReceiverMode::Interpolate;
+    std::vector<foresight::DeadReckoningReceiver> receivers(settings, settings + 5);
+    std::vector<DeadReckoningState> states(64, state);
+    std::vector<double> stamps(64, 0.5);
+    std::vector<foresight::DeadReckoningResult> results(64);
+    int sent = 0;
+    int shown = 0;
+    std::size_t refused = 0;
+    const long n = allocationsDuring([&] {
+        for (int k = 0; k < 200; ++k) {
+            const double t = k / 60.0;
+            DeadReckoningState truth = state;
+            truth.position = rv(3.0 * t, -0.5 * t * t, 1.0 * t + 0.1 * (k % 7));
+            foresight::SendDecision decision;
+            if (sender.update(t, truth, decision) == Status::Ok && decision.send()) ++sent;
+            if (decision.send() || k % 2 == 0) { // every other tick: the ring wraps
+                for (foresight::DeadReckoningReceiver& r : receivers) {
+                    (void)r.receive(t, truth, t + 0.05);
+                    (void)r.receive(t, truth, t + 0.05); // duplicate
+                    (void)r.receive(t, bad, t + 0.05);   // invalid
+                }
+            }
+            for (foresight::DeadReckoningReceiver& r : receivers) {
+                ReceivedPose pose;
+                if (r.sample(t, pose) == Status::Ok) ++shown;
+            }
+        }
+        refused = foresight::predictDeadReckoningBatch(states, stamps, 1.0, results);
+    });
+    EXPECT_EQ(n, 0);
+    EXPECT_GT(sent, 10);
+    EXPECT_GT(shown, 900);
+    EXPECT_EQ(refused, 0u);
+}
+
 } // namespace

@@ -9,6 +9,7 @@
 #include <foresight/dead_reckoning.h>
 #include <foresight/orientation.h>
 #include <foresight/projectile.h>
+#include <foresight/replication.h>
 #include <foresight/static_world.h>
 #include <foresight/status.h>
 #include <foresight/throw_planner.h>

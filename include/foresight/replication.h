@@ -55,7 +55,8 @@ enum SendReason : std::uint8_t {
 /// What DeadReckoningSender::update decided.
 struct SendDecision {
     std::uint8_t reasons = SendReasonNone; ///< SendReason bits; non-zero means "send now".
-    /// [Units: m] distance between the receivers' extrapolation and the truth, before sending.
+    /// [Units: m] distance between the receivers' extrapolation and the truth, before sending
+    /// (0 for the first update; the largest float when the extrapolation overflows).
     float positionError = 0.0f;
     /// [Units: rad] rotation angle between the extrapolated and the true orientation (0 to pi).
     float orientationError = 0.0f;
@@ -70,33 +71,38 @@ public:
     /// A sender with `settings` (checked by the first update).
     explicit DeadReckoningSender(const SenderSettings& settings = {});
 
-    /// Compares the truth at `time` with what receivers extrapolate from the last sent update.
-    /// When `decision.send()` is true the caller sends `truth` stamped with `time`, and the
-    /// sender records it as the last sent update.
-    /// @param time   [Units: s] [Limit: finite, >= the previous call's time].
+    /// Compares the truth at `time` with what receivers extrapolate from the last sent update:
+    /// predictDeadReckoning(lastSent(), float(time - lastSentTime())), as a receiver computes it
+    /// (without its extrapolationLimit). A threshold is reached when the error is >= it; the
+    /// heartbeat when time - lastSentTime() >= heartbeat. When `decision.send()` is true the
+    /// caller sends `truth` stamped with `time`, and the sender records it as the last sent
+    /// update.
+    /// @param time   [Units: s] [Limit: finite, >= the previous call's time; equal is fine].
     /// @param truth  the entity's true state now, with the algorithm receivers should use.
-    /// @return Ok, InvalidSetting, TimeWentBackwards, or validateDeadReckoningState's refusals;
-    ///         on a refusal nothing changes and `decision` is untouched.
+    /// @return Ok, InvalidSetting, NonFiniteInput (also for a NaN or infinite time),
+    ///         TimeWentBackwards, or validateDeadReckoningState's other refusals; on a refusal
+    ///         nothing changes and `decision` is untouched.
     Status update(double time, const DeadReckoningState& truth, SendDecision& decision);
 
     /// True once an update has been sent.
-    bool hasSent() const { return m_hasSent; }
+    bool hasSent() const { return mHasSent; }
     /// The last update sent (meaningful once hasSent()).
-    const DeadReckoningState& lastSent() const { return m_lastSent; }
+    const DeadReckoningState& lastSent() const { return mLastSent; }
     /// [Units: s] the timestamp of the last update sent (meaningful once hasSent()).
-    double lastSentTime() const { return m_lastSentTime; }
+    double lastSentTime() const { return mLastSentTime; }
     /// The settings in use.
-    const SenderSettings& settings() const { return m_settings; }
+    const SenderSettings& settings() const { return mSettings; }
     /// Forgets every update: the next update() sends with SendReasonFirst.
     void reset();
 
 private:
-    SenderSettings m_settings;
-    DeadReckoningState m_lastSent{};
-    double m_lastSentTime = 0.0;
-    double m_lastTime = 0.0;
-    bool m_hasSent = false;
-    bool m_hasTime = false;
+    SenderSettings mSettings;
+    Status mSettingsStatus = Status::Ok; // validateSenderSettings(mSettings), checked once
+    DeadReckoningState mLastSent{};
+    double mLastSentTime = 0.0;
+    double mLastTime = 0.0; // the previous update()'s time (TimeWentBackwards)
+    bool mHasSent = false;
+    bool mHasTime = false;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -108,15 +114,23 @@ enum class Smoothing : std::uint8_t {
     /// Show the new update's extrapolation at once (a visible jump at every correction).
     Snap,
     /// Blend from the old update's extrapolation to the new one's, linearly over blendTime
-    /// (position lerp, orientation slerp).
+    /// (position and velocity lerp, orientation slerp). If the previous blend had not finished,
+    /// the old extrapolation carries the shown-minus-old offset of the correction instant, so
+    /// the shown pose never jumps (the offset is zero otherwise).
     LinearBlend,
     /// Projective velocity blending (C. Murphy, "Believable Dead Reckoning for Networked
     /// Games", Game Engine Gems 2, 2011): project from the shown position with a velocity
     /// blended from the shown one to the new one, then blend that projection towards the new
-    /// update's extrapolation over blendTime.
+    /// update's extrapolation over blendTime. With P0, V0 the shown position and world velocity
+    /// when the correction starts, V', A' the new update's world velocity and acceleration then,
+    /// P'(t) its extrapolation, T = t - start, alpha = T / blendTime (0 to 1):
+    /// Vb = V0 + (V' - V0) alpha, Pt = P0 + Vb T + A' T^2 / 2, shown = Pt + (P'(t) - Pt) alpha.
+    /// Orientation: slerp, by alpha, from the shown orientation at the start carried along by
+    /// the new update's rotation, to the new update's orientation.
     ProjectiveVelocityBlending,
     /// Keep the shown-minus-new offset at the moment of the update and let it decay
-    /// exponentially with half-life decayHalfLife (position and rotation angle).
+    /// exponentially with half-life decayHalfLife (position and rotation angle):
+    /// shown = new(t) + offset 2^(-T / decayHalfLife). The velocity shown is the new update's.
     ExponentialDecay,
 };
 
@@ -125,8 +139,12 @@ enum class ReceiverMode : std::uint8_t {
     /// Show the newest update extrapolated to now (dead reckoning), with smoothing.
     Extrapolate,
     /// Show the entity interpolationDelay seconds in the past, between the two buffered
-    /// updates around that time (Source's entity interpolation); extrapolate from the newest
-    /// update, up to extrapolationLimit, when the buffer runs dry.
+    /// updates around that time (Source's entity interpolation): linear in position and
+    /// velocity, slerp in orientation (no Hermite curve, Source's default). Before the oldest
+    /// buffered update: that update as stamped; after the newest: extrapolate from it, up to
+    /// extrapolationLimit, when the buffer runs dry. Two updates further apart than
+    /// teleportDistance are not interpolated (no sweep through the level): the older one is
+    /// extrapolated until the newer one is due.
     Interpolate,
 };
 
@@ -157,24 +175,26 @@ Status validateReceiverSettings(const ReceiverSettings& settings);
 enum class UpdateOutcome : std::uint8_t {
     Accepted,     ///< applied, smoothed per the settings.
     Snapped,      ///< applied with a snap: the first update, Snap smoothing, or a teleport.
-    Buffered,     ///< Interpolate mode: a late update stored in order (still in the future of
-                  ///< the render time), or any update stored before it is shown.
-    OutOfOrder,   ///< dropped: older than the newest update (Extrapolate mode), or older than
-                  ///< the render time (Interpolate mode).
+    Buffered,     ///< Interpolate mode: every accepted update (stored in timestamp order, shown
+                  ///< once the render time reaches it), late ones included.
+    OutOfOrder,   ///< dropped: older than the newest update (Extrapolate mode); older than the
+                  ///< last sample()'s render time, or than every update of a full buffer
+                  ///< (Interpolate mode).
     Duplicate,    ///< dropped: same timestamp as an update already received.
-    Invalid,      ///< dropped: NaN or infinite fields, zero quaternion, unknown algorithm, or a
-                  ///< non-finite timestamp.
+    Invalid,      ///< dropped: NaN or infinite fields, zero quaternion, unknown algorithm, a
+                  ///< non-finite timestamp or receive time, or invalid receiver settings.
 };
 
 /// Counts of what a receiver did, for statistics and tests.
 struct ReceiverCounters {
     std::uint64_t accepted = 0;    ///< updates applied or buffered (Accepted, Snapped, Buffered).
     std::uint64_t snaps = 0;       ///< updates that snapped (first, Snap smoothing, teleports).
-    std::uint64_t teleports = 0;   ///< snaps caused by teleportDistance.
+    std::uint64_t teleports = 0;   ///< snaps caused by teleportDistance (Interpolate mode: updates
+                                   ///< further than it from the previous buffered one).
     std::uint64_t outOfOrder = 0;  ///< OutOfOrder updates dropped.
     std::uint64_t duplicates = 0;  ///< Duplicate updates dropped.
     std::uint64_t invalid = 0;     ///< Invalid updates dropped.
-    std::uint64_t held = 0;        ///< sample() calls that hit extrapolationLimit and held.
+    std::uint64_t held = 0;        ///< sample() calls that returned a held pose (ReceivedPose::held).
     std::uint64_t futureUpdates = 0; ///< updates stamped later than the receive time (treated
                                      ///< as age 0 until their timestamp: never extrapolated
                                      ///< backwards).
@@ -183,9 +203,14 @@ struct ReceiverCounters {
 /// The pose a receiver shows at a time, in world axes.
 struct ReceivedPose {
     RVec3 position{0};                        ///< [Units: m], world axes.
-    Vec3 velocity{0};                         ///< [Units: m/s], world axes (converted for `*B`).
+    /// [Units: m/s], world axes (converted for `*B`): the model's velocity at the age shown
+    /// (also when held); during a correction the blend of the old and new velocities, not the
+    /// derivative of the blended position (which includes the correction's own speed).
+    Vec3 velocity{0};
     Quat orientation = glm::identity<Quat>(); ///< body-to-world, unit.
-    bool held = false; ///< true when extrapolationLimit stopped the extrapolation.
+    /// True when extrapolationLimit stopped the extrapolation of the newest update: the
+    /// position stays at its extrapolation to timestamp + extrapolationLimit.
+    bool held = false;
 };
 
 /// Shows one remote entity from the updates it receives.
@@ -199,19 +224,26 @@ public:
 
     /// Takes an update stamped `timestamp` (sender clock) that arrives at `receiveTime`.
     /// Bad or stale updates are dropped and counted, never applied (see UpdateOutcome).
+    /// Extrapolate mode: the first update snaps; a later one starts a correction at
+    /// receiveTime from what sample(receiveTime) showed, or snaps (Snap smoothing, or a
+    /// correction longer than teleportDistance).
+    /// @param timestamp   [Units: s] the sender's time of the state; finite.
     /// @param receiveTime [Units: s] the receiver's time now; the correction starts here.
     UpdateOutcome receive(double timestamp, const DeadReckoningState& state, double receiveTime);
 
     /// The pose to show at `time` [Units: s]. Times may go backwards (a replay); smoothing
-    /// then clamps to its start.
+    /// then clamps to its start. Extrapolation uses the age min(max(time - timestamp, 0),
+    /// extrapolationLimit) (Interpolate mode: renders at time - interpolationDelay).
     /// @return Ok; InvalidSetting; NoUpdate before the first accepted update;
-    ///         NonFiniteInput for a NaN or infinite time; `out` untouched unless Ok.
+    ///         NonFiniteInput for a NaN or infinite time; NonFiniteResult only with an infinite
+    ///         extrapolationLimit when the age or the extrapolation overflows; `out` untouched
+    ///         unless Ok.
     Status sample(double time, ReceivedPose& out);
 
     /// The counters since construction or the last reset().
-    const ReceiverCounters& counters() const { return m_counters; }
+    const ReceiverCounters& counters() const { return mCounters; }
     /// The settings in use.
-    const ReceiverSettings& settings() const { return m_settings; }
+    const ReceiverSettings& settings() const { return mSettings; }
     /// Forgets every update and counter.
     void reset();
 
@@ -220,23 +252,49 @@ private:
         double timestamp = 0.0;
         DeadReckoningState state{};
     };
-    ReceiverSettings m_settings;
-    ReceiverCounters m_counters;
-    std::array<Snapshot, kBufferCapacity> m_buffer{}; // ring, ordered by timestamp
-    std::size_t m_bufferStart = 0;
-    std::size_t m_bufferCount = 0;
+    // A pose in double, velocity in world axes (the blends are computed in double).
+    struct Pose {
+        glm::dvec3 position{0.0};
+        glm::dvec3 velocity{0.0};
+        glm::dquat orientation{glm::identity<glm::dquat>()};
+    };
+    Status extrapolate(const Snapshot& update, double time, DeadReckoningResult& result, Pose& pose,
+                       bool& held) const;
+    Status showExtrapolated(double time, ReceivedPose& out, Pose& shown) const;
+    Status showInterpolated(double renderTime, ReceivedPose& out) const;
+    UpdateOutcome receiveInterpolated(double timestamp, const DeadReckoningState& state);
+    const Snapshot& buffered(std::size_t i) const { return mBuffer[(mBufferStart + i) % kBufferCapacity]; }
+
+    ReceiverSettings mSettings;
+    Status mSettingsStatus = Status::Ok; // validateReceiverSettings(mSettings), checked once
+    ReceiverCounters mCounters;
+    // Interpolate mode: the newest updates, a ring ordered by timestamp.
+    std::array<Snapshot, kBufferCapacity> mBuffer{};
+    std::size_t mBufferStart = 0;
+    std::size_t mBufferCount = 0;
+    double mLastRenderTime = 0.0; // the last sample()'s render time (OutOfOrder)
+    bool mHasRendered = false;
     // Extrapolate mode: the update being shown and the correction in progress.
-    Snapshot m_current{};
-    ReceivedPose m_shownAtCorrection{}; // what was shown when the correction started
-    Snapshot m_previous{};              // the update shown before m_current (LinearBlend)
-    double m_correctionStart = 0.0;
-    bool m_hasCurrent = false;
-    bool m_correcting = false;
+    Snapshot mCurrent{};
+    Snapshot mPrevious{};          // the update shown before mCurrent (LinearBlend)
+    Pose mShownAtCorrection{};     // what was shown when the correction started
+    glm::dvec3 mPreviousOffset{0.0}; // LinearBlend: shown minus mPrevious's extrapolation at start
+    glm::dquat mPreviousRotationOffset{glm::identity<glm::dquat>()}; // the same, world-frame rotation
+    glm::dvec3 mCurrentOffset{0.0}; // shown minus mCurrent's extrapolation at start (decay)
+    glm::dquat mCurrentRotationOffset{glm::identity<glm::dquat>()}; // the same, world-frame rotation
+    glm::dvec3 mCurrentVelocity{0.0};     // PVB: V', mCurrent's world velocity at start
+    glm::dvec3 mCurrentAcceleration{0.0}; // PVB: A', mCurrent's world acceleration at start
+    double mCorrectionStart = 0.0;
+    bool mHasCurrent = false;
+    bool mCorrecting = false;
 };
 
 /// Extrapolates many entities to one time, as a receiver does every frame (the batch form of
-/// predictDeadReckoning, no smoothing). Entities that predictDeadReckoning refuses keep their
-/// state and are counted.
+/// predictDeadReckoning, no smoothing, no extrapolation limit). Entity i's result is
+/// bit-identical to predictDeadReckoning(states[i], float(max(time - timestamps[i], 0))).
+/// Entities that predictDeadReckoning refuses (or a NaN timestamp) keep their state and are
+/// counted. When the spans' lengths differ, the entities up to the shortest are processed
+/// and the states beyond it are counted as refused.
 /// @param states      updates, one per entity.
 /// @param timestamps  [Units: s] each update's timestamp, same length as `states`.
 /// @param time        [Units: s] the time to extrapolate to; an entity stamped later is shown
