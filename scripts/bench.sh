@@ -8,6 +8,9 @@
 #        scripts/bench.sh --instructions   (instruction counts under callgrind instead of times)
 #        scripts/bench.sh --planning [benchmark options...]   throw planning on the demo level
 #            (bench/bench_planning.cpp, Embree backend): ms per plan, target < 5; success rate
+#        scripts/bench.sh --replication [benchmark options...]   dead reckoning for 100 000
+#            entities per frame (bench/bench_replication.cpp): predictDeadReckoningBatch against
+#            a plain p + v t loop, ms per frame (target < 1) and the ratio; receiver samples
 #        scripts/bench.sh --worlds [benchmark options...]
 #            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
 #            backends): segment casts per second on a mesh of a million triangles through
@@ -151,6 +154,39 @@ if [[ "${1:-}" == "--planning" ]]; then
           if ($1 ~ /Courtyard/ && ms >= 5) missed = 1 }
         END { if (missed) { print "  target missed: BM_Plan/Courtyard >= 5 ms per plan"; if (strict == 1) exit 1 } }'
     medians "$out" success | awk '{ printf "  %-22s %8.1f%% of the pairs get a plan\n", $1, 100 * $2 }'
+    exit 0
+fi
+
+if [[ "${1:-}" == "--replication" ]]; then
+    # Replication (bench/bench_replication.cpp): one frame of 100 000 entities through
+    # predictDeadReckoningBatch and through a plain p + v t loop, from this run's medians.
+    shift
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_replication.json}
+    if [[ "$dir" == build ]]; then
+        ./scripts/build.sh --target foresight_bench_replication >/dev/null
+    else
+        cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
+            --target foresight_bench_replication >/dev/null
+    fi
+    "$dir/bench/foresight_bench_replication" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
+    echo "Replication, 100 000 entities per frame, medians of this run ($out); one thread:"
+    medians "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        { rate[$1] = $2 }
+        END {
+            batch = "BM_Replication/Batch"; plain = "BM_Replication/PlainLoop"; receivers = "BM_Replication/Receivers"
+            if (!(batch in rate) || !(plain in rate)) { print "  not measured (filtered out?)"; exit 0 }
+            b = 1e8 / rate[batch]; p = 1e8 / rate[plain]  # ms per frame of 100 000
+            printf "  %-44s %8.3f ms per frame (target < 1: %s)\n", "predictDeadReckoningBatch (mixed models)", b,
+                   (b < 1 ? "met" : "MISSED")
+            printf "  %-44s %8.3f ms per frame\n", "plain loop p + v t", p
+            printf "  %-44s %8.2fx\n", "ratio batch / plain loop", b / p
+            if (receivers in rate)
+                printf "  %-44s %8.1f ns per receiver (%.2f ms for 100 000)\n", "DeadReckoningReceiver::sample (PVB)",
+                       1e9 / rate[receivers], 1e8 / rate[receivers]
+            if (b >= 1 && strict == 1) exit 1
+        }'
     exit 0
 fi
 
