@@ -161,6 +161,9 @@ struct ReceiverSettings {
     float teleportDistance = 10.0f;
     /// [Units: s] [Limit: >= 0; infinity disables] extrapolate at most this far past the
     /// newest update's timestamp, then hold there (Source's cl_extrapolate_amount, 0.25 s).
+    /// The default suits senders that send every tick. With DeadReckoningSender's thresholds a
+    /// well-predicted entity sends only every heartbeat (5 s): set this to at least the
+    /// heartbeat plus the latency there, or every such entity freezes between heartbeats.
     float extrapolationLimit = 0.25f;
     /// [Units: s] [Limit: > 0, finite] how far in the past Interpolate mode renders (Source's
     /// cl_interp, 0.1 s).
