@@ -1616,3 +1616,108 @@ TEST_F(cli, DangerRefusesBadInputNamingThePath) {
     EXPECT_TRUE(missing.out.empty());
     EXPECT_NE(missing.err.find("none.json: cannot read"), std::string::npos) << missing.err;
 }
+
+// ---------------------------------------------------------------------------------------------
+// foresight netsim: dead reckoning through a simulated link (tools/netsim.h)
+
+TEST_F(cli, NetsimJsonIsDeterministicAndHasEveryRow) {
+    const std::vector<std::string> args = {"netsim", "--duration", "10", "--json"};
+    const CliRun first = runCli(args);
+    const CliRun second = runCli(args);
+    ASSERT_EQ(first.status, 0) << first.err;
+    EXPECT_EQ(first.out, second.out);  // the same seed, the same bytes
+    EXPECT_EQ(first.err, "");          // no progress when standard error is not a terminal
+    const Json output = parseOutput(first);
+    EXPECT_EQ(output.at("settings").at("latency").get<double>(), 0.1);
+    EXPECT_EQ(output.at("settings").at("seed").get<int>(), 1);
+    const Json& trajectories = output.at("trajectories");
+    ASSERT_EQ(trajectories.size(), 4u);
+    std::vector<std::string> names;
+    for (const auto& t : trajectories) {
+        names.push_back(t.at("name").get<std::string>());
+        ASSERT_EQ(t.at("models").size(), 5u);  // STATIC, FPW, RVW, RPB, RVB
+        for (const auto& m : t.at("models")) {
+            ASSERT_EQ(m.at("displays").size(), 5u);
+            EXPECT_GE(m.at("updates").get<int>(), 1);
+            for (const auto& d : m.at("displays")) {
+                const Json& error = d.at("position_error");
+                EXPECT_LE(error.at("mean").get<double>(), error.at("max").get<double>());
+                EXPECT_LE(error.at("p95").get<double>(), error.at("max").get<double>());
+                EXPECT_GT(d.at("frames").get<int>(), 500);  // 10 s at 60 Hz, from the first update
+            }
+        }
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"run-strafe", "slalom", "circuit", "aircraft-turn"}));
+    // Another seed loses other packets.
+    const CliRun other = runCli({"netsim", "--duration", "10", "--json", "--seed", "2", "--loss", "30%"});
+    ASSERT_EQ(other.status, 0) << other.err;
+    EXPECT_NE(other.out, first.out);
+}
+
+TEST_F(cli, NetsimTableMarkdownCsvAndSvg) {
+    const CliRun table = runCli({"netsim", "--trajectory", "slalom", "--duration", "5", "--models", "fpw,RPB"});
+    ASSERT_EQ(table.status, 0) << table.err;
+    EXPECT_NE(table.out.find("slalom           FPW    snap"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("slalom           RPB    interpolate"), std::string::npos) << table.out;
+    EXPECT_EQ(table.out.find("circuit"), std::string::npos);
+
+    const CliRun markdown = runCli({"netsim", "--duration", "5", "--markdown", "--smoothing", "snap,pvb"});
+    ASSERT_EQ(markdown.status, 0) << markdown.err;
+    EXPECT_EQ(markdown.out.rfind("| Trajectory | Model | Updates/s | snap | pvb |\n", 0), 0u) << markdown.out;
+    EXPECT_NE(markdown.out.find("| aircraft-turn | RVB |"), std::string::npos);
+
+    // A straight line at 2 m/s, its velocity from the rows; a chart of its errors.
+    std::string csv = "t,x,y,z\n";
+    for (int i = 0; i <= 20; ++i) csv += std::to_string(0.5 * i) + "," + std::to_string(1.0 * i) + ",0,0\n";
+    const fs::path file = write("line.csv", csv);
+    const fs::path svg = mDir / "error.svg";
+    const CliRun run = runCli({"netsim", "--csv", file.string(), "--models", "FPW", "--loss", "0", "--json", "--svg", svg.string(),
+                               "--duration", "60"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find("warning: " + file.string() + " covers 10 s"), std::string::npos) << run.err;
+    const Json output = parseOutput(run);
+    ASSERT_EQ(output.at("trajectories").size(), 1u);  // --csv alone: no built-in
+    const Json& line = output.at("trajectories").at(0);
+    EXPECT_EQ(line.at("duration").get<double>(), 10);
+    EXPECT_NEAR(line.at("distance").get<double>(), 20, 1e-9);
+    for (const auto& d : line.at("models").at(0).at("displays")) {
+        if (d.at("display") == "interpolate") continue;
+        EXPECT_LT(d.at("position_error").at("max").get<double>(), 1e-5) << d;  // p + v t, float age
+    }
+    const std::string picture = readFile(svg);
+    for (const char* part : {"<svg", "time [s]", "position error [m]", "line.csv, FPW", "decay (p95", "</svg>"})
+        EXPECT_NE(picture.find(part), std::string::npos) << part;
+}
+
+TEST_F(cli, NetsimRefusesBadOptionsWithStatusTwo) {
+    const fs::path bad = write("bad.csv", "t,x,y,z\n0,0,0,0\n1,oops,0,0\n");
+    struct Case {
+        std::vector<std::string> args;
+        const char* message;
+    };
+    const Case cases[] = {
+        {{"netsim", "--latency", "-5"}, "--latency must be >= 0 and <= 10000 ms (got -5)"},
+        {{"netsim", "--jitter", "20000"}, "--jitter must be >= 0 and <= 10000 ms"},
+        {{"netsim", "--loss", "2"}, "--loss must be between 0 and 1"},
+        {{"netsim", "--loss", "abc"}, "--loss: expected a fraction (0.02) or a percentage (2%)"},
+        {{"netsim", "--duration", "0"}, "--duration must be > 0 and <= 3600 s"},
+        {{"netsim", "--send-rate", "0.5"}, "--send-rate must be >= 1 and <= 1000 Hz"},
+        {{"netsim", "--position-threshold", "0"}, "--position-threshold must be > 0"},
+        {{"netsim", "--orientation-threshold", "200"}, "--orientation-threshold must be > 0 and <= 180 degrees"},
+        {{"netsim", "--models", "FPW,XYZ"}, "--models: unknown model \"XYZ\""},
+        {{"netsim", "--smoothing", "smooth"}, "--smoothing: unknown smoothing \"smooth\""},
+        {{"netsim", "--trajectory", "helicopter"}, "--trajectory: unknown trajectory \"helicopter\""},
+        {{"netsim", "--json", "--markdown"}, "--json and --markdown contradict each other"},
+        {{"netsim", "--svg", "-"}, "--svg: give a file name"},
+        {{"netsim", "--csv", (mDir / "missing.csv").string()}, "missing.csv: cannot read"},
+        {{"netsim", "--csv", bad.string()}, "bad.csv:3: column 2 (\"x\"): expected a finite number, got \"oops\""},
+        {{"netsim", "--duration", "1", "--svg", (mDir / "no" / "dir.svg").string()}, "dir.svg: cannot write"},
+        {{"netsim", "--seed", "x"}, "--seed"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = runCli(c.args);
+        EXPECT_EQ(run.status, 2) << c.args.back() << "\n" << run.err;
+        EXPECT_TRUE(run.out.empty()) << run.out;
+        EXPECT_NE(run.err.find(c.message), std::string::npos) << "expected: " << c.message << "\nstderr: " << run.err;
+    }
+}

@@ -8,6 +8,8 @@
 ///   foresight level [--obj FILE] [--gltf FILE] [--glb FILE] [--room [--room-size X Y Z]]
 ///   foresight aim FILE|-           firing solutions (aim-format.md): JSON shots in, JSON solutions out
 ///   foresight plan FILE|-          throw planning: launch velocities that reach a target at the fuse
+///   foresight netsim [--trajectory NAME] [--csv FILE] [--json|--markdown] [--svg FILE] ...
+///                                  dead reckoning through a simulated link: errors, updates, jumps
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
 #include "accuracy.h"
@@ -15,6 +17,7 @@
 #include "compare.h"
 #include "danger.h"
 #include "demo.h"
+#include "netsim.h"
 #include "picture.h"
 #include "plan.h"
 #include "scenario.h"
@@ -112,6 +115,9 @@ int run(int argc, char** argv) {
     danger->add_option("--svg", dangerPictures.svgFile, "also write a top and a side view (SVG) with the danger zones to FILE")
         ->type_name("FILE");
 
+    foresight_cli::NetsimOptions netsimOptions;
+    CLI::App* netsim = foresight_cli::addNetsimCommand(app, netsimOptions);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -134,6 +140,7 @@ int run(int argc, char** argv) {
     if (danger->parsed()) return foresight_cli::dangerCommand(dangerFile, dangerPictures);
     if (aim->parsed()) return foresight_cli::aimCommand(aimFile);
     if (plan->parsed()) return foresight_cli::planCommand(planFile);
+    if (netsim->parsed()) return foresight_cli::netsimCommand(netsimOptions);
     return 2;
 }
 
