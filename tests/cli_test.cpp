@@ -1579,7 +1579,7 @@ TEST_F(cli, DangerPicturesDrawTheDangerZones) {
 TEST_F(cli, DangerRefusesBadInputNamingThePath) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {dangerWith(""), "predictions[0].blast_radius: missing required field"},
-        {dangerWith(R"(, "blast_radius": -1)"), "predictions[0].blast_radius: a blast radius must be >= 0"},
+        {dangerWith(R"(, "blast_radius": -1)"), "predictions[0].blast_radius: must be >= 0 (got -1)"},
         {dangerWith(R"(, "blast_radius": 2, "contact_radius": "x")"), "predictions[0].contact_radius: expected a finite number"},
         {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0]}])"), "predictions[0].points[0].position: expected 3 finite numbers"},
         {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0, 0], "tme": 1}])"), "predictions[0].points[0].tme: unknown key"},

@@ -1,14 +1,11 @@
 #include "aim.h"
 
+#include "json_input.h"
 #include "json_output.h"
-#include "scenario.h"  // Diagnostics, parseJsonText, printDiagnostics
-#include "text_file.h"
 
 #include <array>
-#include <cfloat>
 #include <cmath>
 #include <iostream>
-#include <set>
 #include <vector>
 
 namespace foresight_cli {
@@ -16,113 +13,6 @@ namespace foresight_cli {
 namespace {
 
 using foresight::Status;
-
-std::string typeName(const Json& value) {
-    if (value.is_number()) return "a number";
-    if (value.is_string()) return "a string";
-    if (value.is_boolean()) return "a boolean";
-    if (value.is_null()) return "null";
-    if (value.is_array()) return "an array";
-    return "an object";
-}
-
-/// Members of one JSON object, read by key; members never asked for are unknown keys. (The
-/// same rules as the scenario reader's, for the few kinds of values this format has.)
-class Members {
-public:
-    Members(const Json& object, std::string path, Diagnostics& d) : mObject(object), mPath(std::move(path)), mD(d) {}
-
-    std::string at(const std::string& key) const { return mPath.empty() ? key : mPath + "." + key; }
-
-    const Json* get(const char* key, bool required) {
-        mKnown.insert(key);
-        const auto found = mObject.find(key);
-        if (found == mObject.end()) {
-            if (required) mD.error(at(key), "missing required field");
-            return nullptr;
-        }
-        return &*found;
-    }
-
-    /// A finite number within the float range.
-    bool floatNumber(const char* key, bool required, float& out) {
-        const Json* value = get(key, required);
-        if (value == nullptr) return false;
-        if (!value->is_number() || !std::isfinite(value->get<double>())) {
-            mD.error(at(key), value->is_number() ? "expected a finite number (got a number too large to represent)"
-                                                 : "expected a finite number, got " + typeName(*value));
-            return false;
-        }
-        const double number = value->get<double>();
-        if (std::fabs(number) > static_cast<double>(FLT_MAX)) {
-            mD.error(at(key), "expected a finite number (beyond the float range, |x| <= 3.4028235e38)");
-            return false;
-        }
-        out = static_cast<float>(number);
-        return true;
-    }
-
-    /// [x, y, z]: doubles (a position, `floatRange` false) or floats.
-    bool triple(const char* key, bool required, bool floatRange, std::array<double, 3>& out) {
-        const Json* value = get(key, required);
-        if (value == nullptr) return false;
-        bool ok = value->is_array() && value->size() == 3;
-        for (std::size_t i = 0; ok && i < 3; ++i) {
-            ok = (*value)[i].is_number() && std::isfinite((*value)[i].get<double>());
-            if (ok) out[i] = (*value)[i].get<double>();
-        }
-        if (!ok) {
-            mD.error(at(key), "expected 3 finite numbers");
-            return false;
-        }
-        for (const double component : out) {
-            if (floatRange && std::fabs(component) > static_cast<double>(FLT_MAX)) {
-                mD.error(at(key), "expected 3 finite numbers (beyond the float range, |x| <= 3.4028235e38)");
-                return false;
-            }
-        }
-        return true;
-    }
-    bool position(const char* key, bool required, foresight::RVec3& out) {
-        std::array<double, 3> c{};
-        if (!triple(key, required, !foresight::kDoublePrecision, c)) return false;
-        out = foresight::RVec3(static_cast<foresight::Real>(c[0]), static_cast<foresight::Real>(c[1]),
-                               static_cast<foresight::Real>(c[2]));
-        return true;
-    }
-    bool vector(const char* key, bool required, foresight::Vec3& out) {
-        std::array<double, 3> c{};
-        if (!triple(key, required, true, c)) return false;
-        out = foresight::Vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
-        return true;
-    }
-    bool string(const char* key, bool required, std::string& out) {
-        const Json* value = get(key, required);
-        if (value == nullptr) return false;
-        if (!value->is_string()) {
-            mD.error(at(key), "expected a string, got " + typeName(*value));
-            return false;
-        }
-        out = value->get<std::string>();
-        return true;
-    }
-
-    /// Reports every member no reader asked for.
-    void finish() {
-        for (const auto& [key, value] : mObject.items()) {
-            (void)value;
-            if (mKnown.count(key) == 0) mD.error(at(key), "unknown key");
-        }
-    }
-
-    Diagnostics& diagnostics() { return mD; }
-
-private:
-    const Json& mObject;
-    std::string mPath;
-    Diagnostics& mD;
-    std::set<std::string> mKnown;
-};
 
 enum class Arc { Low, High, All };
 
@@ -134,17 +24,9 @@ struct Shot {
     Arc arc = Arc::Low;
 };
 
-std::string jsonString(const std::string& text) { return Json(text).dump(-1, ' ', false, Json::error_handler_t::replace); }
-
-bool expectObject(const Json& value, const std::string& path, Diagnostics& d, const char* shape) {
-    if (value.is_object()) return true;
-    d.error(path, std::string("expected an object ") + shape + ", got " + typeName(value));
-    return false;
-}
-
 void readTarget(const Json& value, const std::string& path, foresight::AimTarget& target, Diagnostics& d) {
     if (!expectObject(value, path, d, "{\"position\", \"velocity\", \"acceleration\"}")) return;
-    Members m(value, path, d);
+    Fields m(value, path, d);
     m.position("position", true, target.position);
     m.vector("velocity", false, target.velocity);
     m.vector("acceleration", false, target.acceleration);
@@ -157,14 +39,8 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
     Shot s;
     s.path = path;
     s.shot.gravity = gravity;
-    Members m(item, path, d);
-    if (const Json* id = m.get("id", false)) {
-        if (id->is_string() || id->is_number_integer()) {
-            s.id = *id;
-        } else {
-            d.error(m.at("id"), "expected a string or an integer, got " + typeName(*id));
-        }
-    }
+    Fields m(item, path, d);
+    m.id(s.id);
     m.position("from", true, s.shot.from);
     m.vector("gravity", false, s.shot.gravity);
 
@@ -203,7 +79,7 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
         } else if (apexAbove == "target") {
             s.shot.constraint = foresight::AimConstraint::ApexAboveTarget;
         } else if (apexAbove != "start") {
-            d.error(m.at("apex_above"), "unknown value " + jsonString(apexAbove) + " (expected \"start\" or \"target\")");
+            d.error(m.at("apex_above"), "unknown value " + jsonQuoted(apexAbove) + " (expected \"start\" or \"target\")");
         }
     }
 
@@ -216,13 +92,10 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
         } else if (arc == "all") {
             s.arc = Arc::All;
         } else {
-            d.error(m.at("arc"), "unknown arc " + jsonString(arc) + " (expected \"low\", \"high\" or \"all\")");
+            d.error(m.at("arc"), "unknown arc " + jsonQuoted(arc) + " (expected \"low\", \"high\" or \"all\")");
         }
     }
-    if (m.floatNumber("max_time", false, s.shot.maxTime) && s.shot.maxTime < 0.0f) {
-        d.error(m.at("max_time"), std::string(foresight::statusMessage(Status::NegativeTime)) + " (got " +
-                                      shortNumber(static_cast<double>(s.shot.maxTime)) + ")");
-    }
+    m.time("max_time", false, s.shot.maxTime);
     if (const Json* target = m.get("target", true)) readTarget(*target, m.at("target"), s.target, d);
     m.finish();
 
@@ -236,7 +109,7 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
 
 bool readDocument(const Json& document, std::vector<Shot>& shots, Diagnostics& d) {
     if (!expectObject(document, "", d, "{\"gravity\", \"shots\"}")) return false;
-    Members root(document, "", d);
+    Fields root(document, "", d);
     foresight::Vec3 gravity(0.0f, -9.81f, 0.0f);
     root.vector("gravity", false, gravity);
     if (const Json* list = root.get("shots", true)) {
@@ -301,25 +174,15 @@ bool runShots(const std::vector<Shot>& shots, Json& document, Diagnostics& d) {
 
 int aimCommand(const std::string& file) {
     Diagnostics diagnostics;
-    const std::string name = file == "-" ? std::string("<stdin>") : file;
-    std::string text;
-    std::string reason;
-    if (!readTextFile(file, text, reason)) {
-        std::cerr << name << ": cannot read: " << reason << '\n';
-        return 2;
-    }
+    std::string name;
     Json input;
     std::vector<Shot> shots;
     Json output;
-    const bool ok = parseJsonText(text, name, input, diagnostics) && readDocument(input, shots, diagnostics) &&
+    const bool ok = readJsonFile(file, name, input, diagnostics) && readDocument(input, shots, diagnostics) &&
                     runShots(shots, output, diagnostics);
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
-    if (!writeTextFile("-", formatJson(output), reason)) {
-        std::cerr << "foresight: cannot write the result: " << reason << '\n';
-        return 1;
-    }
-    return 0;
+    return writeJsonResult(output);
 }
 
 } // namespace foresight_cli

@@ -1,8 +1,7 @@
 #include "danger.h"
 
-#include "text_file.h"
+#include "json_input.h"
 
-#include <cfloat>
 #include <cmath>
 #include <iostream>
 #include <set>
@@ -18,154 +17,49 @@ namespace {
 const std::set<std::string> kProjectileKeys = {"blast_radius", "contact_radius", "points"};
 const std::set<std::string> kVehicleKeys = {"half_extents", "box_center", "characters"};
 
-std::string typeName(const Json& value) {
-    if (value.is_number()) return "a number";
-    if (value.is_string()) return "a string";
-    if (value.is_boolean()) return "a boolean";
-    if (value.is_null()) return "null";
-    if (value.is_array()) return "an array";
-    return "an object";
-}
-
 std::string member(const std::string& path, const std::string& key) { return path + "." + key; }
 
-// Readers in the scenario format's words: each reports a problem at `path` and returns false.
-
-bool readFloat(const Json& value, const std::string& path, Diagnostics& d, float& out) {
-    if (!value.is_number() || !std::isfinite(value.get<double>())) {
-        d.error(path, "expected a finite number, got " + typeName(value));
-        return false;
+/// Calls `each(item, path)` for every element of `value`, which must be an array.
+template <class Each>
+void forEachItem(const Json& value, const std::string& path, Diagnostics& d, Each&& each) {
+    if (!value.is_array()) {
+        d.error(path, "expected an array, got " + typeName(value));
+        return;
     }
-    const double number = value.get<double>();
-    if (std::fabs(number) > static_cast<double>(FLT_MAX)) {
-        d.error(path, "expected a finite number (beyond the float range, |x| <= 3.4028235e38)");
-        return false;
-    }
-    out = static_cast<float>(number);
-    return true;
-}
-
-bool readTriple(const Json& value, const std::string& path, Diagnostics& d, double (&out)[3], bool floatRange) {
-    bool ok = value.is_array() && value.size() == 3;
-    for (std::size_t i = 0; ok && i < 3; ++i) {
-        ok = value[i].is_number() && std::isfinite(value[i].get<double>()) &&
-             (!floatRange || std::fabs(value[i].get<double>()) <= static_cast<double>(FLT_MAX));
-        if (ok) out[i] = value[i].get<double>();
-    }
-    if (!ok) d.error(path, "expected 3 finite numbers");
-    return ok;
-}
-
-bool readVector(const Json& value, const std::string& path, Diagnostics& d, foresight::Vec3& out) {
-    double v[3] = {0, 0, 0};
-    if (!readTriple(value, path, d, v, true)) return false;
-    out = foresight::Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-    return true;
-}
-
-bool readPosition(const Json& value, const std::string& path, Diagnostics& d, foresight::RVec3& out) {
-    double v[3] = {0, 0, 0};
-    if (!readTriple(value, path, d, v, !foresight::kDoublePrecision)) return false;
-    using R = foresight::Real;
-    out = foresight::RVec3(static_cast<R>(v[0]), static_cast<R>(v[1]), static_cast<R>(v[2]));
-    return true;
-}
-
-bool readNonNegative(const Json& value, const std::string& path, Diagnostics& d, float& out, const char* what) {
-    if (!readFloat(value, path, d, out)) return false;
-    if (out < 0.0f) {
-        d.error(path, std::string(what) + " must be >= 0");
-        return false;
-    }
-    return true;
-}
-
-/// Reports the members of `object` not in `known` (with the object's path).
-void reportUnknownKeys(const Json& object, const std::string& path, const std::set<std::string>& known, Diagnostics& d) {
-    for (const auto& [key, value] : object.items()) {
-        (void)value;
-        if (known.count(key) == 0) d.error(member(path, key), "unknown key");
-    }
+    for (std::size_t i = 0; i < value.size(); ++i) each(value[i], path + "[" + std::to_string(i) + "]");
 }
 
 void readPoints(const Json& value, const std::string& path, Diagnostics& d, std::vector<DangerPoint>& out) {
-    if (!value.is_array()) {
-        d.error(path, "expected an array, got " + typeName(value));
-        return;
-    }
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string at = path + "[" + std::to_string(i) + "]";
-        const Json& item = value[i];
-        if (!item.is_object()) {
-            d.error(at, "expected an object {\"position\", \"time\"}, got " + typeName(item));
-            continue;
-        }
-        reportUnknownKeys(item, at, {"position", "time"}, d);
+    forEachItem(value, path, d, [&](const Json& item, const std::string& at) {
+        if (!expectObject(item, at, d, "{\"position\", \"time\"}")) return;
+        Fields f(item, at, d);
         DangerPoint point;
-        bool ok = true;
-        if (const auto found = item.find("position"); found == item.end()) {
-            d.error(member(at, "position"), "missing required field");
-            ok = false;
-        } else {
-            ok = readPosition(*found, member(at, "position"), d, point.position) && ok;
-        }
-        if (const auto found = item.find("time"); found != item.end()) {
-            point.hasTime = true;
-            ok = readFloat(*found, member(at, "time"), d, point.time) && ok;
-        }
-        if (ok) out.push_back(point);
-    }
+        point.hasTime = item.contains("time");
+        const bool okPosition = f.position("position", true, point.position);
+        const bool okTime = !point.hasTime || f.floatNumber("time", true, point.time);
+        f.finish();
+        if (okPosition && okTime) out.push_back(point);
+    });
 }
 
 void readCharacters(const Json& value, const std::string& path, Diagnostics& d, DangerQuery& query) {
-    if (!value.is_array()) {
-        d.error(path, "expected an array, got " + typeName(value));
-        return;
-    }
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string at = path + "[" + std::to_string(i) + "]";
-        const Json& item = value[i];
-        if (!item.is_object()) {
-            d.error(at, "expected an object {\"position\", \"velocity\", \"radius\", ...}, got " + typeName(item));
-            continue;
-        }
-        reportUnknownKeys(item, at, {"id", "position", "velocity", "acceleration", "radius", "half_axis"}, d);
+    forEachItem(value, path, d, [&](const Json& item, const std::string& at) {
+        if (!expectObject(item, at, d, "{\"position\", \"velocity\", \"radius\", ...}")) return;
+        Fields f(item, at, d);
+        const std::size_t errorsBefore = d.errors.size();
         foresight::CharacterBody character;
         Json id;
-        bool ok = true;
-        auto required = [&](const char* key) -> const Json* {
-            const auto found = item.find(key);
-            if (found == item.end()) {
-                d.error(member(at, key), "missing required field");
-                ok = false;
-                return nullptr;
-            }
-            return &*found;
-        };
-        auto optional = [&](const char* key) -> const Json* {
-            const auto found = item.find(key);
-            return found == item.end() ? nullptr : &*found;
-        };
-        if (const Json* v = optional("id")) {
-            if (v->is_string() || v->is_number_integer()) {
-                id = *v;
-            } else {
-                d.error(member(at, "id"), "expected a string or an integer, got " + typeName(*v));
-                ok = false;
-            }
-        }
-        if (const Json* v = required("position")) ok = readPosition(*v, member(at, "position"), d, character.position) && ok;
-        if (const Json* v = required("velocity")) ok = readVector(*v, member(at, "velocity"), d, character.velocity) && ok;
-        if (const Json* v = optional("acceleration"))
-            ok = readVector(*v, member(at, "acceleration"), d, character.acceleration) && ok;
-        if (const Json* v = required("radius"))
-            ok = readNonNegative(*v, member(at, "radius"), d, character.radius, "a radius") && ok;
-        if (const Json* v = optional("half_axis")) ok = readVector(*v, member(at, "half_axis"), d, character.halfAxis) && ok;
-        if (ok) {
-            query.characters.push_back(character);
-            query.characterIds.push_back(id);
-        }
-    }
+        f.id(id);
+        f.position("position", true, character.position);
+        f.vector("velocity", true, character.velocity);
+        f.vector("acceleration", false, character.acceleration);
+        f.positive("radius", true, false, character.radius);
+        f.vector("half_axis", false, character.halfAxis);
+        f.finish();
+        if (d.errors.size() != errorsBefore) return;
+        query.characters.push_back(character);
+        query.characterIds.push_back(id);
+    });
 }
 
 /// Reads (and removes from `prediction`) the danger keys of one prediction.
@@ -186,26 +80,22 @@ void readDangerKeys(Json& prediction, const std::string& path, DangerQuery& quer
             prediction.erase(key);
         }
     }
+    // Only the danger keys are read here (every one is known: the rest is the scenario's).
+    Fields keys(extracted, path, d);
     if (projectile) {
-        if (!extracted.contains("blast_radius")) {
-            d.error(member(path, "blast_radius"), "missing required field");
-        } else {
-            readNonNegative(extracted["blast_radius"], member(path, "blast_radius"), d, query.blastRadius, "a blast radius");
-        }
-        if (extracted.contains("contact_radius"))
-            readNonNegative(extracted["contact_radius"], member(path, "contact_radius"), d, query.contactRadius,
-                            "a contact radius");
-        if (extracted.contains("points")) readPoints(extracted["points"], member(path, "points"), d, query.points);
+        keys.positive("blast_radius", true, false, query.blastRadius);
+        keys.positive("contact_radius", false, false, query.contactRadius);
+        if (const Json* points = keys.get("points", false)) readPoints(*points, keys.at("points"), d, query.points);
         return;
     }
-    if (extracted.contains("half_extents") &&
-        readVector(extracted["half_extents"], member(path, "half_extents"), d, query.halfExtents) &&
+    if (keys.vector("half_extents", false, query.halfExtents) &&
         !(query.halfExtents.x > 0.0f && query.halfExtents.y > 0.0f && query.halfExtents.z > 0.0f)) {
-        d.error(member(path, "half_extents"), std::string(foresight::statusMessage(Status::DegenerateShape)) +
-                                                  ": each half extent must be > 0");
+        d.error(keys.at("half_extents"), std::string(foresight::statusMessage(Status::DegenerateShape)) +
+                                             ": each half extent must be > 0");
     }
-    if (extracted.contains("box_center")) readVector(extracted["box_center"], member(path, "box_center"), d, query.boxCenter);
-    if (extracted.contains("characters")) readCharacters(extracted["characters"], member(path, "characters"), d, query);
+    keys.vector("box_center", false, query.boxCenter);
+    if (const Json* characters = keys.get("characters", false))
+        readCharacters(*characters, keys.at("characters"), d, query);
     if (const auto method = prediction.find("method");
         method != prediction.end() && method->is_string() && method->get<std::string>() == "iterative") {
         d.error(member(path, "method"), "foresight danger follows the exact path (use \"exact\" or leave it out)");
@@ -245,7 +135,7 @@ bool buildDangerInput(const Json& document, const std::filesystem::path& baseDir
     Json scenarioDocument = document;
     if (const auto tolerance = scenarioDocument.find("tolerance"); tolerance != scenarioDocument.end()) {
         float value = 0;
-        if (readFloat(*tolerance, "tolerance", diagnostics, value)) {
+        if (toFloat(*tolerance, "tolerance", diagnostics, value)) {
             if (value > 0.0f) input.approach.tolerance = value;
             else diagnostics.error("tolerance", "expected a number > 0 [m]");
         }
@@ -392,21 +282,13 @@ int dangerCommand(const std::string& file, const PictureOptions& pictures) {
         return 2;
     }
     Diagnostics diagnostics;
-    const std::string name = file == "-" ? std::string("<stdin>") : file;
-    std::string text;
-    std::string reason;
-    if (!readTextFile(file, text, reason)) {
-        std::cerr << name << ": cannot read: " << reason << '\n';
-        return 2;
-    }
+    std::string name;
     Json document;
     DangerInput input;
     Json output;
-    const std::filesystem::path baseDirectory =
-        file == "-" ? std::filesystem::path() : std::filesystem::path(file).parent_path();
     std::vector<PredictionResult> results;
-    const bool ok = parseJsonText(text, name, document, diagnostics) &&
-                    buildDangerInput(document, baseDirectory, input, diagnostics) &&
+    const bool ok = readJsonFile(file, name, document, diagnostics) &&
+                    buildDangerInput(document, baseDirectoryOf(file), input, diagnostics) &&
                     runDanger(input, output, diagnostics, &results);
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
@@ -419,11 +301,7 @@ int dangerCommand(const std::string& file, const PictureOptions& pictures) {
             return 2;
         }
     }
-    if (!writeTextFile("-", formatJson(output), reason)) {
-        std::cerr << "foresight: cannot write the result: " << reason << '\n';
-        return 1;
-    }
-    return 0;
+    return writeJsonResult(output);
 }
 
 } // namespace foresight_cli

@@ -1,8 +1,11 @@
 #include "json_output.h"
 
+#include "text_file.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <system_error>
 
 namespace foresight_cli {
@@ -161,6 +164,13 @@ std::string shortNumber(double value) {
         text = mantissa + "e" + sign + exponent;
     }
     return text;
+}
+
+int writeJsonResult(const Json& document) {
+    std::string reason;
+    if (writeTextFile("-", formatJson(document), reason)) return 0;
+    std::cerr << "foresight: cannot write the result: " << reason << '\n';
+    return 1;
 }
 
 } // namespace foresight_cli

@@ -36,6 +36,10 @@ Json jsonQuaternion(const foresight::Quat& quaternion);
 /// Ends with a newline. Never throws on invalid UTF-8 (replaced by U+FFFD).
 std::string formatJson(const Json& value);
 
+/// Writes `document` (formatJson) to standard output: 0, or 1 after "foresight: cannot write
+/// the result: ..." on standard error (a closed pipe, a full disk).
+int writeJsonResult(const Json& document);
+
 /// `value` in the shortest general form, e.g. 5e9, 0.02, 1048576 (for error messages).
 std::string shortNumber(double value);
 

@@ -1,11 +1,9 @@
 #include "plan.h"
 
-#include "text_file.h"
+#include "json_input.h"
 
-#include <cfloat>
 #include <cmath>
 #include <iostream>
-#include <set>
 
 namespace foresight_cli {
 
@@ -13,128 +11,9 @@ using foresight::Status;
 
 namespace {
 
-std::string typeName(const Json& value) {
-    if (value.is_number()) return "a number";
-    if (value.is_string()) return "a string";
-    if (value.is_boolean()) return "a boolean";
-    if (value.is_null()) return "null";
-    if (value.is_array()) return "an array";
-    return "an object";
-}
-
-/// The members of one throw object, each read once; the rest are unknown keys.
-class Members {
-public:
-    Members(const Json& object, std::string path, Diagnostics& d) : mObject(object), mPath(std::move(path)), mD(d) {}
-
-    std::string at(const std::string& key) const { return mPath + "." + key; }
-
-    const Json* get(const char* key, bool required) {
-        mKnown.insert(key);
-        const auto found = mObject.find(key);
-        if (found != mObject.end()) return &*found;
-        if (required) mD.error(at(key), "missing required field");
-        return nullptr;
-    }
-
-    /// A finite number within the float range.
-    bool number(const char* key, bool required, float& out) {
-        const Json* value = get(key, required);
-        if (value == nullptr) return false;
-        if (!value->is_number() || !std::isfinite(value->get<double>())) {
-            mD.error(at(key), "expected a finite number, got " + typeName(*value));
-            return false;
-        }
-        if (std::fabs(value->get<double>()) > static_cast<double>(FLT_MAX)) {
-            mD.error(at(key), "expected a finite number (beyond the float range, |x| <= 3.4028235e38)");
-            return false;
-        }
-        out = static_cast<float>(value->get<double>());
-        return true;
-    }
-
-    /// A finite number `> 0` (strict) or `>= 0`; the message names the rule.
-    bool positive(const char* key, bool required, bool strict, float& out) {
-        float value = 0;
-        if (!number(key, required, value)) return false;
-        if (strict ? !(value > 0.0f) : !(value >= 0.0f)) {
-            mD.error(at(key), std::string("must be ") + (strict ? "> 0" : ">= 0") + " (got " +
-                                  shortNumber(static_cast<double>(value)) + ")");
-            return false;
-        }
-        out = value;
-        return true;
-    }
-
-    bool position(const char* key, foresight::RVec3& out) {
-        const Json* value = get(key, true);
-        if (value == nullptr) return false;
-        bool ok = value->is_array() && value->size() == 3;
-        for (std::size_t i = 0; ok && i < 3; ++i)
-            ok = (*value)[i].is_number() && std::isfinite((*value)[i].get<double>());
-        if (!ok) {
-            mD.error(at(key), "expected 3 finite numbers");
-            return false;
-        }
-        out = foresight::RVec3((*value)[0].get<double>(), (*value)[1].get<double>(), (*value)[2].get<double>());
-        return true;
-    }
-
-    bool integer(const char* key, std::int64_t low, std::int64_t high, std::uint32_t& out) {
-        const Json* value = get(key, false);
-        if (value == nullptr) return false;
-        const std::string expected = "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]";
-        const double number = value->is_number() ? value->get<double>() : NAN;
-        if (!value->is_number() || !std::isfinite(number) || number != std::trunc(number) ||
-            number < static_cast<double>(low) || number > static_cast<double>(high)) {
-            mD.error(at(key), value->is_number() ? expected : expected + ", got " + typeName(*value));
-            return false;
-        }
-        out = static_cast<std::uint32_t>(number);
-        return true;
-    }
-
-    bool boolean(const char* key, bool& out) {
-        const Json* value = get(key, false);
-        if (value == nullptr) return false;
-        if (!value->is_boolean()) {
-            mD.error(at(key), "expected true or false, got " + typeName(*value));
-            return false;
-        }
-        out = value->get<bool>();
-        return true;
-    }
-
-    bool string(const char* key, std::string& out) {
-        const Json* value = get(key, false);
-        if (value == nullptr) return false;
-        if (!value->is_string()) {
-            mD.error(at(key), "expected a string, got " + typeName(*value));
-            return false;
-        }
-        out = value->get<std::string>();
-        return true;
-    }
-
-    void finish() {
-        for (const auto& [key, value] : mObject.items()) {
-            (void)value;
-            if (mKnown.count(key) == 0) mD.error(at(key), "unknown key");
-        }
-    }
-
-    Diagnostics& diagnostics() { return mD; }
-
-private:
-    const Json& mObject;
-    std::string mPath;
-    Diagnostics& mD;
-    std::set<std::string> mKnown;
-};
-
 /// A projectile setting checked alone by the library's validator (as `predict` does).
 template <class Set>
-void checkSetting(Members& m, const char* key, Set&& set) {
+void checkSetting(Fields& m, const char* key, Set&& set) {
     foresight::ProjectileSettings probe;
     set(probe);
     const Status status = foresight::validateProjectileSettings(probe);
@@ -148,20 +27,14 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
         return;
     }
     const std::size_t errorsBefore = d.errors.size();
-    Members m(item, path, d);
+    Fields m(item, path, d);
     ThrowRequest t;
     t.path = path;
     foresight::ThrowPlanRequest& r = t.request;
     r.settings.gravity = gravity;
-    if (const Json* id = m.get("id", false)) {
-        if (id->is_string() || id->is_number_integer()) {
-            t.id = *id;
-        } else {
-            d.error(m.at("id"), "expected a string or an integer, got " + typeName(*id));
-        }
-    }
-    m.position("start", r.start);
-    m.position("target", r.target);
+    m.id(t.id);
+    m.position("start", true, r.start);
+    m.position("target", true, r.target);
     m.positive("fuse", true, true, r.fuseTime);
     m.positive("max_speed", true, true, r.maxSpeed);
     const bool okMin = m.positive("min_speed", false, false, r.minSpeed);
@@ -170,26 +43,26 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
                                        " > " + shortNumber(static_cast<double>(r.maxSpeed)) + ")");
     }
     m.positive("acceptance_radius", false, true, r.acceptanceRadius);
-    m.integer("plans", 1, 32, r.maxPlans);
+    m.integer("plans", false, 1u, 32u, r.maxPlans);
 
     std::string method;
-    if (m.string("method", method)) {
+    if (m.string("method", false, method)) {
         if (method == "exact") {
             r.settings.method = foresight::ProjectileMethod::Exact;
         } else if (method == "stepped") {
             r.settings.method = foresight::ProjectileMethod::Stepped;
         } else {
-            d.error(m.at("method"), "unknown method \"" + method + "\" (expected \"exact\" or \"stepped\")");
+            d.error(m.at("method"), "unknown method " + jsonQuoted(method) + " (expected \"exact\" or \"stepped\")");
         }
     }
     auto& s = r.settings;
-    if (m.number("step", false, s.step)) checkSetting(m, "step", [&](auto& p) { p.step = s.step; });
-    if (m.number("restitution", false, s.restitution))
+    if (m.floatNumber("step", false, s.step)) checkSetting(m, "step", [&](auto& p) { p.step = s.step; });
+    if (m.floatNumber("restitution", false, s.restitution))
         checkSetting(m, "restitution", [&](auto& p) { p.restitution = s.restitution; });
-    if (m.number("friction", false, s.friction)) checkSetting(m, "friction", [&](auto& p) { p.friction = s.friction; });
-    if (m.number("radius", false, s.radius)) checkSetting(m, "radius", [&](auto& p) { p.radius = s.radius; });
-    m.integer("max_predictions", 1, 100000, r.budget.maxPredictions);
-    m.boolean("trajectory", t.trajectory);
+    if (m.floatNumber("friction", false, s.friction)) checkSetting(m, "friction", [&](auto& p) { p.friction = s.friction; });
+    if (m.floatNumber("radius", false, s.radius)) checkSetting(m, "radius", [&](auto& p) { p.radius = s.radius; });
+    m.integer("max_predictions", false, 1u, 100000u, r.budget.maxPredictions);
+    m.boolean("trajectory", false, t.trajectory);
     m.finish();
     if (d.errors.size() != errorsBefore) return;
     // What the fields above cannot see alone (the work cap of fuse / step).
@@ -332,28 +205,17 @@ Json planResultDocument(const std::vector<ThrowRequest>& throws, const std::vect
 
 int planCommand(const std::string& file) {
     Diagnostics diagnostics;
-    const std::string name = file == "-" ? std::string("<stdin>") : file;
-    std::string text, reason;
-    if (!readTextFile(file, text, reason)) {
-        std::cerr << name << ": cannot read: " << reason << '\n';
-        return 2;
-    }
+    std::string name;
     Json document;
     Scenario world;
     std::vector<ThrowRequest> throws;
     std::vector<ThrowOutcome> outcomes;
-    const std::filesystem::path baseDirectory =
-        file == "-" ? std::filesystem::path() : std::filesystem::path(file).parent_path();
-    const bool ok = parseJsonText(text, name, document, diagnostics) &&
-                    buildPlanDocument(document, baseDirectory, world, throws, diagnostics) &&
+    const bool ok = readJsonFile(file, name, document, diagnostics) &&
+                    buildPlanDocument(document, baseDirectoryOf(file), world, throws, diagnostics) &&
                     runPlans(world, throws, outcomes, diagnostics);
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
-    if (!writeTextFile("-", formatJson(planResultDocument(throws, outcomes)), reason)) {
-        std::cerr << "foresight: cannot write the result: " << reason << '\n';
-        return 1;
-    }
-    return 0;
+    return writeJsonResult(planResultDocument(throws, outcomes));
 }
 
 } // namespace foresight_cli

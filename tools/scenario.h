@@ -7,12 +7,12 @@
 /// and collected, so one run lists all of them. A field is optional exactly when the format
 /// gives it a default; everything else that a model uses is required.
 
+#include "json_input.h"
 #include "json_output.h"
 
 #include <foresight/foresight.h>
 
 #include <filesystem>
-#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,16 +20,6 @@
 namespace foresight_cli {
 
 struct PictureOptions;  // picture.h
-
-/// Problems (exit status 2) and warnings found while reading or running a scenario.
-struct Diagnostics {
-    std::vector<std::string> errors;   ///< one line each, "path: message".
-    std::vector<std::string> warnings; ///< one line each, printed with a "warning: " prefix.
-
-    void error(const std::string& path, const std::string& message);
-    void warning(const std::string& path, const std::string& message);
-    bool ok() const { return errors.empty(); }
-};
 
 /// The prediction models of the format.
 enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle, DeadReckoning };
@@ -85,14 +75,6 @@ struct PredictionResult {
     std::vector<foresight::TrajectoryPoint> trajectory;    ///< projectile with "trajectory": true.
 };
 
-/// Deepest nesting of arrays and objects accepted in a scenario (the format needs 4).
-inline constexpr int kMaxJsonDepth = 64;
-
-/// Parses JSON text. Syntax errors (with line and column) and too deep nesting are reported
-/// as `name: ...` and return false; duplicate keys are reported with their path (the document
-/// is still returned, so that validation can find more problems).
-bool parseJsonText(const std::string& text, const std::string& name, Json& document, Diagnostics& diagnostics);
-
 /// Validates a parsed scenario and loads its meshes (relative to `baseDirectory`).
 /// Returns diagnostics.ok().
 bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
@@ -113,9 +95,6 @@ Json resultJson(const Prediction& prediction, const PredictionResult& result);
 
 /// Lower-case name of a trajectory event ("start", "step", "bounce", "rest", "hit", "end").
 const char* eventName(foresight::TrajectoryEvent event);
-
-/// Prints warnings and errors to `err`, one per line.
-void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err);
 
 /// `foresight predict FILE`: reads FILE ("-": standard input), writes the result to standard
 /// output. Returns the exit status: 0, or 2 with nothing on standard output.
