@@ -45,26 +45,26 @@ glm::dquat rotationExp(const glm::dvec3& w, double time) {
 
 class Profile {
 public:
-    explicit Profile(double initial = 0) : m_initial(initial) {}
+    explicit Profile(double initial = 0) : mInitial(initial) {}
 
     /// From `start`, ramp to `target` over `length` seconds. Ramps must come in time order and
     /// not overlap.
     void rampTo(double start, double length, double target) {
         Ramp ramp{start, length, target - finalValue(), finalValue(), 0};
-        if (m_ramps.empty()) {
-            ramp.integralAtStart = m_initial * start;
+        if (mRamps.empty()) {
+            ramp.integralAtStart = mInitial * start;
         } else {
-            const Ramp& last = m_ramps.back();
+            const Ramp& last = mRamps.back();
             ramp.integralAtStart = last.integralAtStart + last.valueAtStart * (start - last.start) +
                                    last.delta * (0.5 * last.length + (start - last.start - last.length));
         }
-        m_ramps.push_back(ramp);
+        mRamps.push_back(ramp);
     }
-    double finalValue() const { return m_ramps.empty() ? m_initial : m_ramps.back().valueAtStart + m_ramps.back().delta; }
+    double finalValue() const { return mRamps.empty() ? mInitial : mRamps.back().valueAtStart + mRamps.back().delta; }
 
     double value(double t) const {
         const Ramp* ramp = find(t);
-        if (ramp == nullptr) return m_initial;
+        if (ramp == nullptr) return mInitial;
         const double u = std::min((t - ramp->start) / ramp->length, 1.0);
         return ramp->valueAtStart + ramp->delta * u * u * (3 - 2 * u);
     }
@@ -83,7 +83,7 @@ public:
     /// The integral over [0, t].
     double integral(double t) const {
         const Ramp* ramp = find(t);
-        if (ramp == nullptr) return m_initial * t;
+        if (ramp == nullptr) return mInitial * t;
         const double since = t - ramp->start;
         double ramped;  // integral of the ramp's own smoothstep part, times delta
         if (since < ramp->length) {
@@ -101,12 +101,12 @@ private:
     };
     /// The last ramp that starts at or before t (nullptr: before every ramp).
     const Ramp* find(double t) const {
-        const auto after = std::upper_bound(m_ramps.begin(), m_ramps.end(), t,
+        const auto after = std::upper_bound(mRamps.begin(), mRamps.end(), t,
                                             [](double time, const Ramp& r) { return time < r.start; });
-        return after == m_ramps.begin() ? nullptr : &*(after - 1);
+        return after == mRamps.begin() ? nullptr : &*(after - 1);
     }
-    double m_initial;
-    std::vector<Ramp> m_ramps;
+    double mInitial;
+    std::vector<Ramp> mRamps;
 };
 
 // --------------------------------------------------------------------------------------------
@@ -534,17 +534,17 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
 // --------------------------------------------------------------------------------------------
 // Link
 
-Link::Link(const LinkSettings& settings) : m_settings(settings), m_engine(settings.seed) {}
+Link::Link(const LinkSettings& settings) : mSettings(settings), mEngine(settings.seed) {}
 
-double Link::uniform() { return uniform01(m_engine); }
+double Link::uniform() { return uniform01(mEngine); }
 
 bool Link::transmit(double& delay) {
     // Both draws happen for every packet, so a packet's jitter does not depend on the fates of
     // the packets before it.
-    const bool lost = uniform() < m_settings.loss;
-    const double jitter = m_settings.jitter * (2 * uniform() - 1);
+    const bool lost = uniform() < mSettings.loss;
+    const double jitter = mSettings.jitter * (2 * uniform() - 1);
     if (lost) return false;
-    delay = std::max(0.0, m_settings.latency + jitter);
+    delay = std::max(0.0, mSettings.latency + jitter);
     return true;
 }
 
@@ -943,7 +943,7 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
            "\" font-size=\"12\" text-anchor=\"middle\">time [s]</text>\n";
     svg += "<text x=\"18\" y=\"" + n(kTop + kPlotHeight / 2) + "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " +
            n(kTop + kPlotHeight / 2) + ")\">position error [m]</text>\n";
-    const double kLegendLeft = kLeft + kPlotWidth - 200;
+    const double legendLeft = kLeft + kPlotWidth - 200;
     const auto legendY = [&](std::size_t i) { return kTop + 22 + 16 * static_cast<double>(i); };
     std::string legend;
     for (std::size_t i = 0; i < model.displays.size(); ++i) {
@@ -969,13 +969,13 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
             k = last + 1;
         }
         svg += "<polyline fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"1.2\" points=\"" + points + "\"/>\n";
-        legend += "<line x1=\"" + n(kLegendLeft + 8) + "\" y1=\"" + n(legendY(i) - 4) + "\" x2=\"" + n(kLegendLeft + 30) +
+        legend += "<line x1=\"" + n(legendLeft + 8) + "\" y1=\"" + n(legendY(i) - 4) + "\" x2=\"" + n(legendLeft + 30) +
                   "\" y2=\"" + n(legendY(i) - 4) + "\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
-        legend += "<text x=\"" + n(kLegendLeft + 36) + "\" y=\"" + n(legendY(i)) + "\" font-size=\"11\">" +
+        legend += "<text x=\"" + n(legendLeft + 36) + "\" y=\"" + n(legendY(i)) + "\" font-size=\"11\">" +
                   displayName(d.display) + format(" (p95 %.2f m)", d.position.p95) + "</text>\n";
     }
     // The legend last, on a white box above the lines.
-    svg += "<rect x=\"" + n(kLegendLeft) + "\" y=\"" + n(kTop + 6) + "\" width=\"190\" height=\"" +
+    svg += "<rect x=\"" + n(legendLeft) + "\" y=\"" + n(kTop + 6) + "\" width=\"190\" height=\"" +
            n(16 * static_cast<double>(model.displays.size()) + 8) + "\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n";
     svg += legend;
     svg += "</svg>\n";

@@ -94,8 +94,8 @@ public:
 
 private:
     double uniform(); // [0, 1), 53 bits
-    LinkSettings m_settings;
-    std::mt19937_64 m_engine;
+    LinkSettings mSettings;
+    std::mt19937_64 mEngine;
 };
 
 /// The receiver variants compared: the four smoothings of Extrapolate mode, and Interpolate.
