@@ -271,7 +271,7 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
         ->type_name("MS");
     netsim->add_flag("--json", o.json, "write every result as JSON instead of the table");
     netsim->add_flag("--markdown", o.markdown, "write the README's summary table (Markdown) instead");
-    netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory and model) to FILE")
+    netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory, first model other than STATIC) to FILE")
         ->type_name("FILE");
     netsim->final_callback([&o, duration] { o.durationGiven = duration->count() > 0; });
     return netsim;
@@ -342,7 +342,15 @@ int netsimCommand(NetsimOptions options) {
     if (showProgress) std::fprintf(stderr, "\r%70s\r", "");
 
     std::string reason;
-    if (!options.svgFile.empty() && !writeTextFile(options.svgFile, ns::svgChart(results.front(), 0, settings), reason)) {
+    // The chart shows the first dead-reckoning model (STATIC, when listed first, is the
+    // no-prediction baseline: the table has it), else the first model.
+    std::size_t chartModel = 0;
+    const auto& chartModels = results.front().models;
+    while (chartModel + 1 < chartModels.size() &&
+           chartModels[chartModel].model == foresight::DeadReckoningAlgorithm::Static)
+        ++chartModel;
+    if (!options.svgFile.empty() &&
+        !writeTextFile(options.svgFile, ns::svgChart(results.front(), chartModel, settings), reason)) {
         std::cerr << options.svgFile << ": cannot write: " << reason << '\n';
         return 2;
     }
