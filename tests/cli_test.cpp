@@ -822,7 +822,7 @@ TEST_F(cli, DemoShowsTheAiUses) {
     EXPECT_LE(std::hypot(end[0] + 14.4, end[1] - 1.875, end[2] - 14.4), 1.0);
     EXPECT_GE(thrown.at("bounces").get<int>(), 1);
     // The pedestrian is drawn beside the car.
-    EXPECT_EQ(byId(output, "pedestrian").at("model"), "linear");
+    EXPECT_EQ(byId(output, "pedestrian").at("model"), "accelerated");
 }
 
 TEST_F(cli, DemoWritesFiles) {

@@ -255,9 +255,11 @@ void appendAiPredictions(const DemoAi& ai, Json& scenario) {
     predictions.push_back(Json{{"id", "planned_throw"}, {"model", "projectile"}, {"method", "exact"},
                                {"position", jsonArray3(kThrowStart)}, {"velocity", jsonVector(ai.plans[0].launchVelocity)},
                                {"time", jsonFloat(kThrowFuse)}, {"step", 0.02}, {"restitution", 0.5}});
-    predictions.push_back(Json{{"id", "pedestrian"}, {"model", "linear"}, {"position", jsonArray3(kPedestrian)},
+    // "accelerated" with no acceleration: the same path as "linear", which the pictures would
+    // label as the article's method (a comparison this is not).
+    predictions.push_back(Json{{"id", "pedestrian"}, {"model", "accelerated"}, {"position", jsonArray3(kPedestrian)},
                                {"velocity", jsonVector(demoVector(kPedestrianVelocity))},
-                               {"time", jsonFloat(kPedestrianTime)}});
+                               {"acceleration", Json::array({0, 0, 0})}, {"time", jsonFloat(kPedestrianTime)}});
 }
 
 /// The base scenario (the literal above) built with the demo level in memory.
