@@ -8,8 +8,11 @@
 ///                       plan = 1000 / items_per_second, or the time column / 32);
 ///                       counters: success (share of pairs with >= 1 plan),
 ///                       plans/pair, predictions/pair.
-///   BM_Plan/BehindCover for information: the same starts, targets hidden behind the pillars
-///                       (x = 9.9, just east of each) and the crates: harder, the grid runs.
+///   BM_Plan/BehindCover the same starts, targets hidden behind the pillars (x = 9.9, just
+///                       east of each) and the crates: harder, the grid runs (at the budget's
+///                       coarse gridStep, 0.1 s).
+///   BM_Plan/BehindCoverFineGrid  the same with the grid at the request's step (gridStep 0):
+///                       what the coarse grid saves.
 /// Target: BM_Plan/Courtyard under 5 ms per plan. One thread.
 
 #include "bench_scenes.h"
@@ -77,7 +80,7 @@ std::array<Pair, kPairCount> coverPairs() {
     return pairs;
 }
 
-ThrowPlanRequest requestFor(const Pair& pair) {
+ThrowPlanRequest requestFor(const Pair& pair, bool fineGrid = false) {
     ThrowPlanRequest r;
     r.start = pair.start;
     r.target = pair.target;
@@ -87,10 +90,11 @@ ThrowPlanRequest requestFor(const Pair& pair) {
     r.maxPlans = 3;
     r.settings.step = 0.02f;
     r.settings.restitution = 0.5f;
+    if (fineGrid) r.budget.gridStep = 0.0f;  // the grid at the request's own step
     return r;
 }
 
-void BM_Plan(benchmark::State& state, bool cover) {
+void BM_Plan(benchmark::State& state, bool cover, bool fineGrid) {
     const EmbreeWorld& world = levelWorld();
     const std::array<Pair, kPairCount> pairs = cover ? coverPairs() : courtyardPairs();
     std::vector<ThrowPlan> plans(3);
@@ -99,7 +103,7 @@ void BM_Plan(benchmark::State& state, bool cover) {
     for (auto _ : state) {
         for (const Pair& pair : pairs) {
             ThrowPlanResult result;
-            const Status status = planThrow(requestFor(pair), &world, plans, scratch, result);
+            const Status status = planThrow(requestFor(pair, fineGrid), &world, plans, scratch, result);
             if (status != Status::Ok) {
                 state.SkipWithError(statusMessage(status));
                 return;
@@ -118,8 +122,9 @@ void BM_Plan(benchmark::State& state, bool cover) {
     state.counters["plans/pair"] = static_cast<double>(planCount) / n;
     state.counters["predictions/pair"] = static_cast<double>(predictions) / n;
 }
-BENCHMARK_CAPTURE(BM_Plan, Courtyard, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Plan, BehindCover, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Plan, Courtyard, false, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Plan, BehindCover, true, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Plan, BehindCoverFineGrid, true, true)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -35,6 +35,7 @@ struct Candidate {
     DVec3 impactNormal{0};
     DVec3 impactPosition{0};
     DVec3 residual{0};           // final position - target [m]
+    bool coarse = false;         // predicted with the grid's coarse step: not verified
 };
 
 /// The planner's state for one call (all on the stack).
@@ -98,15 +99,26 @@ private:
 
     // ---- the forward model ----------------------------------------------------------------
 
-    /// Runs one prediction; false when the budget is spent (candidate untouched).
-    bool evaluate(const DVec3& velocity, Candidate& c) {
+    /// True when the grid predicts with a coarser step than the request's (gridStep).
+    bool coarseGrid() const {
+        return mRequest.settings.method == ProjectileMethod::Exact &&
+               mRequest.budget.gridStep > mRequest.settings.step;
+    }
+
+    /// Runs one prediction; false when the budget is spent (candidate untouched). `velocity` is
+    /// taken by value: callers may pass the candidate's own velocity. A coarse
+    /// prediction (the grid's step) is only a ranking: it is neither a plan nor the closest.
+    bool evaluate(const DVec3 velocity, Candidate& c, bool coarse = false) {
         if (budgetSpent()) return false;
         ++mPredictions;
         c = Candidate();
         c.velocity = velocity;
+        c.coarse = coarse;
+        ProjectileSettings settings = mRequest.settings;
+        if (coarse) settings.step = mRequest.budget.gridStep;
         ProjectileResult result;
         const Status status = predictProjectile(mRequest.start, Vec3(velocity), mRequest.fuseTime,
-                                                mRequest.settings, mWorld, mScratch, result);
+                                                settings, mWorld, mScratch, result);
         if (status != Status::Ok) return true; // a miss: work caps or overflow on this throw
         c.result = result;
         c.residual = toD(result.position) - mTarget;
@@ -122,6 +134,7 @@ private:
                 break;
             }
         }
+        if (coarse) return true;
         if (c.distance < mClosest.distance) mClosest = c;
         consider(c);
         return true;
@@ -268,8 +281,12 @@ private:
                   [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
         for (std::size_t i = 0; i < count && !done(); ++i) {
             if (mRefinements >= mRequest.budget.refinements) return;
-            const Candidate& c = list[i];
+            Candidate c = list[i];
             if (!std::isfinite(c.distance)) return;
+            // A coarse grid cell: predicted again with the request's settings first (which may
+            // accept it as it is). DVec3(...) copies: evaluate resets c.
+            if (c.coarse && (!evaluate(DVec3(c.velocity), c) || done())) return;
+            if (!std::isfinite(c.distance)) continue;
             if (c.distance <= mRadius * kRefinementGoal || nearAcceptedPlan(c)) continue;
             ++mRefinements;
             refine(c);
@@ -387,7 +404,10 @@ private:
                         std::cos(elevation) * (std::cos(azimuth) * mForward + std::sin(azimuth) * mSide) +
                         std::sin(elevation) * mUp;
                     Candidate c;
-                    if (!evaluate(direction * speed, c)) return;
+                    if (!evaluate(direction * speed, c, coarseGrid())) return;
+                    // A coarse cell that ends near the target is verified at once: it may be a
+                    // plan as it is, and the grid can stop early as with fine cells.
+                    if (c.coarse && c.distance <= 2 * mRadius && !evaluate(DVec3(c.velocity), c)) return;
                     keepCell(c, cosNeighbour, speed);
                 }
             }
@@ -461,6 +481,7 @@ Status validateThrowPlanRequest(const ThrowPlanRequest& request) {
         b.speedSamples == 0 || b.refinements == 0 || b.refinements > kMaxThrowPlanRefinements ||
         b.refinementPredictions == 0 || b.maxPredictions == 0)
         return Status::InvalidIterations;
+    if (!std::isfinite(request.budget.gridStep) || request.budget.gridStep < 0.0f) return Status::InvalidStep;
     if (steppedStepCount(request.fuseTime, request.settings.step) > request.settings.maxSteps)
         return Status::TooManySteps;
     return Status::Ok;

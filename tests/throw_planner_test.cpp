@@ -231,6 +231,22 @@ TEST_F(ThrowPlannerBank, TargetBehindAWallIsReachedOffTheOtherWall) {
     EXPECT_GE(singleBounce, 1);
 }
 
+// The grid's coarse step (budget.gridStep) only ranks cells: with the request's own step for the
+// grid (gridStep 0) the bank shot is found as well, and every plan of either is verified with
+// the request's settings (expectValidPlans flies each with them).
+TEST_F(ThrowPlannerBank, CoarseAndFineGridsBothFindTheBankShot) {
+    for (const float gridStep : {0.0f, 0.1f, 0.25f}) {
+        ThrowPlanRequest r = request(rv(0, 1.5, 0), rv(0, 1.5, 14));
+        r.fuseTime = 1.5f;
+        r.acceptanceRadius = 0.3f;
+        r.budget.gridStep = gridStep;
+        const Planning p(r, &world, 2);
+        ASSERT_EQ(p.status, Status::Ok);
+        EXPECT_GE(p.result.planCount, 1u) << "grid step " << gridStep;
+        expectValidPlans(r, p, &world);
+    }
+}
+
 // The same target with the plane removed: nothing works, and that is an empty answer.
 TEST_F(ThrowPlannerBank, WithoutTheBankWallNothingIsFound) {
     StaticWorld blocked;
@@ -313,6 +329,8 @@ TEST_F(ThrowPlanner, BadInputIsRefusedWithAStatusAndNothingWritten) {
          Status::InvalidIterations},
         {"restitution 2", [](ThrowPlanRequest& r, float) { r.settings.restitution = 2.0f; }, Status::InvalidRestitution},
         {"zero step", [](ThrowPlanRequest& r, float) { r.settings.step = 0.0f; }, Status::InvalidStep},
+        {"negative grid step", [](ThrowPlanRequest& r, float) { r.budget.gridStep = -0.1f; }, Status::InvalidStep},
+        {"NaN grid step", [](ThrowPlanRequest& r, float n) { r.budget.gridStep = n; }, Status::InvalidStep},
         {"fuse over the step cap", [](ThrowPlanRequest& r, float) { r.fuseTime = 1e6f; }, Status::TooManySteps},
     };
     for (const Case& c : cases) {

@@ -49,6 +49,15 @@ struct ThrowPlanBudget {
     std::uint32_t refinements = 6;
     std::uint32_t refinementPredictions = 24; ///< predictions per refinement at most.
     std::uint32_t maxPredictions = 400;  ///< predictions per planThrow call at most, in total.
+    /// Grid: the time step of the grid's predictions when it is longer than the request's step
+    /// and the method is Exact [Units: s] [Limit: >= 0, finite; 0: the request's step]. The
+    /// exact method stays on the true parabola whatever the step (only its chord casts get
+    /// longer: a surface the arc grazes by less than g step^2 / 8, 1.2 cm at 0.1 s, may be
+    /// missed), so a coarse grid ranks the cells almost as the fine one does, for less (on the
+    /// demo level, planning behind cover takes 0.6 times as long). Grid results are never plans
+    /// by themselves: a cell is predicted again with the request's settings before it is
+    /// accepted or refined.
+    float gridStep = 0.1f;
     /// Seeds: first landing at these fractions of the fuse time [Limit: (0, 1]; others are
     /// skipped]. 1 is the arc that arrives at the fuse time without touching the ground.
     std::array<float, 5> seedLandingFractions{0.12f, 0.25f, 0.4f, 0.6f, 1.0f};
@@ -101,7 +110,7 @@ struct ThrowPlanResult {
 /// (fuseTime <= 0: a zero fuse is refused too), InvalidRadius (acceptanceRadius <= 0),
 /// InvalidSpeed (maxSpeed <= 0, or minSpeed outside [0, maxSpeed]: no launch velocity exists),
 /// InvalidIterations (maxPlans or a budget count is 0, or refinements over
-/// kMaxThrowPlanRefinements),
+/// kMaxThrowPlanRefinements), InvalidStep (budget.gridStep negative or not finite),
 /// what validateProjectileSettings returns for the settings, or TooManySteps (fuseTime / step
 /// over settings.maxSteps).
 Status validateThrowPlanRequest(const ThrowPlanRequest& request);
