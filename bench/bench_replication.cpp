@@ -6,6 +6,13 @@
 /// between 0 and 0.25 s old. One iteration is one frame.
 ///
 ///   BM_Replication/Batch      predictDeadReckoningBatch over the 100 000 (one call)
+///   BM_Replication/Prepared   extrapolateDeadReckoning over the same 100 000, prepared once
+///                             with prepareDeadReckoning (not timed: once per update, not
+///                             per frame), extrapolation limit 0.25 s
+///   BM_Replication/Prepared/FPW, /RVW, /RPB, /RVB  the same with every entity on one model
+///   BM_Replication/SoA        DeadReckoningBatch::extrapolate over the same 100 000 (the
+///                             updates set once, not timed), limit 0.25 s: the fast path
+///   BM_Replication/SoA/FPW, /RVW, /RPB, /RVB      the same with every entity on one model
 ///   BM_Replication/PlainLoop  the loop a game writes without dead reckoning models: p + v t
 ///                             over the same arrays (velocity and orientation copied)
 ///   BM_Replication/Receivers  DeadReckoningReceiver::sample for 10 000 receivers (PVB, each
@@ -13,8 +20,8 @@
 ///                             interpolation ring (sizeof in the counter), so 100 000 would
 ///                             need ~300 MB: the time scales linearly.
 /// The time column is per frame; items_per_second counts entities (receivers).
-/// Target: Batch under 1 ms per frame. scripts/bench.sh --replication prints the time and the
-/// ratio Batch / PlainLoop from one run's medians.
+/// Target: under 1 ms per frame. scripts/bench.sh --replication prints the times and the
+/// ratios to PlainLoop from one run's medians.
 
 #include "bench_scenes.h"
 
@@ -38,6 +45,7 @@ constexpr double kNow = 3600.0;  // [s], an hour into the session
 struct Entities {
     std::vector<DeadReckoningState> states;
     std::vector<double> timestamps;
+    std::vector<PreparedDeadReckoning> prepared;
 };
 
 DeadReckoningAlgorithm mixedAlgorithm(float u) {
@@ -47,26 +55,43 @@ DeadReckoningAlgorithm mixedAlgorithm(float u) {
     return DeadReckoningAlgorithm::Rvb;
 }
 
-const Entities& entities() {
-    static const Entities e = [] {
-        Entities r;
-        r.states.resize(kEntityCount);
-        r.timestamps.resize(kEntityCount);
-        Random random(6);
-        for (std::size_t i = 0; i < kEntityCount; ++i) {
-            DeadReckoningState& s = r.states[i];
-            s.algorithm = mixedAlgorithm(random.uniform(0.0f, 1.0f));
-            s.position = RVec3(random.uniform(-1000, 1000), random.uniform(0, 50), random.uniform(-1000, 1000));
-            s.velocity = Vec3(random.uniform(-10, 10), random.uniform(-1, 1), random.uniform(-10, 10));
-            s.acceleration = Vec3(random.uniform(-3, 3), random.uniform(-9.81f, 0), random.uniform(-3, 3));
-            s.orientation = glm::angleAxis(random.uniform(-3.14f, 3.14f), Vec3(0, 1, 0));
-            if (deadReckoningRotates(s.algorithm))
-                s.angularVelocity = Vec3(random.uniform(-0.2f, 0.2f), random.uniform(-2, 2), random.uniform(-0.2f, 0.2f));
-            r.timestamps[i] = kNow - static_cast<double>(random.uniform(0.0f, 0.25f));
-        }
-        return r;
-    }();
-    return e;
+// The 100 000 entities; `only` puts every one on that model (Static: the mix), with the same
+// random positions, velocities and ages.
+Entities makeEntities(DeadReckoningAlgorithm only) {
+    Entities r;
+    r.states.resize(kEntityCount);
+    r.timestamps.resize(kEntityCount);
+    r.prepared.resize(kEntityCount);
+    Random random(6);
+    for (std::size_t i = 0; i < kEntityCount; ++i) {
+        DeadReckoningState& s = r.states[i];
+        const DeadReckoningAlgorithm mixed = mixedAlgorithm(random.uniform(0.0f, 1.0f));
+        s.algorithm = only == DeadReckoningAlgorithm::Static ? mixed : only;
+        s.position = RVec3(random.uniform(-1000, 1000), random.uniform(0, 50), random.uniform(-1000, 1000));
+        s.velocity = Vec3(random.uniform(-10, 10), random.uniform(-1, 1), random.uniform(-10, 10));
+        s.acceleration = Vec3(random.uniform(-3, 3), random.uniform(-9.81f, 0), random.uniform(-3, 3));
+        s.orientation = glm::angleAxis(random.uniform(-3.14f, 3.14f), Vec3(0, 1, 0));
+        const Vec3 w(random.uniform(-0.2f, 0.2f), random.uniform(-2, 2), random.uniform(-0.2f, 0.2f));
+        if (deadReckoningRotates(s.algorithm)) s.angularVelocity = w;
+        r.timestamps[i] = kNow - static_cast<double>(random.uniform(0.0f, 0.25f));
+        if (prepareDeadReckoning(s, r.timestamps[i], r.prepared[i]) != Status::Ok) r.prepared.clear();
+    }
+    return r;
+}
+
+const Entities& entities(DeadReckoningAlgorithm only = DeadReckoningAlgorithm::Static) {
+    static const Entities mixed = makeEntities(DeadReckoningAlgorithm::Static);
+    static const Entities fpw = makeEntities(DeadReckoningAlgorithm::Fpw);
+    static const Entities rvw = makeEntities(DeadReckoningAlgorithm::Rvw);
+    static const Entities rpb = makeEntities(DeadReckoningAlgorithm::Rpb);
+    static const Entities rvb = makeEntities(DeadReckoningAlgorithm::Rvb);
+    switch (only) {
+        case DeadReckoningAlgorithm::Fpw: return fpw;
+        case DeadReckoningAlgorithm::Rvw: return rvw;
+        case DeadReckoningAlgorithm::Rpb: return rpb;
+        case DeadReckoningAlgorithm::Rvb: return rvb;
+        default: return mixed;
+    }
 }
 
 void BM_Batch(benchmark::State& state) {
@@ -75,6 +100,44 @@ void BM_Batch(benchmark::State& state) {
     std::size_t refused = 0;
     for (auto _ : state) {
         refused += predictDeadReckoningBatch(e.states, e.timestamps, kNow, out);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    if (refused != 0) state.SkipWithError("entities were refused");
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
+}
+
+// Argument: the model of every entity (DIS value), or 1 (STATIC) for the mix.
+void BM_Prepared(benchmark::State& state) {
+    const Entities& e = entities(static_cast<DeadReckoningAlgorithm>(state.range(0)));
+    if (e.prepared.size() != kEntityCount) {
+        state.SkipWithError("prepareDeadReckoning refused an entity");
+        return;
+    }
+    std::vector<DeadReckoningResult> out(kEntityCount);
+    std::size_t refused = 0;
+    for (auto _ : state) {
+        refused += extrapolateDeadReckoning(e.prepared, kNow, 0.25f, out);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    if (refused != 0) state.SkipWithError("entities were refused");
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
+}
+
+// Argument: as BM_Prepared.
+void BM_SoA(benchmark::State& state) {
+    const Entities& e = entities(static_cast<DeadReckoningAlgorithm>(state.range(0)));
+    if (e.prepared.size() != kEntityCount) {
+        state.SkipWithError("prepareDeadReckoning refused an entity");
+        return;
+    }
+    DeadReckoningBatch batch(kEntityCount);
+    for (std::size_t i = 0; i < kEntityCount; ++i) (void)batch.set(i, e.prepared[i]);
+    std::vector<DeadReckoningResult> out(kEntityCount);
+    std::size_t refused = 0;
+    for (auto _ : state) {
+        refused += batch.extrapolate(kNow, 0.25f, out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -129,6 +192,16 @@ void BM_Receivers(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Batch)->Name("BM_Replication/Batch")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared")->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/FPW")->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SoA)->Name("BM_Replication/SoA")->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/FPW")->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlainLoop)->Name("BM_Replication/PlainLoop")->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Receivers)->Name("BM_Replication/Receivers")->Unit(benchmark::kMicrosecond);
 

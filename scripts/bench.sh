@@ -9,8 +9,9 @@
 #        scripts/bench.sh --planning [benchmark options...]   throw planning on the demo level
 #            (bench/bench_planning.cpp, Embree backend): ms per plan, target < 5; success rate
 #        scripts/bench.sh --replication [benchmark options...]   dead reckoning for 100 000
-#            entities per frame (bench/bench_replication.cpp): predictDeadReckoningBatch against
-#            a plain p + v t loop, ms per frame (target < 1) and the ratio; receiver samples
+#            entities per frame (bench/bench_replication.cpp): predictDeadReckoningBatch, the
+#            prepared forms (extrapolateDeadReckoning, DeadReckoningBatch: mix and per model)
+#            against a plain p + v t loop, ms per frame (target < 1) and ratios; receivers
 #        scripts/bench.sh --worlds [benchmark options...]
 #            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
 #            backends): segment casts per second on a mesh of a million triangles through
@@ -159,7 +160,7 @@ fi
 
 if [[ "${1:-}" == "--replication" ]]; then
     # Replication (bench/bench_replication.cpp): one frame of 100 000 entities through
-    # predictDeadReckoningBatch and through a plain p + v t loop, from this run's medians.
+    # predictDeadReckoningBatch, the prepared forms and a plain p + v t loop, this run's medians.
     shift
     dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
     out=${FORESIGHT_BENCH_OUT:-$dir/bench_replication.json}
@@ -174,18 +175,29 @@ if [[ "${1:-}" == "--replication" ]]; then
     echo "Replication, 100 000 entities per frame, medians of this run ($out); one thread:"
     medians "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
         { rate[$1] = $2 }
+        function ms(name) { return 1e8 / rate[name] }  # ms per frame of 100 000
+        function row(label, name) {
+            if (name in rate)
+                printf "  %-46s %8.3f ms per frame  %6.2fx the plain loop\n", label, ms(name), ms(name) / p
+        }
         END {
-            batch = "BM_Replication/Batch"; plain = "BM_Replication/PlainLoop"; receivers = "BM_Replication/Receivers"
-            if (!(batch in rate) || !(plain in rate)) { print "  not measured (filtered out?)"; exit 0 }
-            b = 1e8 / rate[batch]; p = 1e8 / rate[plain]  # ms per frame of 100 000
-            printf "  %-44s %8.3f ms per frame (target < 1: %s)\n", "predictDeadReckoningBatch (mixed models)", b,
-                   (b < 1 ? "met" : "MISSED")
-            printf "  %-44s %8.3f ms per frame\n", "plain loop p + v t", p
-            printf "  %-44s %8.2fx\n", "ratio batch / plain loop", b / p
+            plain = "BM_Replication/PlainLoop"; soa = "BM_Replication/SoA"; receivers = "BM_Replication/Receivers"
+            if (!(plain in rate)) { print "  not measured (filtered out?)"; exit 0 }
+            p = ms(plain)
+            printf "  %-46s %8.3f ms per frame\n", "plain loop p + v t (the reference)", p
+            row("predictDeadReckoningBatch (mix, bit-identical)", "BM_Replication/Batch")
+            row("extrapolateDeadReckoning (mix, prepared AoS)", "BM_Replication/Prepared/1")
+            row("DeadReckoningBatch::extrapolate (mix, SoA)", soa "/1")
+            row("  all FPW", soa "/FPW/2")
+            row("  all RVW", soa "/RVW/4")
+            row("  all RPB", soa "/RPB/7")
+            row("  all RVB", soa "/RVB/8")
+            if ((soa "/1") in rate)
+                printf "  %-46s %s\n", "target: DeadReckoningBatch (mix) < 1 ms", (ms(soa "/1") < 1 ? "met" : "MISSED")
             if (receivers in rate)
-                printf "  %-44s %8.1f ns per receiver (%.2f ms for 100 000)\n", "DeadReckoningReceiver::sample (PVB)",
+                printf "  %-46s %8.1f ns per receiver (%.2f ms for 100 000)\n", "DeadReckoningReceiver::sample (PVB)",
                        1e9 / rate[receivers], 1e8 / rate[receivers]
-            if (b >= 1 && strict == 1) exit 1
+            if ((soa "/1") in rate && ms(soa "/1") >= 1 && strict == 1) exit 1
         }'
     exit 0
 fi

@@ -510,4 +510,448 @@ std::size_t predictDeadReckoningBatch(std::span<const DeadReckoningState> states
     return refused;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Prepared extrapolation
+
+namespace {
+
+enum : std::uint8_t { kKernelStatic = 0, kKernelWorld = 1, kKernelBody = 2 };
+
+// sin, cos and sin(h)/h of h >= 0 (the half angle |w| t / 2), in float after a double range
+// reduction; pure arithmetic (no libm below kReductionLimit), so the same everywhere.
+struct SinCos {
+    float sine;
+    float cosine;
+    float sinc;  // sin(h) / h, 1 at h = 0
+};
+
+// Cody-Waite reduction by pi/2 (fdlibm's split: kPiOver2Head has 33 significant bits, so
+// k * kPiOver2Head is exact for k < 2^20 and h - k * kPiOver2Head is exact; the tail adds the
+// next 53 bits): |r| <= pi/4 within ~1e-17 absolute.
+constexpr double kTwoOverPi = 6.36619772367581382433e-01;
+constexpr double kPiOver2Head = 1.57079632673412561417e+00;
+constexpr double kPiOver2Tail = 6.07710050650619224932e-11;
+constexpr double kReductionLimit = 823549.6;  // 2^19 pi/2: k stays below 2^20
+
+SinCos sinCosHalfAngle(double h) {
+    SinCos out;
+    if (!(h < kReductionLimit)) {
+        // Beyond any sensible age (|w| t > 1.6e6 rad): libm's double sin/cos, as
+        // predictDeadReckoning uses.
+        out.sine = static_cast<float>(std::sin(h));
+        out.cosine = static_cast<float>(std::cos(h));
+        out.sinc = static_cast<float>(std::sin(h) / h);
+        return out;
+    }
+    const auto k = static_cast<std::int32_t>(h * kTwoOverPi + 0.5);
+    const double kd = static_cast<double>(k);
+    const auto r = static_cast<float>((h - kd * kPiOver2Head) - kd * kPiOver2Tail);
+    const float z = r * r;
+    // Cephes sinf/cosf minimax polynomials on [-pi/4, pi/4] (about 1 ulp in float).
+    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
+    const float s = r + r * sinPoly;
+    const float c = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+                    0.5f * z + 1.0f;
+    switch (k & 3) {
+        case 0: out.sine = s; out.cosine = c; break;
+        case 1: out.sine = c; out.cosine = -s; break;
+        case 2: out.sine = -s; out.cosine = -c; break;
+        default: out.sine = -c; out.cosine = s; break;
+    }
+    // k = 0: h = r and sin(r)/r = 1 + the polynomial, exact at 0; otherwise h >= pi/4.
+    out.sinc = k == 0 ? 1.0f + sinPoly : out.sine / static_cast<float>(h);
+    return out;
+}
+
+// (x - sin x) / x^3 for x >= 0 in float, with sin x given: Taylor series below 2 (the direct
+// form cancels there; the first omitted term, x^12 / 15!, is below 3e-9 at 2), direct above.
+float xMinusSinOverCubeF(float x, float sinX) {
+    const float z = x * x;
+    const float series =
+        1.0f / 6.0f -
+        z * (1.0f / 120.0f -
+             z * (1.0f / 5040.0f - z * (1.0f / 362880.0f - z * (1.0f / 39916800.0f - z / 6227020800.0f))));
+    if (x < 2.0f) return series;
+    return (x - sinX) / (z * x);
+}
+
+DVec3 rotateD(const DQuat& q, const DVec3& v) {
+    // v + 2 w (u x v) + 2 u x (u x v), u = vec(q): q v q^-1 for a unit q.
+    const DVec3 u(q.x, q.y, q.z);
+    const DVec3 c = 2.0 * glm::cross(u, v);
+    return v + q.w * c + glm::cross(u, c);
+}
+
+}  // namespace
+
+namespace detail {
+// The implementation's access to PreparedDeadReckoning's members.
+struct PreparedAccess {
+    static bool extrapolateOne(const PreparedDeadReckoning& e, double time, double limit, DeadReckoningResult& result);
+};
+}  // namespace detail
+
+Status prepareDeadReckoning(const DeadReckoningState& state, double timestamp, PreparedDeadReckoning& out) {
+    if (Status s = validateDeadReckoningState(state); s != Status::Ok) return s;
+    if (!isFinite(timestamp)) return Status::NonFiniteInput;
+    const DeadReckoningAlgorithm algorithm = state.algorithm;
+    const DQuat q = glm::normalize(toD(state.orientation));
+    const DVec3 w = deadReckoningRotates(algorithm) ? toD(state.angularVelocity) : DVec3(0.0);
+    const double rate = glm::length(w);
+    const DVec3 axis = rate > 0.0 ? w / rate : DVec3(0.0);
+
+    PreparedDeadReckoning p;
+    p.mPosition = state.position;
+    p.mTimestamp = timestamp;
+    // The half angle is h = (0.5 rate) t, the product predictDeadReckoning computes.
+    p.mHalfRate = 0.5 * rate;
+    p.mVelocity = state.velocity;
+    p.mAcceleration = deadReckoningUsesAcceleration(algorithm) ? state.acceleration : Vec3(0.0f);
+    p.mOrientation = toF(q);
+    // q exp(w t) = q (cos h, u sin h) = A cos h + B sin h with B = q (0, u).
+    const DVec3 qv(q.x, q.y, q.z);
+    DQuat b;
+    b.w = -glm::dot(qv, axis);
+    const DVec3 bv = q.w * axis + glm::cross(qv, axis);
+    b.x = bv.x;
+    b.y = bv.y;
+    b.z = bv.z;
+    p.mAxisTerm = toF(b);
+    p.mAxis = toF(axis);
+    p.mKernel = algorithm == DeadReckoningAlgorithm::Static ? kKernelStatic
+                : deadReckoningInBodyAxes(algorithm)     ? kKernelBody
+                                                         : kKernelWorld;
+    p.mAlgorithm = algorithm;
+    out = p;
+    return Status::Ok;
+}
+
+// One prepared entity (the scalar form; DeadReckoningBatch's fallback). False when the result
+// overflows: `result` is then the update as given.
+bool detail::PreparedAccess::extrapolateOne(const PreparedDeadReckoning& e, double time, double limit, DeadReckoningResult& result) {
+    if (e.mKernel == kKernelStatic) {
+        result.position = e.mPosition;
+        result.velocity = e.mVelocity;
+        result.orientation = e.mOrientation;
+        return true;
+    }
+    // The receiver's age: clamped in double, rounded to float once.
+    double age = time - e.mTimestamp;
+    age = age > 0.0 ? age : 0.0;
+    age = age < limit ? age : limit;
+    const double t = static_cast<double>(static_cast<float>(age));
+
+    const DVec3 p = toD(e.mPosition);
+    const DVec3 v = toD(e.mVelocity);
+    const DVec3 a = toD(e.mAcceleration);
+    const SinCos sc = sinCosHalfAngle(e.mHalfRate * t);
+
+    // Orientation A cos h + B sin h, then one Newton step towards unit length
+    // (1/sqrt(n2) ~ (3 - n2) / 2 for n2 = 1 + O(1e-7): error O(1e-14), no sqrt).
+    Quat o;
+    o.w = e.mOrientation.w * sc.cosine + e.mAxisTerm.w * sc.sine;
+    o.x = e.mOrientation.x * sc.cosine + e.mAxisTerm.x * sc.sine;
+    o.y = e.mOrientation.y * sc.cosine + e.mAxisTerm.y * sc.sine;
+    o.z = e.mOrientation.z * sc.cosine + e.mAxisTerm.z * sc.sine;
+    const float n2 = o.w * o.w + o.x * o.x + o.y * o.y + o.z * o.z;
+    const float f = 1.5f - 0.5f * n2;
+    o.w *= f;
+    o.x *= f;
+    o.y *= f;
+    o.z *= f;
+
+    DVec3 position;
+    if (e.mKernel == kKernelWorld) {
+        // predictDeadReckoning's operations, in its order: bit-identical.
+        position = p + (v * t + a * (0.5 * t * t));
+    } else {
+        // The body-axis integrals (see predictDeadReckoning) with unit axis u, x = |w| t:
+        //   R1 v = t sinc(x) v + t x c1 (u x v) + t x^2 e (u.v) u,
+        //   R2 a = t^2 (sinc x - c1) a + t^2 x (c1 - e) (u x a) + t^2 (1/2 - sinc x + c1) (u.a) u,
+        // c1 = (1 - cos x)/x^2 = sinc(x/2)^2 / 2, e = (x - sin x)/x^3. Each coefficient is
+        // a bounded function of x times t or t^2, so float errors of a few ulps in the
+        // functions are errors relative to |v| t and |a| t^2 (the contract).
+        const float sincHalf = sc.sinc;
+        const float sincX = sincHalf * sc.cosine;  // sin(2h) / 2h
+        const auto x = static_cast<float>(2.0 * e.mHalfRate * t);
+        const float c1 = 0.5f * sincHalf * sincHalf;
+        const float ex = xMinusSinOverCubeF(x, 2.0f * sc.sine * sc.cosine);
+        const double xd = x;
+        const DVec3 u = toD(e.mAxis);
+        const double t2 = t * t;
+        const DVec3 body = (t * sincX) * v + (t * xd * c1) * glm::cross(u, v) +
+                           (t * xd * xd * ex * glm::dot(u, v)) * u + (t2 * (sincX - c1)) * a +
+                           (t2 * xd * (c1 - ex)) * glm::cross(u, a) + (t2 * (0.5 - sincX + c1) * glm::dot(u, a)) * u;
+        position = p + rotateD(toD(e.mOrientation), body);
+    }
+    const RVec3 positionR = toR(position);
+    const Vec3 velocity = toF(v + a * t);
+    if (!isFinite(positionR) || !isFinite(velocity)) {
+        result.position = e.mPosition;
+        result.velocity = e.mVelocity;
+        result.orientation = e.mOrientation;
+        return false;
+    }
+    result.position = positionR;
+    result.velocity = velocity;
+    result.orientation = o;
+    return true;
+}
+
+std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> entities, double time,
+                                     float extrapolationLimit, std::span<DeadReckoningResult> out) {
+    if (!isFinite(time) || !(extrapolationLimit >= 0.0f)) return entities.size();
+    const std::size_t count = std::min(entities.size(), out.size());
+    std::size_t refused = entities.size() - count;
+    const double limit = static_cast<double>(extrapolationLimit);
+    for (std::size_t i = 0; i < count; ++i)
+        if (!PreparedAccess::extrapolateOne(entities[i], time, limit, out[i])) ++refused;
+    return refused;
+}
+
+// ---------------------------------------------------------------------------------------------
+// DeadReckoningBatch
+
+namespace {
+
+constexpr std::uint32_t kNoSlot = 0xffffffffu;
+constexpr std::size_t kChunk = 256;  // entities per vectorised pass
+
+// sinCosHalfAngle's float part for a reduced h < kReductionLimit, branch-free so that loops
+// over it vectorise (the quadrant by arithmetic, not a switch). Same results.
+inline void sinCosReduced(double h, float& sine, float& cosine, float& sinc) {
+    const auto k = static_cast<std::int32_t>(h * kTwoOverPi + 0.5);
+    const double kd = static_cast<double>(k);
+    const auto r = static_cast<float>((h - kd * kPiOver2Head) - kd * kPiOver2Tail);
+    const float z = r * r;
+    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
+    const float s = r + r * sinPoly;
+    const float c = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+                    0.5f * z + 1.0f;
+    const bool odd = (k & 1) != 0;
+    const float sineSign = (k & 2) != 0 ? -1.0f : 1.0f;
+    const float cosineSign = ((k + 1) & 2) != 0 ? -1.0f : 1.0f;
+    sine = (odd ? c : s) * sineSign;
+    cosine = (odd ? s : c) * cosineSign;
+    const float hf = k == 0 ? 1.0f : static_cast<float>(h);
+    sinc = k == 0 ? 1.0f + sinPoly : sine / hf;
+}
+
+inline bool finiteF(float x) { return x - x == 0.0f; }
+inline bool finiteR(Real x) { return x - x == Real(0); }
+
+}  // namespace
+
+DeadReckoningBatch::DeadReckoningBatch(std::size_t capacity) : mPrepared(capacity) {
+    auto sizeVec = [capacity](auto& c) {
+        c.x.resize(capacity);
+        c.y.resize(capacity);
+        c.z.resize(capacity);
+    };
+    auto sizeQuat = [capacity](QuatColumns& c) {
+        c.w.resize(capacity);
+        c.x.resize(capacity);
+        c.y.resize(capacity);
+        c.z.resize(capacity);
+    };
+    sizeVec(mPosition);
+    sizeVec(mVelocity);
+    sizeVec(mAcceleration);
+    sizeQuat(mOrientation);
+    sizeQuat(mAxisTerm);
+    mTimestamp.resize(capacity);
+    mHalfRate.resize(capacity);
+    mAgeScale.resize(capacity);
+    mBodyEntity.resize(capacity);
+    mBodySlot.assign(capacity, kNoSlot);
+    sizeVec(mBodyVelocity);
+    sizeVec(mBodyAcceleration);
+    sizeVec(mBodyAxis);
+    sizeQuat(mBodyOrientation);
+    mBodyTimestamp.resize(capacity);
+    mBodyHalfRate.resize(capacity);
+    sizeVec(mBodyPosition);
+    for (std::size_t i = 0; i < capacity; ++i) (void)set(i, PreparedDeadReckoning{});
+}
+
+Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& update) {
+    if (entity >= mPrepared.size()) return Status::InvalidSetting;
+    const PreparedDeadReckoning& u = update;
+    mPrepared[entity] = u;
+    auto put = [](auto& c, std::size_t i, const auto& v) {
+        c.x[i] = v.x;
+        c.y[i] = v.y;
+        c.z[i] = v.z;
+    };
+    auto putQuat = [](QuatColumns& c, std::size_t i, const Quat& q) {
+        c.w[i] = q.w;
+        c.x[i] = q.x;
+        c.y[i] = q.y;
+        c.z[i] = q.z;
+    };
+    put(mPosition, entity, u.mPosition);
+    put(mVelocity, entity, u.mVelocity);
+    put(mAcceleration, entity, u.mAcceleration);
+    putQuat(mOrientation, entity, u.mOrientation);
+    putQuat(mAxisTerm, entity, u.mAxisTerm);
+    mTimestamp[entity] = u.mTimestamp;
+    mHalfRate[entity] = u.mHalfRate;
+    mAgeScale[entity] = u.mKernel == kKernelStatic ? 0.0f : 1.0f;
+
+    std::uint32_t slot = mBodySlot[entity];
+    const bool body = u.mKernel == kKernelBody;
+    if (body && slot == kNoSlot) {
+        slot = static_cast<std::uint32_t>(mBodyCount++);
+        mBodySlot[entity] = slot;
+        mBodyEntity[slot] = static_cast<std::uint32_t>(entity);
+    } else if (!body && slot != kNoSlot) {
+        // Swap-remove: the last body entity takes the freed slot.
+        const std::size_t last = --mBodyCount;
+        const std::uint32_t moved = mBodyEntity[last];
+        if (last != slot) {
+            mBodyEntity[slot] = moved;
+            mBodySlot[moved] = slot;
+            const PreparedDeadReckoning& m = mPrepared[moved];
+            put(mBodyPosition, slot, m.mPosition);
+            put(mBodyVelocity, slot, m.mVelocity);
+            put(mBodyAcceleration, slot, m.mAcceleration);
+            put(mBodyAxis, slot, m.mAxis);
+            putQuat(mBodyOrientation, slot, m.mOrientation);
+            mBodyTimestamp[slot] = m.mTimestamp;
+            mBodyHalfRate[slot] = m.mHalfRate;
+        }
+        mBodySlot[entity] = kNoSlot;
+        return Status::Ok;
+    }
+    if (body) {
+        put(mBodyPosition, slot, u.mPosition);
+        put(mBodyVelocity, slot, u.mVelocity);
+        put(mBodyAcceleration, slot, u.mAcceleration);
+        put(mBodyAxis, slot, u.mAxis);
+        putQuat(mBodyOrientation, slot, u.mOrientation);
+        mBodyTimestamp[slot] = u.mTimestamp;
+        mBodyHalfRate[slot] = u.mHalfRate;
+    }
+    return Status::Ok;
+}
+
+std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimit,
+                                            std::span<DeadReckoningResult> out) const {
+    const std::size_t n = mPrepared.size();
+    if (!isFinite(time) || !(extrapolationLimit >= 0.0f) || out.size() < n) return n;
+    const double limit = static_cast<double>(extrapolationLimit);
+    std::size_t refused = 0;
+
+    // Pass 1, every entity, the world-axis formula, chunk by chunk: straight-line float/double
+    // loops over the columns (vectorised), the results staged in SoA then stored as structs.
+    for (std::size_t begin = 0; begin < n; begin += kChunk) {
+        const std::size_t m = std::min(kChunk, n - begin);
+        alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
+        alignas(16) float vx[kChunk], vy[kChunk], vz[kChunk];
+        alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
+        int unusual = 0;  // an angle beyond the reduction, or an overflow: redo the chunk scalar
+        for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t i = begin + j;
+            double age = time - mTimestamp[i];
+            age = age > 0.0 ? age : 0.0;
+            age = age < limit ? age : limit;
+            const float tf = static_cast<float>(age) * mAgeScale[i];
+            const double h = mHalfRate[i] * static_cast<double>(tf);
+            unusual |= h < kReductionLimit ? 0 : 1;
+            float sine, cosine, sinc;
+            sinCosReduced(h * static_cast<double>(h < kReductionLimit), sine, cosine, sinc);
+            float w = mOrientation.w[i] * cosine + mAxisTerm.w[i] * sine;
+            float x = mOrientation.x[i] * cosine + mAxisTerm.x[i] * sine;
+            float y = mOrientation.y[i] * cosine + mAxisTerm.y[i] * sine;
+            float z = mOrientation.z[i] * cosine + mAxisTerm.z[i] * sine;
+            const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
+            ow[j] = w * f;
+            ox[j] = x * f;
+            oy[j] = y * f;
+            oz[j] = z * f;
+            const Real t = static_cast<Real>(tf);
+            const Real halfT2 = Real(0.5) * t * t;
+            px[j] = mPosition.x[i] + (Real(mVelocity.x[i]) * t + Real(mAcceleration.x[i]) * halfT2);
+            py[j] = mPosition.y[i] + (Real(mVelocity.y[i]) * t + Real(mAcceleration.y[i]) * halfT2);
+            pz[j] = mPosition.z[i] + (Real(mVelocity.z[i]) * t + Real(mAcceleration.z[i]) * halfT2);
+            vx[j] = mVelocity.x[i] + mAcceleration.x[i] * tf;
+            vy[j] = mVelocity.y[i] + mAcceleration.y[i] * tf;
+            vz[j] = mVelocity.z[i] + mAcceleration.z[i] * tf;
+            unusual |= static_cast<int>(!finiteR(px[j] + py[j] + pz[j])) | static_cast<int>(!finiteF(vx[j] + vy[j] + vz[j]));
+        }
+        for (std::size_t j = 0; j < m; ++j) {
+            DeadReckoningResult& r = out[begin + j];
+            r.position = RVec3(px[j], py[j], pz[j]);
+            r.velocity = Vec3(vx[j], vy[j], vz[j]);
+            r.orientation.w = ow[j];
+            r.orientation.x = ox[j];
+            r.orientation.y = oy[j];
+            r.orientation.z = oz[j];
+        }
+        if (unusual != 0) {
+            for (std::size_t j = 0; j < m; ++j) {
+                const std::size_t i = begin + j;
+                if (mPrepared[i].mKernel == kKernelBody) continue;  // pass 2
+                if (!PreparedAccess::extrapolateOne(mPrepared[i], time, limit, out[i])) ++refused;
+            }
+        }
+    }
+
+    // Pass 2, the body-axis entities (dense): positions from the integrals (see
+    // extrapolateOne), in float, rotated to world axes by the orientation.
+    for (std::size_t begin = 0; begin < mBodyCount; begin += kChunk) {
+        const std::size_t m = std::min(kChunk, mBodyCount - begin);
+        alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
+        int unusual = 0;
+        for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t s = begin + j;
+            double age = time - mBodyTimestamp[s];
+            age = age > 0.0 ? age : 0.0;
+            age = age < limit ? age : limit;
+            const float t = static_cast<float>(age);
+            const double h = mBodyHalfRate[s] * static_cast<double>(t);
+            unusual |= h < kReductionLimit ? 0 : 1;
+            float sine, cosine, sincHalf;
+            sinCosReduced(h * static_cast<double>(h < kReductionLimit), sine, cosine, sincHalf);
+            const float sincX = sincHalf * cosine;
+            const auto xx = static_cast<float>(2.0 * h);
+            const float c1 = 0.5f * sincHalf * sincHalf;
+            const float zz = xx * xx;
+            const float series =
+                1.0f / 6.0f -
+                zz * (1.0f / 120.0f -
+                      zz * (1.0f / 5040.0f -
+                            zz * (1.0f / 362880.0f - zz * (1.0f / 39916800.0f - zz / 6227020800.0f))));
+            const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
+            const float ex = xx < 2.0f ? series : direct;
+            const float t2 = t * t;
+            const float cV = t * sincX, cUxV = t * xx * c1, cA = t2 * (sincX - c1), cUxA = t2 * xx * (c1 - ex);
+            const float ux = mBodyAxis.x[s], uy = mBodyAxis.y[s], uz = mBodyAxis.z[s];
+            const float vx = mBodyVelocity.x[s], vy = mBodyVelocity.y[s], vz = mBodyVelocity.z[s];
+            const float ax = mBodyAcceleration.x[s], ay = mBodyAcceleration.y[s], az = mBodyAcceleration.z[s];
+            const float cUV = t * zz * ex * (ux * vx + uy * vy + uz * vz);
+            const float cUA = t2 * (0.5f - sincX + c1) * (ux * ax + uy * ay + uz * az);
+            const float dx = cV * vx + cUxV * (uy * vz - uz * vy) + cUV * ux + cA * ax + cUxA * (uy * az - uz * ay) + cUA * ux;
+            const float dy = cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
+            const float dz = cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
+            // q d q^-1 = d + w c + q.xyz x c with c = 2 q.xyz x d.
+            const float qw = mBodyOrientation.w[s], qx = mBodyOrientation.x[s], qy = mBodyOrientation.y[s],
+                        qz = mBodyOrientation.z[s];
+            const float cx = 2.0f * (qy * dz - qz * dy), cy = 2.0f * (qz * dx - qx * dz), cz = 2.0f * (qx * dy - qy * dx);
+            px[j] = mBodyPosition.x[s] + Real(dx + qw * cx + (qy * cz - qz * cy));
+            py[j] = mBodyPosition.y[s] + Real(dy + qw * cy + (qz * cx - qx * cz));
+            pz[j] = mBodyPosition.z[s] + Real(dz + qw * cz + (qx * cy - qy * cx));
+            unusual |= finiteR(px[j] + py[j] + pz[j]) ? 0 : 1;
+        }
+        for (std::size_t j = 0; j < m; ++j) out[mBodyEntity[begin + j]].position = RVec3(px[j], py[j], pz[j]);
+        if (unusual != 0) {
+            for (std::size_t j = 0; j < m; ++j) {
+                const std::size_t i = mBodyEntity[begin + j];
+                if (!PreparedAccess::extrapolateOne(mPrepared[i], time, limit, out[i])) ++refused;
+            }
+        }
+    }
+    return refused;
+}
+
 FORESIGHT_NAMESPACE_END

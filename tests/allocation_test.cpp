@@ -177,6 +177,16 @@ TEST_F(Allocation, ReplicationDoesNotAllocate) {
     std::vector<DeadReckoningState> states(64, state);
     std::vector<double> stamps(64, 0.5);
     std::vector<foresight::DeadReckoningResult> results(64);
+    // The prepared forms: built (and the batch allocated) before counting.
+    std::vector<foresight::PreparedDeadReckoning> prepared(64);
+    foresight::DeadReckoningBatch batch(64);
+    for (std::size_t i = 0; i < prepared.size(); ++i) {
+        DeadReckoningState s = state;
+        s.algorithm = static_cast<foresight::DeadReckoningAlgorithm>(1 + i % 9);
+        ASSERT_EQ(foresight::prepareDeadReckoning(s, 0.5, prepared[i]), Status::Ok);
+        ASSERT_EQ(batch.set(i, prepared[i]), Status::Ok);
+    }
+    std::size_t preparedRefused = 0;
     int sent = 0;
     int shown = 0;
     std::size_t refused = 0;
@@ -200,11 +210,18 @@ TEST_F(Allocation, ReplicationDoesNotAllocate) {
             }
         }
         refused = foresight::predictDeadReckoningBatch(states, stamps, 1.0, results);
+        preparedRefused += foresight::extrapolateDeadReckoning(prepared, 1.0, 0.25f, results);
+        preparedRefused += batch.extrapolate(1.0, 0.25f, results);
+        // set() moves entities in and out of the body-axis list: no allocation either.
+        preparedRefused += batch.set(3, prepared[0]) == Status::Ok ? 0u : 1u;
+        preparedRefused += batch.set(0, prepared[7]) == Status::Ok ? 0u : 1u;
+        preparedRefused += batch.extrapolate(2.0, 0.25f, results);
     });
     EXPECT_EQ(n, 0);
     EXPECT_GT(sent, 10);
     EXPECT_GT(shown, 900);
     EXPECT_EQ(refused, 0u);
+    EXPECT_EQ(preparedRefused, 0u);
 }
 
 } // namespace

@@ -14,7 +14,9 @@
 
 #include <foresight/replication.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -887,6 +889,197 @@ TEST(Batch, EqualsPredictDeadReckoningPerEntityBitForBit) {
     std::vector<DeadReckoningResult> shortOut(10);
     EXPECT_EQ(foresight::predictDeadReckoningBatch(std::span(states.data(), 12), std::span(stamps.data(), 12), now, shortOut),
               2u + 1u);  // states 10, 11, and 5 (NaN)
+}
+
+// =============================================================================================
+// Prepared extrapolation (extrapolateDeadReckoning, DeadReckoningBatch): the accuracy contract
+// against predictDeadReckoning on 100 000 random states (every model, |w| from 0 through
+// 1e-30 to 10 rad/s, ages up to 1e6 s, limits 0 to infinity, updates stamped in the future).
+
+struct ContractErrors {
+    double position = 0.0;     // worst |error| / (1e-6 scale + 2 ulps), must stay <= 1
+    double orientation = 0.0;  // [rad]
+    double length = 0.0;       // worst ||q| - 1|
+    std::size_t velocityMismatches = 0;
+};
+
+void checkAgainstReference(const DeadReckoningState& state, double stamp, double now, float limit,
+                           const DeadReckoningResult& got, ContractErrors& worst) {
+    double age = now - stamp;
+    age = age > 0.0 ? age : 0.0;
+    age = age < static_cast<double>(limit) ? age : static_cast<double>(limit);
+    const float ageF = static_cast<float>(age);
+    DeadReckoningResult expected;
+    ASSERT_EQ(foresight::predictDeadReckoning(state, ageF, expected), Status::Ok);
+    const double t = ageF;
+    const double uses = foresight::deadReckoningUsesAcceleration(state.algorithm) ? 1.0 : 0.0;
+    const double scale = state.algorithm == DeadReckoningAlgorithm::Static
+                             ? 0.0
+                             : glm::length(ftest::toD(state.velocity)) * t +
+                                   uses * glm::length(ftest::toD(state.acceleration)) * 0.5 * t * t;
+    const DVec3 e = ftest::toD(expected.position);
+    const double magnitude = std::max({1.0, std::abs(e.x), std::abs(e.y), std::abs(e.z)});
+    const double ulp = magnitude * static_cast<double>(std::numeric_limits<Real>::epsilon());
+    const double allowed = 1e-6 * scale + 2.0 * ulp;
+    const double error = glm::length(ftest::toD(got.position) - e);
+    worst.position = std::max(worst.position, error / allowed);
+    worst.orientation = std::max(worst.orientation, angleBetween(got.orientation, expected.orientation));
+    const double length = glm::length(ftest::toD(got.orientation));
+    worst.length = std::max(worst.length, std::abs(length - 1.0));
+    // Velocity: v + a t in float for every model; reference in double, rounded once.
+    const DVec3 dv = ftest::toD(got.velocity) - ftest::toD(expected.velocity);
+    const double vScale = glm::length(ftest::toD(expected.velocity)) + 1e-30;
+    if (glm::length(dv) > 4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * vScale +
+                              1e-6 * (glm::length(ftest::toD(state.velocity)) + uses * glm::length(ftest::toD(state.acceleration)) * t))
+        ++worst.velocityMismatches;
+}
+
+void randomPrepared(std::size_t n, std::vector<DeadReckoningState>& states, std::vector<double>& stamps, double now) {
+    Random random(77);
+    states.resize(n);
+    stamps.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        DeadReckoningState& s = states[i];
+        s.algorithm = static_cast<DeadReckoningAlgorithm>(1 + i % 9);
+        s.position = rv(random.uniform(-2000, 2000), random.uniform(-50, 500), random.uniform(-2000, 2000));
+        s.velocity = ftest::toF(DVec3(random.uniform(-300, 300), random.uniform(-30, 30), random.uniform(-300, 300)));
+        s.acceleration = ftest::toF(DVec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20)));
+        s.orientation = ftest::quatWXYZ(static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)),
+                                        static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)));
+        const DVec3 axis = glm::normalize(DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)) + DVec3(1e-3));
+        // |w|: zero, tiny (series territory), small, typical, fast.
+        const double rates[] = {0.0, 1e-30, 1e-7, 1e-3, random.uniform(0, 3), random.uniform(3, 10)};
+        s.angularVelocity = ftest::toF(axis * rates[(i / 9) % 6]);
+        // Ages: typical, a few seconds, huge (hours to 11 days); some stamped in the future.
+        const double ages[] = {random.uniform(-0.05, 0.3), random.uniform(0, 5), random.uniform(0, 1e6)};
+        stamps[i] = now - ages[(i / 54) % 3];
+    }
+}
+
+TEST(Prepared, RefusesWhatPredictDeadReckoningRefuses) {
+    foresight::PreparedDeadReckoning p;
+    DeadReckoningState s = makeState(DeadReckoningAlgorithm::Rvw, DVec3(1, 2, 3), DVec3(4, 5, 6));
+    EXPECT_EQ(foresight::prepareDeadReckoning(s, kNaN, p), Status::NonFiniteInput);
+    EXPECT_EQ(foresight::prepareDeadReckoning(s, kInfinity, p), Status::NonFiniteInput);
+    DeadReckoningState bad = s;
+    bad.velocity.y = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(foresight::prepareDeadReckoning(bad, 0.0, p), Status::NonFiniteInput);
+    bad = s;
+    bad.orientation = ftest::quatWXYZ(0, 0, 0, 0);
+    EXPECT_EQ(foresight::prepareDeadReckoning(bad, 0.0, p), Status::ZeroQuaternion);
+    bad = s;
+    bad.algorithm = static_cast<DeadReckoningAlgorithm>(0);
+    EXPECT_EQ(foresight::prepareDeadReckoning(bad, 0.0, p), Status::InvalidAlgorithm);
+    // Untouched on refusal: still the default STATIC update.
+    EXPECT_EQ(p.algorithm(), DeadReckoningAlgorithm::Static);
+    EXPECT_EQ(p.timestamp(), 0.0);
+    ASSERT_EQ(foresight::prepareDeadReckoning(s, 12.5, p), Status::Ok);
+    EXPECT_EQ(p.algorithm(), DeadReckoningAlgorithm::Rvw);
+    EXPECT_EQ(p.timestamp(), 12.5);
+
+    // Bad per-frame arguments: nothing written, every entity counted.
+    std::vector<foresight::PreparedDeadReckoning> entities(3, p);
+    std::vector<DeadReckoningResult> out(3);
+    out[0].position = rv(7, 7, 7);
+    EXPECT_EQ(foresight::extrapolateDeadReckoning(entities, kNaN, 1.0f, out), 3u);
+    EXPECT_EQ(foresight::extrapolateDeadReckoning(entities, 13.0, -1.0f, out), 3u);
+    EXPECT_EQ(foresight::extrapolateDeadReckoning(entities, 13.0, std::numeric_limits<float>::quiet_NaN(), out), 3u);
+    EXPECT_EQ(out[0].position, rv(7, 7, 7));
+    // A short `out`: the first out.size() are processed, the rest counted.
+    EXPECT_EQ(foresight::extrapolateDeadReckoning(entities, 13.0, 1.0f, std::span(out.data(), 2)), 1u);
+
+    foresight::DeadReckoningBatch batch(3);
+    EXPECT_EQ(batch.capacity(), 3u);
+    EXPECT_EQ(batch.set(3, p), Status::InvalidSetting);
+    EXPECT_EQ(batch.extrapolate(kInfinity, 1.0f, out), 3u);
+    EXPECT_EQ(batch.extrapolate(13.0, -0.5f, out), 3u);
+    EXPECT_EQ(batch.extrapolate(13.0, 1.0f, std::span(out.data(), 2)), 3u);
+    // Entities never set are the default STATIC update at the origin.
+    EXPECT_EQ(batch.extrapolate(13.0, 1.0f, out), 0u);
+    EXPECT_EQ(out[2].position, rv(0, 0, 0));
+    EXPECT_TRUE(ftest::sameBytes(out[2].orientation, glm::identity<Quat>()));
+}
+
+TEST(Prepared, OverflowIsRefusedWithTheUpdateAsGiven) {
+    DeadReckoningState s = makeState(DeadReckoningAlgorithm::Fpw, DVec3(1, 2, 3), DVec3(3e38, 0, 0));
+    for (DeadReckoningAlgorithm algorithm : {DeadReckoningAlgorithm::Fpw, DeadReckoningAlgorithm::Rpb}) {
+        s.algorithm = algorithm;
+        s.angularVelocity = Vec3(1.0f, 0.0f, 0.0f);  // along v: RPB moves straight, v t
+        foresight::PreparedDeadReckoning p;
+        ASSERT_EQ(foresight::prepareDeadReckoning(s, 0.0, p), Status::Ok);
+        // 3e40 m overflows a float position; in double 3e40 is finite, so a faster one.
+        if (foresight::kDoublePrecision) continue;
+        std::vector<foresight::PreparedDeadReckoning> entities(1, p);
+        std::vector<DeadReckoningResult> out(1);
+        EXPECT_EQ(foresight::extrapolateDeadReckoning(entities, 100.0, kInfinity, out), 1u);
+        EXPECT_EQ(out[0].position, s.position);
+        foresight::DeadReckoningBatch batch(1);
+        ASSERT_EQ(batch.set(0, p), Status::Ok);
+        out[0] = DeadReckoningResult{};
+        EXPECT_EQ(batch.extrapolate(100.0, std::numeric_limits<float>::infinity(), out), 1u);
+        EXPECT_EQ(out[0].position, s.position);
+        EXPECT_EQ(out[0].velocity, s.velocity);
+    }
+}
+
+TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
+    const double now = 1.0e6 + 0.5;
+    std::vector<DeadReckoningState> states;
+    std::vector<double> stamps;
+    const std::size_t n = 100000;
+    randomPrepared(n, states, stamps, now);
+    std::vector<foresight::PreparedDeadReckoning> prepared(n);
+    foresight::DeadReckoningBatch batch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(foresight::prepareDeadReckoning(states[i], stamps[i], prepared[i]), Status::Ok);
+        ASSERT_EQ(batch.set(i, prepared[i]), Status::Ok);
+    }
+    const float limits[] = {0.0f, 0.25f, 5.0f, std::numeric_limits<float>::infinity()};
+    for (float limit : limits) {
+        std::vector<DeadReckoningResult> scalar(n), soa(n);
+        EXPECT_EQ(foresight::extrapolateDeadReckoning(prepared, now, limit, scalar), 0u);
+        EXPECT_EQ(batch.extrapolate(now, limit, soa), 0u);
+        ContractErrors worstScalar, worstSoa;
+        for (std::size_t i = 0; i < n; ++i) {
+            checkAgainstReference(states[i], stamps[i], now, limit, scalar[i], worstScalar);
+            checkAgainstReference(states[i], stamps[i], now, limit, soa[i], worstSoa);
+            // World-axis models and STATIC on the scalar path: the reference's double
+            // operations, bit for bit (position and velocity).
+            if (!foresight::deadReckoningInBodyAxes(states[i].algorithm)) {
+                DeadReckoningResult expected;
+                double age = std::max(now - stamps[i], 0.0);
+                age = std::min(age, static_cast<double>(limit));
+                ASSERT_EQ(foresight::predictDeadReckoning(states[i], static_cast<float>(age), expected), Status::Ok);
+                EXPECT_TRUE(ftest::sameBytes(scalar[i].position, expected.position)) << i;
+                EXPECT_TRUE(ftest::sameBytes(scalar[i].velocity, expected.velocity)) << i;
+            }
+        }
+        std::printf("limit %g: scalar position %.3g of allowed, orientation %.3g rad, length %.3g; "
+                    "SoA position %.3g, orientation %.3g rad, length %.3g\n",
+                    static_cast<double>(limit), worstScalar.position, worstScalar.orientation, worstScalar.length,
+                    worstSoa.position, worstSoa.orientation, worstSoa.length);
+        // The contract of extrapolateDeadReckoning (replication.h).
+        for (const ContractErrors* w : {&worstScalar, &worstSoa}) {
+            EXPECT_LE(w->position, 1.0);
+            EXPECT_LE(w->orientation, 4e-7);
+            EXPECT_LE(w->length, 3e-7);
+            EXPECT_EQ(w->velocityMismatches, 0u);
+        }
+    }
+    // Moving entities between models keeps the batch consistent (the body-axis list).
+    for (std::size_t i = 0; i < n; i += 3) {
+        DeadReckoningState s = states[i];
+        s.algorithm = static_cast<DeadReckoningAlgorithm>(1 + (i / 3) % 9);
+        states[i] = s;
+        ASSERT_EQ(foresight::prepareDeadReckoning(s, stamps[i], prepared[i]), Status::Ok);
+        ASSERT_EQ(batch.set(i, prepared[i]), Status::Ok);
+    }
+    std::vector<DeadReckoningResult> soa(n);
+    EXPECT_EQ(batch.extrapolate(now, 0.25f, soa), 0u);
+    ContractErrors worst;
+    for (std::size_t i = 0; i < n; ++i) checkAgainstReference(states[i], stamps[i], now, 0.25f, soa[i], worst);
+    EXPECT_LE(worst.position, 1.0);
+    EXPECT_LE(worst.orientation, 4e-7);
 }
 
 } // namespace
