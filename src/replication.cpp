@@ -737,8 +737,55 @@ inline void sinCosReduced(double h, float& sine, float& cosine, float& sinc) {
     sinc = k == 0 ? 1.0f + sinPoly : sine / hf;
 }
 
+// The same for h * kTwoOverPi + 0.5 < 1 (k = 0, h < pi/4 about): then the reduction is
+// exact (r = h rounded to float) and the results are sinCosReduced's bit for bit, without
+// its double arithmetic and quadrant selection.
+inline void sinCosFirstQuadrant(double h, float& sine, float& cosine, float& sinc) {
+    const auto r = static_cast<float>(h);
+    const float z = r * r;
+    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
+    sine = r + r * sinPoly;
+    cosine = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+             0.5f * z + 1.0f;
+    sinc = 1.0f + sinPoly;
+}
+
 inline bool finiteF(float x) { return x - x == 0.0f; }
 inline bool finiteR(Real x) { return x - x == Real(0); }
+
+// The receiver's age of an update stamped `timestamp`, as extrapolateOne computes it.
+inline float clampedAge(double time, double timestamp, double limit) {
+    double age = time - timestamp;
+    age = age > 0.0 ? age : 0.0;
+    age = age < limit ? age : limit;
+    return static_cast<float>(age);
+}
+
+// Puts `entity` in or out of `group`; `fill(slot, update)` writes a member's columns at `slot`
+// (also for the member moved into a freed slot, from `all`).
+template <class Group, class Fill>
+void assignToGroup(Group& group, std::span<const PreparedDeadReckoning> all, std::size_t entity, bool member,
+                   Fill fill) {
+    std::uint32_t slot = group.slot[entity];
+    if (member) {
+        if (slot == kNoSlot) {
+            slot = static_cast<std::uint32_t>(group.count++);
+            group.slot[entity] = slot;
+            group.entity[slot] = static_cast<std::uint32_t>(entity);
+        }
+        fill(slot, all[entity]);
+    } else if (slot != kNoSlot) {
+        // Swap-remove: the last member takes the freed slot.
+        const std::size_t last = --group.count;
+        const std::uint32_t moved = group.entity[last];
+        if (last != slot) {
+            group.entity[slot] = moved;
+            group.slot[moved] = slot;
+            fill(slot, all[moved]);
+        }
+        group.slot[entity] = kNoSlot;
+    }
+}
 
 }  // namespace
 
@@ -754,16 +801,23 @@ DeadReckoningBatch::DeadReckoningBatch(std::size_t capacity) : mPrepared(capacit
         c.y.resize(capacity);
         c.z.resize(capacity);
     };
+    auto sizeGroup = [capacity](Group& g) {
+        g.entity.resize(capacity);
+        g.slot.assign(capacity, kNoSlot);
+        g.count = 0;
+    };
     sizeVec(mPosition);
     sizeVec(mVelocity);
     sizeVec(mAcceleration);
-    sizeQuat(mOrientation);
-    sizeQuat(mAxisTerm);
+    sizeQuat(mFixedOrientation);
     mTimestamp.resize(capacity);
-    mHalfRate.resize(capacity);
     mAgeScale.resize(capacity);
-    mBodyEntity.resize(capacity);
-    mBodySlot.assign(capacity, kNoSlot);
+    sizeGroup(mTurning);
+    sizeQuat(mTurnOrientation);
+    sizeQuat(mTurnAxisTerm);
+    mTurnTimestamp.resize(capacity);
+    mTurnHalfRate.resize(capacity);
+    sizeGroup(mBody);
     sizeVec(mBodyVelocity);
     sizeVec(mBodyAcceleration);
     sizeVec(mBodyAxis);
@@ -792,46 +846,37 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
     put(mPosition, entity, u.mPosition);
     put(mVelocity, entity, u.mVelocity);
     put(mAcceleration, entity, u.mAcceleration);
-    putQuat(mOrientation, entity, u.mOrientation);
-    putQuat(mAxisTerm, entity, u.mAxisTerm);
+    // What the turning formula gives at h = 0 (cos 1, sin 0; B is finite): A times one Newton
+    // step towards unit length.
+    {
+        const Quat& a = u.mOrientation;
+        const float f = 1.5f - 0.5f * (a.w * a.w + a.x * a.x + a.y * a.y + a.z * a.z);
+        Quat fixed;
+        fixed.w = a.w * f;
+        fixed.x = a.x * f;
+        fixed.y = a.y * f;
+        fixed.z = a.z * f;
+        putQuat(mFixedOrientation, entity, fixed);
+    }
     mTimestamp[entity] = u.mTimestamp;
-    mHalfRate[entity] = u.mHalfRate;
     mAgeScale[entity] = u.mKernel == kKernelStatic ? 0.0f : 1.0f;
 
-    std::uint32_t slot = mBodySlot[entity];
-    const bool body = u.mKernel == kKernelBody;
-    if (body && slot == kNoSlot) {
-        slot = static_cast<std::uint32_t>(mBodyCount++);
-        mBodySlot[entity] = slot;
-        mBodyEntity[slot] = static_cast<std::uint32_t>(entity);
-    } else if (!body && slot != kNoSlot) {
-        // Swap-remove: the last body entity takes the freed slot.
-        const std::size_t last = --mBodyCount;
-        const std::uint32_t moved = mBodyEntity[last];
-        if (last != slot) {
-            mBodyEntity[slot] = moved;
-            mBodySlot[moved] = slot;
-            const PreparedDeadReckoning& m = mPrepared[moved];
-            put(mBodyPosition, slot, m.mPosition);
-            put(mBodyVelocity, slot, m.mVelocity);
-            put(mBodyAcceleration, slot, m.mAcceleration);
-            put(mBodyAxis, slot, m.mAxis);
-            putQuat(mBodyOrientation, slot, m.mOrientation);
-            mBodyTimestamp[slot] = m.mTimestamp;
-            mBodyHalfRate[slot] = m.mHalfRate;
-        }
-        mBodySlot[entity] = kNoSlot;
-        return Status::Ok;
-    }
-    if (body) {
-        put(mBodyPosition, slot, u.mPosition);
-        put(mBodyVelocity, slot, u.mVelocity);
-        put(mBodyAcceleration, slot, u.mAcceleration);
-        put(mBodyAxis, slot, u.mAxis);
-        putQuat(mBodyOrientation, slot, u.mOrientation);
-        mBodyTimestamp[slot] = u.mTimestamp;
-        mBodyHalfRate[slot] = u.mHalfRate;
-    }
+    const std::span<const PreparedDeadReckoning> all(mPrepared);
+    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+        putQuat(mTurnOrientation, slot, m.mOrientation);
+        putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
+        mTurnTimestamp[slot] = m.mTimestamp;
+        mTurnHalfRate[slot] = m.mHalfRate;
+    });
+    assignToGroup(mBody, all, entity, u.mKernel == kKernelBody, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+        put(mBodyPosition, slot, m.mPosition);
+        put(mBodyVelocity, slot, m.mVelocity);
+        put(mBodyAcceleration, slot, m.mAcceleration);
+        put(mBodyAxis, slot, m.mAxis);
+        putQuat(mBodyOrientation, slot, m.mOrientation);
+        mBodyTimestamp[slot] = m.mTimestamp;
+        mBodyHalfRate[slot] = m.mHalfRate;
+    });
     return Status::Ok;
 }
 
@@ -840,35 +885,21 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
     const std::size_t n = mPrepared.size();
     if (!isFinite(time) || !(extrapolationLimit >= 0.0f) || out.size() < n) return n;
     const double limit = static_cast<double>(extrapolationLimit);
-    std::size_t refused = 0;
+    // When a pass meets an unusual entity (an angle beyond the reduction, or an overflow),
+    // a last scan redoes every such entity by extrapolateOne, which writes its whole result
+    // (or refuses it). Never in a sane frame.
+    std::int32_t unusual = 0;
 
-    // Pass 1, every entity, the world-axis formula, chunk by chunk: straight-line float/double
-    // loops over the columns (vectorised), the results staged in SoA then stored as structs.
+    // Pass 1, every entity: the world-axis translation and the fixed orientation, chunk by
+    // chunk: a straight-line loop over the columns (vectorised), the results staged in SoA
+    // then stored as structs.
     for (std::size_t begin = 0; begin < n; begin += kChunk) {
         const std::size_t m = std::min(kChunk, n - begin);
         alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
         alignas(16) float vx[kChunk], vy[kChunk], vz[kChunk];
-        alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
-        int unusual = 0;  // an angle beyond the reduction, or an overflow: redo the chunk scalar
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t i = begin + j;
-            double age = time - mTimestamp[i];
-            age = age > 0.0 ? age : 0.0;
-            age = age < limit ? age : limit;
-            const float tf = static_cast<float>(age) * mAgeScale[i];
-            const double h = mHalfRate[i] * static_cast<double>(tf);
-            unusual |= h < kReductionLimit ? 0 : 1;
-            float sine, cosine, sinc;
-            sinCosReduced(h * static_cast<double>(h < kReductionLimit), sine, cosine, sinc);
-            float w = mOrientation.w[i] * cosine + mAxisTerm.w[i] * sine;
-            float x = mOrientation.x[i] * cosine + mAxisTerm.x[i] * sine;
-            float y = mOrientation.y[i] * cosine + mAxisTerm.y[i] * sine;
-            float z = mOrientation.z[i] * cosine + mAxisTerm.z[i] * sine;
-            const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
-            ow[j] = w * f;
-            ox[j] = x * f;
-            oy[j] = y * f;
-            oz[j] = z * f;
+            const float tf = clampedAge(time, mTimestamp[i], limit) * mAgeScale[i];
             const Real t = static_cast<Real>(tf);
             const Real halfT2 = Real(0.5) * t * t;
             px[j] = mPosition.x[i] + (Real(mVelocity.x[i]) * t + Real(mAcceleration.x[i]) * halfT2);
@@ -877,78 +908,140 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
             vx[j] = mVelocity.x[i] + mAcceleration.x[i] * tf;
             vy[j] = mVelocity.y[i] + mAcceleration.y[i] * tf;
             vz[j] = mVelocity.z[i] + mAcceleration.z[i] * tf;
-            unusual |= static_cast<int>(!finiteR(px[j] + py[j] + pz[j])) | static_cast<int>(!finiteF(vx[j] + vy[j] + vz[j]));
+            unusual |= static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j])) |
+                       static_cast<std::int32_t>(!finiteF(vx[j] + vy[j] + vz[j]));
         }
         for (std::size_t j = 0; j < m; ++j) {
-            DeadReckoningResult& r = out[begin + j];
+            const std::size_t i = begin + j;
+            DeadReckoningResult& r = out[i];
             r.position = RVec3(px[j], py[j], pz[j]);
             r.velocity = Vec3(vx[j], vy[j], vz[j]);
-            r.orientation.w = ow[j];
-            r.orientation.x = ox[j];
-            r.orientation.y = oy[j];
-            r.orientation.z = oz[j];
-        }
-        if (unusual != 0) {
-            for (std::size_t j = 0; j < m; ++j) {
-                const std::size_t i = begin + j;
-                if (mPrepared[i].mKernel == kKernelBody) continue;  // pass 2
-                if (!PreparedAccess::extrapolateOne(mPrepared[i], time, limit, out[i])) ++refused;
-            }
+            r.orientation.w = mFixedOrientation.w[i];
+            r.orientation.x = mFixedOrientation.x[i];
+            r.orientation.y = mFixedOrientation.y[i];
+            r.orientation.z = mFixedOrientation.z[i];
         }
     }
 
-    // Pass 2, the body-axis entities (dense): positions from the integrals (see
-    // extrapolateOne), in float, rotated to world axes by the orientation.
-    for (std::size_t begin = 0; begin < mBodyCount; begin += kChunk) {
-        const std::size_t m = std::min(kChunk, mBodyCount - begin);
-        alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
-        int unusual = 0;
+    // Pass 2, the turning entities (dense): the orientation A cos h + B sin h, then one
+    // Newton step towards unit length. Chunks whose angles are all in the first quadrant (the
+    // usual case: |w| t / 2 < pi/4) skip the range reduction; the results are the same.
+    for (std::size_t begin = 0; begin < mTurning.count; begin += kChunk) {
+        const std::size_t m = std::min(kChunk, mTurning.count - begin);
+        alignas(16) double h[kChunk];
+        alignas(16) float age[kChunk];  // (a float array too, so that the loop vectorises)
+        alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
+        // 64-bit flags: a double-wide lane type, so that the loop vectorises.
+        std::int64_t reduce = 0;
+        std::int64_t beyond = 0;
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t s = begin + j;
-            double age = time - mBodyTimestamp[s];
-            age = age > 0.0 ? age : 0.0;
-            age = age < limit ? age : limit;
-            const float t = static_cast<float>(age);
-            const double h = mBodyHalfRate[s] * static_cast<double>(t);
-            unusual |= h < kReductionLimit ? 0 : 1;
-            float sine, cosine, sincHalf;
-            sinCosReduced(h * static_cast<double>(h < kReductionLimit), sine, cosine, sincHalf);
-            const float sincX = sincHalf * cosine;
-            const auto xx = static_cast<float>(2.0 * h);
-            const float c1 = 0.5f * sincHalf * sincHalf;
-            const float zz = xx * xx;
-            const float series =
-                1.0f / 6.0f -
-                zz * (1.0f / 120.0f -
-                      zz * (1.0f / 5040.0f -
-                            zz * (1.0f / 362880.0f - zz * (1.0f / 39916800.0f - zz / 6227020800.0f))));
-            const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
-            const float ex = xx < 2.0f ? series : direct;
-            const float t2 = t * t;
-            const float cV = t * sincX, cUxV = t * xx * c1, cA = t2 * (sincX - c1), cUxA = t2 * xx * (c1 - ex);
-            const float ux = mBodyAxis.x[s], uy = mBodyAxis.y[s], uz = mBodyAxis.z[s];
-            const float vx = mBodyVelocity.x[s], vy = mBodyVelocity.y[s], vz = mBodyVelocity.z[s];
-            const float ax = mBodyAcceleration.x[s], ay = mBodyAcceleration.y[s], az = mBodyAcceleration.z[s];
-            const float cUV = t * zz * ex * (ux * vx + uy * vy + uz * vz);
-            const float cUA = t2 * (0.5f - sincX + c1) * (ux * ax + uy * ay + uz * az);
-            const float dx = cV * vx + cUxV * (uy * vz - uz * vy) + cUV * ux + cA * ax + cUxA * (uy * az - uz * ay) + cUA * ux;
-            const float dy = cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
-            const float dz = cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
-            // q d q^-1 = d + w c + q.xyz x c with c = 2 q.xyz x d.
-            const float qw = mBodyOrientation.w[s], qx = mBodyOrientation.x[s], qy = mBodyOrientation.y[s],
-                        qz = mBodyOrientation.z[s];
-            const float cx = 2.0f * (qy * dz - qz * dy), cy = 2.0f * (qz * dx - qx * dz), cz = 2.0f * (qx * dy - qy * dx);
-            px[j] = mBodyPosition.x[s] + Real(dx + qw * cx + (qy * cz - qz * cy));
-            py[j] = mBodyPosition.y[s] + Real(dy + qw * cy + (qz * cx - qx * cz));
-            pz[j] = mBodyPosition.z[s] + Real(dz + qw * cz + (qx * cy - qy * cx));
-            unusual |= finiteR(px[j] + py[j] + pz[j]) ? 0 : 1;
+            age[j] = clampedAge(time, mTurnTimestamp[s], limit);
+            h[j] = mTurnHalfRate[s] * static_cast<double>(age[j]);
+            reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
+            beyond |= static_cast<std::int64_t>(!(h[j] < kReductionLimit));
         }
-        for (std::size_t j = 0; j < m; ++j) out[mBodyEntity[begin + j]].position = RVec3(px[j], py[j], pz[j]);
-        if (unusual != 0) {
+        unusual |= static_cast<std::int32_t>(beyond);
+        auto turn = [&](auto sinCos) {
             for (std::size_t j = 0; j < m; ++j) {
-                const std::size_t i = mBodyEntity[begin + j];
-                if (!PreparedAccess::extrapolateOne(mPrepared[i], time, limit, out[i])) ++refused;
+                const std::size_t s = begin + j;
+                float sine, cosine, sinc;
+                sinCos(h[j] * static_cast<double>(h[j] < kReductionLimit), sine, cosine, sinc);
+                const float w = mTurnOrientation.w[s] * cosine + mTurnAxisTerm.w[s] * sine;
+                const float x = mTurnOrientation.x[s] * cosine + mTurnAxisTerm.x[s] * sine;
+                const float y = mTurnOrientation.y[s] * cosine + mTurnAxisTerm.y[s] * sine;
+                const float z = mTurnOrientation.z[s] * cosine + mTurnAxisTerm.z[s] * sine;
+                const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
+                ow[j] = w * f;
+                ox[j] = x * f;
+                oy[j] = y * f;
+                oz[j] = z * f;
             }
+        };
+        // (Lambdas, not function pointers, so that the loop is inlined and vectorised.)
+        if (reduce != 0)
+            turn([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); });
+        else
+            turn([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); });
+        for (std::size_t j = 0; j < m; ++j) {
+            Quat& o = out[mTurning.entity[begin + j]].orientation;
+            o.w = ow[j];
+            o.x = ox[j];
+            o.y = oy[j];
+            o.z = oz[j];
+        }
+    }
+
+    // Pass 3, the body-axis entities (dense): positions from the integrals (see
+    // extrapolateOne), in float, rotated to world axes by the orientation.
+    for (std::size_t begin = 0; begin < mBody.count; begin += kChunk) {
+        const std::size_t m = std::min(kChunk, mBody.count - begin);
+        alignas(16) double h[kChunk];
+        alignas(16) float age[kChunk];
+        alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
+        std::int64_t reduce = 0;  // 64 bits, as in pass 2
+        for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t s = begin + j;
+            age[j] = clampedAge(time, mBodyTimestamp[s], limit);
+            h[j] = mBodyHalfRate[s] * static_cast<double>(age[j]);
+            reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
+        }
+        auto integrate = [&](auto sinCos) {
+            std::int32_t flags = 0;  // a local, so that the reduction vectorises
+            for (std::size_t j = 0; j < m; ++j) {
+                const std::size_t s = begin + j;
+                const float t = age[j];
+                float sine, cosine, sincHalf;
+                sinCos(h[j] * static_cast<double>(h[j] < kReductionLimit), sine, cosine, sincHalf);
+                const float sincX = sincHalf * cosine;
+                const auto xx = static_cast<float>(2.0 * h[j]);
+                const float c1 = 0.5f * sincHalf * sincHalf;
+                const float zz = xx * xx;
+                const float series =
+                    1.0f / 6.0f -
+                    zz * (1.0f / 120.0f -
+                          zz * (1.0f / 5040.0f -
+                                zz * (1.0f / 362880.0f - zz * (1.0f / 39916800.0f - zz / 6227020800.0f))));
+                const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
+                const float ex = xx < 2.0f ? series : direct;
+                const float t2 = t * t;
+                const float cV = t * sincX, cUxV = t * xx * c1, cA = t2 * (sincX - c1), cUxA = t2 * xx * (c1 - ex);
+                const float ux = mBodyAxis.x[s], uy = mBodyAxis.y[s], uz = mBodyAxis.z[s];
+                const float vx = mBodyVelocity.x[s], vy = mBodyVelocity.y[s], vz = mBodyVelocity.z[s];
+                const float ax = mBodyAcceleration.x[s], ay = mBodyAcceleration.y[s], az = mBodyAcceleration.z[s];
+                const float cUV = t * zz * ex * (ux * vx + uy * vy + uz * vz);
+                const float cUA = t2 * (0.5f - sincX + c1) * (ux * ax + uy * ay + uz * az);
+                const float dx = cV * vx + cUxV * (uy * vz - uz * vy) + cUV * ux + cA * ax + cUxA * (uy * az - uz * ay) + cUA * ux;
+                const float dy = cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
+                const float dz = cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
+                // q d q^-1 = d + w c + q.xyz x c with c = 2 q.xyz x d.
+                const float qw = mBodyOrientation.w[s], qx = mBodyOrientation.x[s], qy = mBodyOrientation.y[s],
+                            qz = mBodyOrientation.z[s];
+                const float cx = 2.0f * (qy * dz - qz * dy), cy = 2.0f * (qz * dx - qx * dz), cz = 2.0f * (qx * dy - qy * dx);
+                px[j] = mBodyPosition.x[s] + Real(dx + qw * cx + (qy * cz - qz * cy));
+                py[j] = mBodyPosition.y[s] + Real(dy + qw * cy + (qz * cx - qx * cz));
+                pz[j] = mBodyPosition.z[s] + Real(dz + qw * cz + (qx * cy - qy * cx));
+                flags |= static_cast<std::int32_t>(!(h[j] < kReductionLimit)) |
+                         static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j]));
+            }
+            unusual |= flags;
+        };
+        if (reduce != 0)
+            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); });
+        else
+            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); });
+        for (std::size_t j = 0; j < m; ++j) out[mBody.entity[begin + j]].position = RVec3(px[j], py[j], pz[j]);
+    }
+
+    std::size_t refused = 0;
+    if (unusual != 0) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const PreparedDeadReckoning& e = mPrepared[i];
+            const DeadReckoningResult& r = out[i];
+            const double h = e.mHalfRate * static_cast<double>(clampedAge(time, e.mTimestamp, limit));
+            const bool beyondReduction = e.mHalfRate > 0.0 && !(h < kReductionLimit);
+            if (beyondReduction || !isFinite(r.position) || !isFinite(r.velocity))
+                if (!PreparedAccess::extrapolateOne(e, time, limit, out[i])) ++refused;
         }
     }
     return refused;

@@ -1082,4 +1082,43 @@ TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
     EXPECT_LE(worst.orientation, 4e-7);
 }
 
+
+// DeadReckoningBatch skips the range reduction for chunks whose angles are all in the first
+// quadrant: an entity's result must not depend on that, i.e. on its neighbours. Entity 0 (a
+// slow turn, h = 0.1 rad) sits once among slow neighbours and once beside one turning fast
+// enough (h = 40 rad) that its chunk takes the reducing path: the same bytes both times, for a
+// world-axis and a body-axis model.
+TEST(Prepared, BatchResultDoesNotDependOnTheNeighbours) {
+    for (DeadReckoningAlgorithm algorithm : {DeadReckoningAlgorithm::Rvw, DeadReckoningAlgorithm::Rvb}) {
+        DeadReckoningState slow = makeState(algorithm, DVec3(10, 2, -3), DVec3(4, 0.5, 6));
+        slow.acceleration = Vec3(0.5f, -9.81f, 1.0f);
+        slow.angularVelocity = Vec3(0.2f, 0.8f, 0.0f) * (0.2f / glm::length(Vec3(0.2f, 0.8f, 0.0f)));
+        DeadReckoningState fast = slow;
+        fast.angularVelocity = Vec3(0.0f, 80.0f, 0.0f);
+        const double stamp = 100.0;
+        const double now = 101.0;  // age 1 s: h = |w| t / 2 = 0.1 and 40
+        const float noLimit = std::numeric_limits<float>::infinity();
+        foresight::PreparedDeadReckoning pSlow, pFast;
+        ASSERT_EQ(foresight::prepareDeadReckoning(slow, stamp, pSlow), Status::Ok);
+        ASSERT_EQ(foresight::prepareDeadReckoning(fast, stamp, pFast), Status::Ok);
+        foresight::DeadReckoningBatch calm(4), mixed(4);
+        for (std::size_t i = 0; i < 4; ++i) {
+            ASSERT_EQ(calm.set(i, pSlow), Status::Ok);
+            ASSERT_EQ(mixed.set(i, i == 2 ? pFast : pSlow), Status::Ok);
+        }
+        std::vector<DeadReckoningResult> a(4), b(4);
+        ASSERT_EQ(calm.extrapolate(now, noLimit, a), 0u);
+        ASSERT_EQ(mixed.extrapolate(now, noLimit, b), 0u);
+        EXPECT_TRUE(ftest::sameBytes(a[0].position, b[0].position));
+        EXPECT_TRUE(ftest::sameBytes(a[0].velocity, b[0].velocity));
+        EXPECT_TRUE(ftest::sameBytes(a[0].orientation, b[0].orientation));
+        // And both within the contract of the reference (the fast one too).
+        ContractErrors worst;
+        checkAgainstReference(slow, stamp, now, noLimit, a[0], worst);
+        checkAgainstReference(fast, stamp, now, noLimit, b[2], worst);
+        EXPECT_LE(worst.position, 1.0);
+        EXPECT_LE(worst.orientation, 4e-7);
+    }
+}
+
 } // namespace

@@ -396,9 +396,11 @@ std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> enti
 /// Many entities' prepared updates in structure-of-arrays form, for extrapolating them all
 /// every frame at SIMD speed (the fast form of extrapolateDeadReckoning, same contract).
 /// Entities are numbered 0 to capacity() - 1; each starts as a default PreparedDeadReckoning
-/// (STATIC at the origin). The constructor allocates everything (about 290 bytes per entity,
-/// 330 in the double build); no other call allocates. One frame: a vectorised pass over every
-/// entity with the world-axis formula, then a pass over the body-axis entities.
+/// (STATIC at the origin). The constructor allocates everything (about 340 bytes per entity,
+/// 380 in the double build); no other call allocates. One frame: a vectorised pass over every
+/// entity (the world-axis translation), then one over the turning entities only (their
+/// orientation: a non-turning entity pays no sine or cosine), then one over the body-axis
+/// entities (their positions).
 class DeadReckoningBatch {
 public:
     /// A batch of `capacity` entities [Limit: < 2^32]. Allocates.
@@ -432,17 +434,27 @@ private:
     struct QuatColumns {
         std::vector<float> w, x, y, z;
     };
-    // Every entity (the world-axis formula; body-axis entities are redone from mBody).
+    // A subset of the entities kept dense (swap-remove): its members' numbers and, per entity,
+    // its index among them (or kNoSlot).
+    struct Group {
+        std::vector<std::uint32_t> entity;
+        std::vector<std::uint32_t> slot;
+        std::size_t count = 0;
+    };
+    // Every entity: the translation (world-axis formula; body-axis positions are redone from
+    // the body group) and the orientation when it does not turn.
     std::vector<PreparedDeadReckoning> mPrepared;
     Vec3Columns<Real> mPosition;
     Vec3Columns<float> mVelocity, mAcceleration;
-    QuatColumns mOrientation, mAxisTerm;
-    std::vector<double> mTimestamp, mHalfRate;
+    QuatColumns mFixedOrientation;  // A normalised as the turning formula does at h = 0
+    std::vector<double> mTimestamp;
     std::vector<float> mAgeScale;  // 0 for STATIC, 1 otherwise
-    // Body-axis entities, dense: their numbers and the columns the integrals read.
-    std::vector<std::uint32_t> mBodyEntity;
-    std::vector<std::uint32_t> mBodySlot;  // per entity: its index in mBodyEntity, or kNoSlot
-    std::size_t mBodyCount = 0;
+    // Turning entities (|w| > 0, world or body axes): the orientation A cos h + B sin h.
+    Group mTurning;
+    QuatColumns mTurnOrientation, mTurnAxisTerm;
+    std::vector<double> mTurnTimestamp, mTurnHalfRate;
+    // Body-axis entities: the columns the integrals read.
+    Group mBody;
     Vec3Columns<float> mBodyVelocity, mBodyAcceleration, mBodyAxis;
     QuatColumns mBodyOrientation;
     std::vector<double> mBodyTimestamp, mBodyHalfRate;
