@@ -342,6 +342,17 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
         timeCount = 0;
         if (maxTime > 0) times[static_cast<std::size_t>(timeCount++)] = maxTime;
     }
+    // A time that rounds to 0 as a float (a tiny positive double, e.g. a target 1e-30 m away
+    // at 3e38 m/s) would be reported as `time: 0`, outside (0, maxTime]: drop it. Such a shot
+    // meets the target before any step of a prediction anyway.
+    {
+        int kept = 0;
+        for (int i = 0; i < timeCount; ++i) {
+            const double t = times[static_cast<std::size_t>(i)];
+            if (static_cast<float>(t) > 0.0f) times[static_cast<std::size_t>(kept++)] = t;
+        }
+        timeCount = kept;
+    }
     // Insertion sort of at most 4 (std::sort trips GCC 12's -Warray-bounds here).
     for (int i = 1; i < timeCount; ++i) {
         for (int j = i; j > 0 && times[static_cast<std::size_t>(j)] < times[static_cast<std::size_t>(j - 1)]; --j) {

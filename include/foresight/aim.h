@@ -24,7 +24,9 @@
 /// 1e-14 of the distances involved. Two roots further apart than about 1e-6 s are kept apart.
 ///
 /// Time 0 is never a solution: a target at the shooter is hit only by a shot that flies and
-/// comes back (straight up under gravity), or by none. No allocation; computation in double
+/// comes back (straight up under gravity), or by none. Nor is a time so small that it rounds
+/// to 0 as a float (a target 1e-30 m away at 3e38 m/s): such solutions are dropped, so every
+/// reported FiringSolution::time is a positive float. No allocation; computation in double
 /// (roots in long double). Gravity is taken at the decimal value it was written as (9.81f is
 /// 9.81), as predictProjectile takes it, so that a solution flown by predictProjectile meets
 /// the target.
