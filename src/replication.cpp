@@ -198,8 +198,10 @@ Status validateReceiverSettings(const ReceiverSettings& settings) {
     if (!isPositiveFinite(settings.blendTime) || !isPositiveFinite(settings.decayHalfLife) ||
         !isPositiveFinite(settings.interpolationDelay))
         return Status::InvalidSetting;
-    // Infinity disables these two; NaN compares false and is refused.
-    if (!(settings.teleportDistance > 0.0f) || !(settings.extrapolationLimit >= 0.0f)) return Status::InvalidSetting;
+    // Infinity disables these; NaN compares false and is refused.
+    if (!(settings.teleportDistance > 0.0f) || !(settings.extrapolationLimit >= 0.0f) ||
+        !(settings.maxFutureSkew >= 0.0f) || !(settings.restartAfter > 0.0f))
+        return Status::InvalidSetting;
     return Status::Ok;
 }
 
@@ -300,6 +302,17 @@ Status DeadReckoningReceiver::showExtrapolated(double time, ReceivedPose& out, P
     return Status::Ok;
 }
 
+bool DeadReckoningReceiver::isTeleport(const Snapshot& from, const Snapshot& to) const {
+    // The older update's own prediction at the newer one's timestamp, without the
+    // extrapolation limit (the sender's view of what receivers show): a threshold sender's
+    // updates land within its threshold of it, a teleport far from it.
+    DeadReckoningResult predicted;
+    const auto age = static_cast<float>(to.timestamp - from.timestamp);
+    if (!std::isfinite(age) || predictDeadReckoning(from.state, age, predicted) != Status::Ok) return true;
+    return glm::length(toD(to.state.position) - toD(predicted.position)) >
+           static_cast<double>(mSettings.teleportDistance);
+}
+
 Status DeadReckoningReceiver::showInterpolated(double renderTime, ReceivedPose& out) const {
     const Snapshot& oldest = buffered(0);
     const Snapshot& newest = buffered(mBufferCount - 1);
@@ -325,7 +338,7 @@ Status DeadReckoningReceiver::showInterpolated(double renderTime, ReceivedPose& 
         DeadReckoningResult resultB;
         if (Status s = extrapolate(from, from.timestamp, result, a, held); s != Status::Ok) return s;
         if (Status s = extrapolate(to, to.timestamp, resultB, b, held); s != Status::Ok) return s;
-        if (glm::length(b.position - a.position) > static_cast<double>(mSettings.teleportDistance)) {
+        if (isTeleport(from, to)) {
             // A teleport between the two: no sweep through the level; `from` moves on its own
             // model until `to` is due.
             if (Status s = extrapolate(from, renderTime, result, a, held); s != Status::Ok) return s;
@@ -395,12 +408,9 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
         mBuffer[(mBufferStart + i) % kBufferCapacity] = mBuffer[(mBufferStart + i - 1) % kBufferCapacity];
     mBuffer[(mBufferStart + index) % kBufferCapacity] = Snapshot{timestamp, state};
     ++mBufferCount;
-    if (index > 0) {
-        const DVec3 jump = toD(state.position) - toD(buffered(index - 1).state.position);
-        if (glm::length(jump) > static_cast<double>(mSettings.teleportDistance)) {
-            ++mCounters.teleports;
-            ++mCounters.snaps;
-        }
+    if (index > 0 && isTeleport(buffered(index - 1), buffered(index))) {
+        ++mCounters.teleports;
+        ++mCounters.snaps;
     }
     ++mCounters.accepted;
     return UpdateOutcome::Buffered;
@@ -412,20 +422,31 @@ UpdateOutcome DeadReckoningReceiver::receive(double timestamp, const DeadReckoni
         ++mCounters.invalid;
         return UpdateOutcome::Invalid;
     }
+    if (timestamp - receiveTime > static_cast<double>(mSettings.maxFutureSkew)) {
+        ++mCounters.tooFarAhead;
+        return UpdateOutcome::TooFarAhead;
+    }
     if (mSettings.mode == ReceiverMode::Interpolate) {
         const UpdateOutcome outcome = receiveInterpolated(timestamp, state);
         if (outcome == UpdateOutcome::Buffered && timestamp > receiveTime) ++mCounters.futureUpdates;
         return outcome;
     }
 
+    bool restart = false;
     if (mHasCurrent && timestamp <= mCurrent.timestamp) {
         if (timestamp == mCurrent.timestamp) {
             ++mCounters.duplicates;
             return UpdateOutcome::Duplicate;
         }
-        ++mCounters.outOfOrder;
-        return UpdateOutcome::OutOfOrder;
+        if (!(receiveTime - mLastAcceptedAt > static_cast<double>(mSettings.restartAfter))) {
+            ++mCounters.outOfOrder;
+            return UpdateOutcome::OutOfOrder;
+        }
+        // Silence for restartAfter, then an older timestamp: the sender's clock started again.
+        restart = true;
+        ++mCounters.clockRestarts;
     }
+    mLastAcceptedAt = receiveTime;
     if (timestamp > receiveTime) ++mCounters.futureUpdates;
     ++mCounters.accepted;
 
@@ -436,7 +457,7 @@ UpdateOutcome DeadReckoningReceiver::receive(double timestamp, const DeadReckoni
     Pose target;
     DeadReckoningResult targetResult;
     bool targetHeld = false;
-    bool snap = !mHasCurrent || mSettings.smoothing == Smoothing::Snap;
+    bool snap = !mHasCurrent || restart || mSettings.smoothing == Smoothing::Snap;
     if (!snap) {
         // Either fails only with an infinite extrapolationLimit and an overflowing age: snap.
         snap = showExtrapolated(receiveTime, shownPose, shown) != Status::Ok ||

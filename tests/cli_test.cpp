@@ -1713,6 +1713,18 @@ TEST_F(cli, NetsimRefusesBadOptionsWithStatusTwo) {
         {{"netsim", "--csv", bad.string()}, "bad.csv:3: column 2 (\"x\"): expected a finite number, got \"oops\""},
         {{"netsim", "--duration", "1", "--svg", (mDir / "no" / "dir.svg").string()}, "dir.svg: cannot write"},
         {{"netsim", "--seed", "x"}, "--seed"},
+        // Not wrapped to 2^64 - 1 nor saturated (as CLI11 and strtoull would).
+        {{"netsim", "--seed", "-1"}, "--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"-1\""},
+        {{"netsim", "--seed", "18446744073709551616"}, "--seed: expected an unsigned 64-bit integer"},
+        // An empty value is a mistake, not the default.
+        {{"netsim", "--csv", ""}, "--csv: expected a file name, got \"\""},
+        {{"netsim", "--models", ""}, "--models: expected a name or a comma-separated list, got \"\""},
+        {{"netsim", "--smoothing", ","}, "--smoothing: expected a name or a comma-separated list"},
+        {{"netsim", "--trajectory", ""}, "--trajectory: expected a name or a comma-separated list"},
+        // -1 was once a hidden "default" value.
+        {{"netsim", "--interpolation-delay", "-1"}, "--interpolation-delay must be > 0 and <= 60000 ms (got -1)"},
+        {{"netsim", "--extrapolation-limit", "-1"}, "--extrapolation-limit must be >= 0 and <= 3.6e6 ms (got -1)"},
+        {{"netsim", "--teleport-distance", "0"}, "--teleport-distance must be > 0 and <= 1e6 m (got 0)"},
     };
     for (const auto& c : cases) {
         const CliRun run = runCli(c.args);

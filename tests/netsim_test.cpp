@@ -167,11 +167,45 @@ TEST(NetsimCsv, ErrorsNameTheLineAndColumn) {
         {"t,x,y,z\n1,0,0,0\n0.5,1,0,0\n", "time 0.5 is not after the previous row's 1"},
         {"t,x,y,z\n0,0,0,0\n", "f.csv: expected at least 2 rows, got 1"},
         {"t,x,y,z,qw,qx,qy,qz\n0,0,0,0,0,0,0,0\n", "f.csv:2: column 5 (\"qw\"): the quaternion qw, qx, qy, qz is zero"},
+        // Finite, but beyond what the sender's float fields hold: the row is named.
+        {"t,x,y,z\n0,0,0,0\n1,1e300,0,0\n2,0,0,0\n", "f.csv:3: the position is beyond 1e30 m"},
+        {"t,x,y,z\n0,0,0,0\n1e-300,1,0,0\n1,2,0,0\n",
+         "f.csv:2: the velocity (from the positions and times around this row) is beyond 1e30"},
+        {"t,x,y,z,wx,wy,wz\n0,0,0,0,0,1e39,0\n1,1,0,0,0,0,0\n", "f.csv:2: the angular velocity is beyond 1e30"},
+        // Distinct times that the first row's time swallows: not silently merged.
+        // (1e17 and the next double, 1e17 + 16, both become 2e17 once -1e17 is taken away.)
+        {"t,x,y,z\n-1e17,0,0,0\n1e17,0,0,0\n1.0000000000000002e17,1,0,0\n", "f.csv:4: times 1e+17 and 1e+17 are too close"},
     };
     for (const auto& c : cases) {
         const std::string error = csvError(c.text);
         EXPECT_NE(error.find(c.message), std::string::npos) << "got: " << error << "\nexpected: " << c.message;
     }
+}
+
+// Spreadsheet habits: a UTF-8 byte order mark before the header, "+1" for 1.
+TEST(NetsimCsv, ByteOrderMarkAndPlusSignsAreAccepted) {
+    Trajectory t;
+    std::string error;
+    ASSERT_TRUE(parseTrajectoryCsv("\xEF\xBB\xBFt,x,y,z\n0,+1,0,0\n1,+2.5,0,-1\n", "bom.csv", t, error)) << error;
+    EXPECT_EQ(t.sample(0.0).position, glm::dvec3(1, 0, 0));
+    EXPECT_EQ(t.sample(1.0).position, glm::dvec3(2.5, 0, -1));
+    EXPECT_NE(csvError("t,x,y,z\n0,+-1,0,0\n1,1,0,0\n").find("got \"+-1\""), std::string::npos);
+}
+
+// Absolute times (Unix time, or larger) are taken from the first row: the simulation's
+// instants k / rate keep their resolution. Rows 64 s apart at 1e17 s (a double's step there is
+// 16 s): 10 m/s along x, sampled exactly at the rows and half-way.
+TEST(NetsimCsv, TimesAreTakenFromTheFirstRow) {
+    std::string text = "t,x,y,z\n";
+    for (int i = 0; i < 4; ++i) text += std::to_string(1e17 + 64.0 * i) + "," + std::to_string(640 * i) + ",0,0\n";
+    Trajectory t;
+    std::string error;
+    ASSERT_TRUE(parseTrajectoryCsv(text, "unix.csv", t, error)) << error;
+    EXPECT_EQ(t.start, 0.0);
+    EXPECT_EQ(t.end, 192.0);
+    EXPECT_NEAR(t.sample(96.0).position.x, 960.0, 1e-9);  // linear rows: exact up to rounding
+    EXPECT_NEAR(t.sample(100.0).velocity.x, 10.0, 1e-12);
+    EXPECT_NE(t.description.find("times from the first row's"), std::string::npos) << t.description;
 }
 
 TEST(NetsimCsv, RowCountIsCapped) {
@@ -355,6 +389,33 @@ TEST(NetsimSimulation, EverythingLostShowsNothing) {
     ASSERT_TRUE(simulateTrajectory(builtin("slalom", 20), settings, false, result, error)) << error;
     EXPECT_EQ(result.models[0].lost, result.models[0].updates);
     for (const DisplayResult& d : result.models[0].displays) EXPECT_EQ(d.frames, 0u);
+    // The reports say there is no error to report, not a perfect zero.
+    const std::string text = textTable({result}, settings);
+    EXPECT_EQ(text.find("0.000"), std::string::npos) << text;
+    EXPECT_NE(text.find("        -         -         -"), std::string::npos) << text;
+    const std::string markdown = markdownTable({result}, settings);
+    EXPECT_NE(markdown.find(" - / - / 0 |"), std::string::npos) << markdown;
+    EXPECT_EQ(markdown.find("0.00 / 0.00"), std::string::npos) << markdown;
+}
+
+// The sender's reasons are counted per model: the first update once, then position threshold
+// crossings and heartbeats; every update has at least one reason.
+TEST(NetsimSimulation, SendReasonsAreCounted) {
+    SimulationSettings settings = perfectLink();
+    settings.models = {DeadReckoningAlgorithm::Static, DeadReckoningAlgorithm::Fpw};
+    TrajectoryResult result;
+    std::string error;
+    ASSERT_TRUE(simulateTrajectory(builtin("slalom", 20), settings, false, result, error)) << error;
+    for (const ModelResult& m : result.models) {
+        EXPECT_EQ(m.sentFirst, 1u);
+        EXPECT_GE(m.sentFirst + m.sentPosition + m.sentOrientation + m.sentHeartbeat, m.updates);
+        EXPECT_LE(m.sentPosition, m.updates);
+    }
+    // STATIC on a car at 20 m/s: past the 1 m threshold every 0.05 s, i.e. every 30 Hz tick or
+    // so, all for position; FPW sends far less.
+    // (1 m at 20 m/s is 0.05 s: every other 30 Hz tick, 15 Hz over 20 s.)
+    EXPECT_GE(result.models[0].sentPosition, 290u);
+    EXPECT_LT(result.models[1].updates, result.models[0].updates / 2);
 }
 
 TEST(NetsimReport, TablesNameEveryRowAndTheSvgHasItsAxes) {

@@ -620,6 +620,42 @@ TEST(Receiver, BadPacketsAreDroppedCountedAndChangeNothing) {
     EXPECT_EQ(receiver.sample(1.15, p), Status::NoUpdate);
 }
 
+// A corrupt timestamp far ahead is dropped: accepted, it would make every real update after it
+// out of order (the receiver would never move again).
+TEST(Receiver, UpdateStampedTooFarAheadIsDroppedAndLaterUpdatesStillApply) {
+    DeadReckoningReceiver receiver;  // maxFutureSkew 1 s
+    ASSERT_EQ(receiver.receive(1.0, fpw(DVec3(0), DVec3(10, 0, 0)), 1.0), UpdateOutcome::Snapped);
+    EXPECT_EQ(receiver.receive(1.0e6, fpw(DVec3(5000, 0, 0), DVec3(0)), 1.5), UpdateOutcome::TooFarAhead);
+    EXPECT_EQ(receiver.counters().tooFarAhead, 1u);
+    // Exactly 1 s ahead is still accepted (a clock slightly off), counted as a future update.
+    // (Shown at 2.0: 0 + 10 * 0.25, held at the 0.25 s limit; the update says 5: a correction.)
+    ASSERT_EQ(receiver.receive(3.0, fpw(DVec3(5, 0, 0), DVec3(10, 0, 0)), 2.0), UpdateOutcome::Accepted);
+    EXPECT_EQ(receiver.counters().futureUpdates, 1u);
+    // The real stream goes on; once the default 0.2 s blend is over, the newest update's
+    // extrapolation: 10 + 10 * 0.25 at 3.75.
+    ASSERT_EQ(receiver.receive(3.5, fpw(DVec3(10, 0, 0), DVec3(10, 0, 0)), 3.5), UpdateOutcome::Accepted);
+    EXPECT_EQ(sampled(receiver, 3.75).position, rv(12.5, 0, 0));
+}
+
+// A sender whose clock starts again (a restart) sends older timestamps: after restartAfter of
+// silence they are taken as the new stream (snap), before it they are late packets (dropped).
+TEST(Receiver, SenderClockRestartIsFollowedAfterRestartAfter) {
+    ReceiverSettings settings;
+    settings.restartAfter = 2.0f;
+    DeadReckoningReceiver receiver(settings);
+    ASSERT_EQ(receiver.receive(100.0, fpw(DVec3(0), DVec3(1, 0, 0)), 100.0), UpdateOutcome::Snapped);
+    // 1.5 s later (receive time), an update stamped 0.5: a late packet still, dropped.
+    EXPECT_EQ(receiver.receive(0.5, fpw(DVec3(40, 0, 0), DVec3(0, 0, 1)), 101.5), UpdateOutcome::OutOfOrder);
+    // 2.5 s of silence: the restarted clock is followed, and its successors apply normally.
+    EXPECT_EQ(receiver.receive(1.0, fpw(DVec3(40, 0, 0), DVec3(0, 0, 1)), 102.5), UpdateOutcome::Snapped);
+    EXPECT_EQ(receiver.counters().clockRestarts, 1u);
+    EXPECT_EQ(receiver.counters().snaps, 2u);
+    // Receive times and timestamps are now on the new clock: shown at the update, age 0.
+    EXPECT_EQ(sampled(receiver, 1.0).position, rv(40, 0, 0));
+    EXPECT_EQ(receiver.receive(1.5, fpw(DVec3(40, 0, 0.5), DVec3(0, 0, 1)), 1.5), UpdateOutcome::Accepted);
+    EXPECT_EQ(receiver.counters().outOfOrder, 1u);
+}
+
 TEST(Receiver, SampleRefusals) {
     DeadReckoningReceiver receiver;
     ReceivedPose untouched;
@@ -656,7 +692,16 @@ TEST(Receiver, InvalidSettingsAreRefused) {
         ReceiverSettings s;
         s.extrapolationLimit = v;
         bad.push_back(s);
+        s = {};
+        s.maxFutureSkew = v;
+        bad.push_back(s);
+        s = {};
+        s.restartAfter = v;
+        bad.push_back(s);
     }
+    ReceiverSettings noRestartWindow;
+    noRestartWindow.restartAfter = 0.0f;
+    bad.push_back(noRestartWindow);
     ReceiverSettings mode;
     mode.mode = static_cast<ReceiverMode>(7);
     bad.push_back(mode);
@@ -674,6 +719,8 @@ TEST(Receiver, InvalidSettingsAreRefused) {
     ReceiverSettings disabled;
     disabled.teleportDistance = inf;
     disabled.extrapolationLimit = inf;
+    disabled.maxFutureSkew = inf;
+    disabled.restartAfter = inf;
     EXPECT_EQ(foresight::validateReceiverSettings(disabled), Status::Ok);
 }
 
@@ -791,8 +838,8 @@ TEST(Interpolation, TheRingKeepsTheNewestUpdates) {
     const std::size_t n = DeadReckoningReceiver::kBufferCapacity + 8;
     // Arriving newest first within each pair, to exercise the ordered insertion.
     for (int k = 0; k < static_cast<int>(n); k += 2) {
-        ASSERT_EQ(receiver.receive((k + 1) / 16.0, lineAt((k + 1) / 16.0), 0.0), UpdateOutcome::Buffered);
-        ASSERT_EQ(receiver.receive(k / 16.0, lineAt(k / 16.0), 0.0), UpdateOutcome::Buffered);
+        ASSERT_EQ(receiver.receive((k + 1) / 16.0, lineAt((k + 1) / 16.0), (k + 1) / 16.0), UpdateOutcome::Buffered);
+        ASSERT_EQ(receiver.receive(k / 16.0, lineAt(k / 16.0), (k + 1) / 16.0), UpdateOutcome::Buffered);
     }
     // The 8 oldest are forgotten: a render time before stamp 8/16 holds the update stamped 8/16.
     EXPECT_EQ(sampled(receiver, 0.125 + 3 / 16.0).position, rv(1.0, 1, -0.5));
@@ -801,6 +848,18 @@ TEST(Interpolation, TheRingKeepsTheNewestUpdates) {
     // Between the buffered ones, exact interpolation still.
     const double render = 20 / 16.0 + 1 / 32.0;
     EXPECT_EQ(sampled(receiver, render + 0.125).position, rv(2 * render, 1, -render));
+}
+
+// Sparse updates of a fast entity (a threshold sender: seconds apart, far apart) are not
+// teleports when each lands on the previous one's prediction: they are interpolated.
+TEST(Interpolation, SparseUpdatesOnThePredictedPathAreNotTeleports) {
+    DeadReckoningReceiver receiver(interpolating(0.125f));
+    for (int k = 0; k < 4; ++k)
+        ASSERT_EQ(receiver.receive(5.0 * k, fpw(DVec3(50.0 * k, 0, 0), DVec3(10, 0, 0)), 5.0 * k), UpdateOutcome::Buffered);
+    EXPECT_EQ(receiver.counters().teleports, 0u);
+    EXPECT_EQ(receiver.counters().snaps, 0u);
+    // Render time 7.5: half-way between the updates at 5 and 10 (50 m and 100 m).
+    EXPECT_EQ(sampled(receiver, 7.625).position, rv(75, 0, 0));
 }
 
 TEST(Interpolation, NoSweepAcrossATeleport) {

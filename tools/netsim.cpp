@@ -290,7 +290,8 @@ std::shared_ptr<HeadingMotion> makeAircraftTurn(double duration) {
 // CSV
 
 struct CsvRow {
-    double t = 0;
+    std::size_t line = 0;  // in the file, for messages
+    double t = 0;          // [s] from the first row's time (after parsing)
     glm::dvec3 position{0};
     glm::dquat orientation = glm::identity<glm::dquat>();
     glm::dvec3 velocity{0};
@@ -404,6 +405,8 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
         return false;
     };
     std::size_t begin = 0;
+    // A UTF-8 byte order mark (spreadsheets write one) is not part of the header.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") begin = 3;
     while (begin < text.size()) {
         std::size_t end = text.find('\n', begin);
         if (end == std::string_view::npos) end = text.size();
@@ -450,7 +453,9 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
         std::array<double, kCsvColumns.size()> values{};
         for (std::size_t c = 0; c < kCsvColumns.size(); ++c) {
             if (columnOf[c] < 0) continue;
-            const std::string_view field = fields[static_cast<std::size_t>(columnOf[c])];
+            std::string_view field = fields[static_cast<std::size_t>(columnOf[c])];
+            // from_chars takes no leading '+': "+1" is a number in CSV files.
+            if (field.size() > 1 && field.front() == '+' && field[1] != '-' && field[1] != '+') field.remove_prefix(1);
             double value = 0;
             const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
             if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(value))
@@ -459,6 +464,7 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
             values[c] = value;
         }
         CsvRow row;
+        row.line = lineNumber;
         row.t = values[0];
         if (!motion->rows.empty() && !(row.t > motion->rows.back().t))
             return fail("column " + std::to_string(columnOf[0] + 1) + " (\"t\"): time " + shortValue(row.t) +
@@ -494,6 +500,18 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
     }
     auto& rows = motion->rows;
     const std::size_t n = rows.size();
+    // Times from the first row: absolute times (1e9 s of Unix time, or more) would leave the
+    // simulation's tick and frame times k / rate with a coarse resolution.
+    const double t0 = rows.front().t;
+    for (std::size_t i = 0; i < n; ++i) {
+        rows[i].t -= t0;
+        if (i > 0 && !(rows[i].t > rows[i - 1].t)) {
+            error = fileName + ":" + std::to_string(rows[i].line) + ": times " + shortValue(rows[i - 1].t + t0) +
+                    " and " + shortValue(rows[i].t + t0) + " are too close for their size (less than a double's "
+                    "resolution apart once taken from the first row's time)";
+            return false;
+        }
+    }
     if (columnOf[8] < 0) {
         // Three-point differences on uneven times (exact for a parabola); two points for 2 rows.
         if (n == 2) {
@@ -511,6 +529,28 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
             }
         }
     }
+    // Everything the sender sends is float (velocities, angular velocities) and the float
+    // positions of the library's default build: refuse what would overflow there, naming the
+    // row, instead of a refusal from the sender with no place in the file.
+    constexpr double kFloatRange = 1e30;  // well inside float (3.4e38): v t and a t^2 stay finite
+    auto beyond = [](const glm::dvec3& v) {
+        return !(std::abs(v.x) <= kFloatRange && std::abs(v.y) <= kFloatRange && std::abs(v.z) <= kFloatRange);
+    };
+    for (const CsvRow& row : rows) {
+        if (beyond(row.position)) {
+            error = fileName + ":" + std::to_string(row.line) + ": the position is beyond 1e30 m";
+            return false;
+        }
+    }
+    for (const CsvRow& row : rows) {
+        if (beyond(row.velocity) || beyond(row.angularVelocity)) {
+            error = fileName + ":" + std::to_string(row.line) + ": the " +
+                    (beyond(row.velocity) ? std::string("velocity") : std::string("angular velocity")) +
+                    (columnOf[8] < 0 && beyond(row.velocity) ? " (from the positions and times around this row)" : "") +
+                    " is beyond 1e30: rows too close in time for their distance?";
+            return false;
+        }
+    }
     motion->hasAngularVelocity = columnOf[11] >= 0;
     motion->segmentRotation.resize(n - 1);
     for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -520,10 +560,16 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
         const double sine = glm::length(axis);
         const double angle = 2 * std::atan2(sine, r.w);
         motion->segmentRotation[i] = sine > 0 ? axis / sine * (angle / (rows[i + 1].t - rows[i].t)) : glm::dvec3(0);
+        if (beyond(motion->segmentRotation[i])) {
+            error = fileName + ":" + std::to_string(rows[i + 1].line) +
+                    ": the turn rate from the orientations of this row and the previous is beyond 1e30 rad/s";
+            return false;
+        }
     }
     Trajectory t;
     t.name = fileName;
-    t.description = "the rows of " + fileName + " (" + std::to_string(n) + " rows)";
+    t.description = "the rows of " + fileName + " (" + std::to_string(n) + " rows" +
+                    (t0 != 0 ? ", times from the first row's " + shortValue(t0) + " s" : std::string()) + ")";
     t.start = rows.front().t;
     t.end = rows.back().t;
     t.sample = [motion](double time) { return motion->sample(time); };
@@ -697,6 +743,10 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
             }
             if (!decision.send()) continue;
             ++modelResult.updates;
+            modelResult.sentFirst += (decision.reasons & foresight::SendReasonFirst) != 0 ? 1 : 0;
+            modelResult.sentPosition += (decision.reasons & foresight::SendReasonPosition) != 0 ? 1 : 0;
+            modelResult.sentOrientation += (decision.reasons & foresight::SendReasonOrientation) != 0 ? 1 : 0;
+            modelResult.sentHeartbeat += (decision.reasons & foresight::SendReasonHeartbeat) != 0 ? 1 : 0;
             double delay = 0;
             if (!link.transmit(delay)) {
                 ++modelResult.lost;
@@ -828,11 +878,17 @@ std::string textTable(const std::vector<TrajectoryResult>& results, const Simula
     for (const auto& trajectory : results) {
         for (const auto& model : trajectory.models) {
             for (const auto& d : model.displays) {
+                // No frame shown (every update lost): no error to report, not a zero one.
+                char errors[64];
+                if (d.frames == 0)
+                    std::snprintf(errors, sizeof errors, "%9s %9s %9s %9s %9s", "-", "-", "-", "-", "-");
+                else
+                    std::snprintf(errors, sizeof errors, "%9.3f %9.3f %9.3f %9.2f %9.2f", d.position.mean,
+                                  d.position.p95, d.position.max, d.orientation.mean, d.orientation.max);
                 std::snprintf(buffer, sizeof buffer,
-                              "%-16s %-6s %-11s %9.2f %9.3f %9.3f %9.3f %9.2f %9.2f %6llu %6llu %5llu %5llu %5llu\n",
+                              "%-16s %-6s %-11s %9.2f %s %6llu %6llu %5llu %5llu %5llu\n",
                               trajectory.name.c_str(), foresight::deadReckoningAlgorithmName(model.model),
-                              displayName(d.display), model.updatesPerSecond, d.position.mean, d.position.p95,
-                              d.position.max, d.orientation.mean, d.orientation.max,
+                              displayName(d.display), model.updatesPerSecond, errors,
                               static_cast<unsigned long long>(d.snaps), static_cast<unsigned long long>(d.jumps),
                               static_cast<unsigned long long>(model.lost), static_cast<unsigned long long>(model.reordered),
                               static_cast<unsigned long long>(d.dropped));
@@ -862,8 +918,11 @@ std::string markdownTable(const std::vector<TrajectoryResult>& results, const Si
                           foresight::deadReckoningAlgorithmName(model.model), model.updatesPerSecond);
             text += buffer;
             for (const auto& d : model.displays) {
-                std::snprintf(buffer, sizeof buffer, " %.2f / %.2f / %llu |", d.position.p95, d.position.max,
-                              static_cast<unsigned long long>(d.jumps));
+                if (d.frames == 0)
+                    std::snprintf(buffer, sizeof buffer, " - / - / %llu |", static_cast<unsigned long long>(d.jumps));
+                else
+                    std::snprintf(buffer, sizeof buffer, " %.2f / %.2f / %llu |", d.position.p95, d.position.max,
+                                  static_cast<unsigned long long>(d.jumps));
                 text += buffer;
             }
             text += "\n";

@@ -133,7 +133,8 @@ struct SimulationSettings {
     std::vector<Display> displays;                         ///< in report order.
 };
 
-/// Mean, 95th percentile (nearest rank) and maximum of some values; all 0 when empty.
+/// Mean, 95th percentile (nearest rank) and maximum of some values; all 0 when empty (the
+/// reports print "-" or null for a display with no frames, never these zeros).
 struct Summary {
     double mean = 0;
     double p95 = 0;
@@ -166,6 +167,8 @@ struct ModelResult {
     std::uint64_t lost = 0;          ///< lost by the link.
     std::uint64_t late = 0;          ///< would arrive after the end of the run.
     std::uint64_t reordered = 0;     ///< arrived after a packet sent later.
+    /// Updates sent for each reason (SendReason bits; one update may count under several).
+    std::uint64_t sentFirst = 0, sentPosition = 0, sentOrientation = 0, sentHeartbeat = 0;
     std::vector<DisplayResult> displays;
 };
 
@@ -214,7 +217,7 @@ struct NetsimOptions {
     double latency = 100;                    ///< [Units: ms] [0, 10000].
     double jitter = 20;                      ///< [Units: ms] [0, 10000].
     std::string loss = "0.02";               ///< a fraction in [0, 1] or a percentage ("2%").
-    std::uint64_t seed = 1;                  ///< the link's seed.
+    std::string seed = "1";                  ///< the link's seed: an unsigned 64-bit decimal.
     double sendRate = 30;                    ///< [Units: Hz] [1, 1000].
     double renderRate = 60;                  ///< [Units: Hz] [1, 1000].
     std::vector<std::string> models;         ///< DIS names (any case) or "all"; empty: the default set.
@@ -225,8 +228,12 @@ struct NetsimOptions {
     double jumpThreshold = 0.25;             ///< [Units: m] > 0.
     double blendTime = 200;                  ///< [Units: ms] > 0.
     double decayHalfLife = 100;              ///< [Units: ms] > 0.
-    double interpolationDelay = -1;          ///< [Units: ms] > 0; negative: latency + jitter + 100.
-    double extrapolationLimit = -1;          ///< [Units: ms] >= 0; negative: none (infinity).
+    double interpolationDelay = 0;           ///< [Units: ms] > 0 (when given).
+    bool interpolationDelayGiven = false;    ///< otherwise: latency + jitter + 100.
+    double extrapolationLimit = 0;           ///< [Units: ms] >= 0 (when given).
+    bool extrapolationLimitGiven = false;    ///< otherwise: none (infinity).
+    double teleportDistance = 10;            ///< [Units: m] > 0: receivers snap beyond it.
+    bool csvGiven = false;                   ///< --csv was given (an empty name is refused).
     bool json = false;                       ///< JSON on standard output instead of the table.
     bool markdown = false;                   ///< the README's Markdown table instead.
     std::string svgFile;                     ///< also write the error chart here.

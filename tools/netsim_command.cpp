@@ -88,22 +88,36 @@ bool buildSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
         !inRange("--jump-threshold", o.jumpThreshold, 0, 1e6, true, "m") ||
         !inRange("--blend-time", o.blendTime, 0, 60000, true, "ms") ||
         !inRange("--decay-half-life", o.decayHalfLife, 0, 60000, true, "ms") ||
-        (o.interpolationDelay >= 0 && !inRange("--interpolation-delay", o.interpolationDelay, 0, 60000, true, "ms")))
+        !inRange("--teleport-distance", o.teleportDistance, 0, 1e6, true, "m") ||
+        (o.interpolationDelayGiven && !inRange("--interpolation-delay", o.interpolationDelay, 0, 60000, true, "ms")) ||
+        (o.extrapolationLimitGiven && !inRange("--extrapolation-limit", o.extrapolationLimit, 0, 3.6e6, false, "ms")))
         return false;
-    if (o.interpolationDelay < 0 && o.interpolationDelay != -1)
-        return inRange("--interpolation-delay", o.interpolationDelay, 0, 60000, true, "ms");
-    if (o.extrapolationLimit != -1 && !inRange("--extrapolation-limit", o.extrapolationLimit, 0, 3.6e6, false, "ms"))
-        return false;
+    if (o.csvGiven && o.csvFile.empty()) return fail("--csv: expected a file name, got \"\"");
+    // An option given with nothing in it (--models '') is a mistake, not a request for the default.
+    for (const auto& [option, items] : {std::pair<const char*, const std::vector<std::string>*>{"--trajectory", &o.trajectories},
+                                        {"--models", &o.models}, {"--smoothing", &o.smoothings}})
+        if (!items->empty() && splitList(*items).empty())
+            return fail(std::string(option) + ": expected a name or a comma-separated list, got \"\"");
+    {
+        // Digits only: CLI11 (and strtoull) would take "-1" as 2^64 - 1 and saturate overflows.
+        const std::string& text = o.seed;
+        std::uint64_t seed = 0;
+        const auto result = std::from_chars(text.data(), text.data() + text.size(), seed);
+        if (text.empty() || text.front() == '-' || text.front() == '+' || result.ec != std::errc() ||
+            result.ptr != text.data() + text.size())
+            return fail("--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"" + text + "\"");
+        settings.link.seed = seed;
+    }
     // The sender sends when the receivers' extrapolation drifts, seconds apart on a smooth
     // path: a receiver that stops extrapolating after Source's 0.25 s would stand still.
-    settings.receiver.extrapolationLimit = o.extrapolationLimit < 0 ? std::numeric_limits<float>::infinity()
-                                                                     : static_cast<float>(o.extrapolationLimit / 1000);
+    settings.receiver.extrapolationLimit = !o.extrapolationLimitGiven ? std::numeric_limits<float>::infinity()
+                                                                       : static_cast<float>(o.extrapolationLimit / 1000);
+    settings.receiver.teleportDistance = static_cast<float>(o.teleportDistance);
     settings.duration = o.duration;
     settings.sendRate = o.sendRate;
     settings.renderRate = o.renderRate;
     settings.link.latency = o.latency / 1000;
     settings.link.jitter = o.jitter / 1000;
-    settings.link.seed = o.seed;
     if (!parseLoss(o.loss, settings.link.loss)) return false;
     settings.sender.positionThreshold = static_cast<float>(o.positionThreshold);
     settings.sender.orientationThreshold = static_cast<float>(o.orientationThreshold * 3.14159265358979323846 / 180);
@@ -113,7 +127,7 @@ bool buildSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
     settings.receiver.decayHalfLife = static_cast<float>(o.decayHalfLife / 1000);
     // Sender and receiver share one clock here, so interpolation must wait out the network
     // delay as well as Source's 100 ms.
-    const double delay = o.interpolationDelay < 0 ? o.latency + o.jitter + 100 : o.interpolationDelay;
+    const double delay = !o.interpolationDelayGiven ? o.latency + o.jitter + 100 : o.interpolationDelay;
     settings.receiver.interpolationDelay = static_cast<float>(delay / 1000);
 
     const auto models = splitList(o.models);
@@ -194,8 +208,9 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
                 Json display = Json::object();
                 display["display"] = ns::displayName(d.display);
                 display["frames"] = d.frames;
-                display["position_error"] = summaryJson(d.position);
-                display["orientation_error"] = summaryJson(d.orientation);
+                // null when no frame was shown (every update lost): no error, not a zero one.
+                display["position_error"] = d.frames == 0 ? Json(nullptr) : summaryJson(d.position);
+                display["orientation_error"] = d.frames == 0 ? Json(nullptr) : summaryJson(d.orientation);
                 display["snaps"] = d.snaps;
                 display["jumps"] = d.jumps;
                 display["dropped"] = d.dropped;
@@ -208,6 +223,12 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
             model["lost"] = m.lost;
             model["late"] = m.late;
             model["reordered"] = m.reordered;
+            Json reasons = Json::object();
+            reasons["first"] = m.sentFirst;
+            reasons["position"] = m.sentPosition;
+            reasons["orientation"] = m.sentOrientation;
+            reasons["heartbeat"] = m.sentHeartbeat;
+            model["send_reasons"] = std::move(reasons);
             model["displays"] = std::move(displays);
             models.push_back(std::move(model));
         }
@@ -263,17 +284,29 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
         ->type_name("M");
     netsim->add_option("--blend-time", o.blendTime, "linear and pvb blend duration in ms (default 200)")->type_name("MS");
     netsim->add_option("--decay-half-life", o.decayHalfLife, "decay's half-life in ms (default 100)")->type_name("MS");
-    netsim->add_option("--interpolation-delay", o.interpolationDelay,
-                       "how far in the past interpolate renders, in ms (default latency + jitter + 100)")
-        ->type_name("MS");
-    netsim->add_option("--extrapolation-limit", o.extrapolationLimit,
-                       "receivers hold after extrapolating this many ms past the newest update (default: never)")
-        ->type_name("MS");
+    CLI::Option* interpolationDelay =
+        netsim->add_option("--interpolation-delay", o.interpolationDelay,
+                           "how far in the past interpolate renders, in ms (default latency + jitter + 100)")
+            ->type_name("MS");
+    CLI::Option* extrapolationLimit =
+        netsim->add_option("--extrapolation-limit", o.extrapolationLimit,
+                           "receivers hold after extrapolating this many ms past the newest update (default: never)")
+            ->type_name("MS");
+    netsim->add_option("--teleport-distance", o.teleportDistance,
+                       "receivers snap instead of blending a correction (interpolate: an update off the previous "
+                       "one's prediction) longer than this many m (default 10)")
+        ->type_name("M");
     netsim->add_flag("--json", o.json, "write every result as JSON instead of the table");
     netsim->add_flag("--markdown", o.markdown, "write the README's summary table (Markdown) instead");
     netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory, first model other than STATIC) to FILE")
         ->type_name("FILE");
-    netsim->final_callback([&o, duration] { o.durationGiven = duration->count() > 0; });
+    CLI::Option* csv = netsim->get_option("--csv");
+    netsim->final_callback([&o, duration, interpolationDelay, extrapolationLimit, csv] {
+        o.durationGiven = duration->count() > 0;
+        o.interpolationDelayGiven = interpolationDelay->count() > 0;
+        o.extrapolationLimitGiven = extrapolationLimit->count() > 0;
+        o.csvGiven = csv->count() > 0;
+    });
     return netsim;
 }
 
@@ -285,16 +318,15 @@ int netsimCommand(NetsimOptions options) {
     // then the CSV file.
     std::vector<std::string> names = splitList(options.trajectories);
     if (names.empty() && options.csvFile.empty()) names.push_back("all");
-    std::vector<ns::Trajectory> trajectories;
+    // "all" expanded, each trajectory once (as --models does for models), in the order given.
+    std::vector<std::string> wanted;
     for (const auto& name : names) {
-        if (name == "all") {
-            for (const auto& builtin : ns::builtinTrajectoryNames()) {
-                ns::Trajectory t;
-                ns::makeBuiltinTrajectory(builtin, settings.duration, t);
-                trajectories.push_back(std::move(t));
-            }
-            continue;
-        }
+        std::vector<std::string> expanded = name == "all" ? ns::builtinTrajectoryNames() : std::vector<std::string>{name};
+        for (auto& n : expanded)
+            if (std::find(wanted.begin(), wanted.end(), n) == wanted.end()) wanted.push_back(std::move(n));
+    }
+    std::vector<ns::Trajectory> trajectories;
+    for (const auto& name : wanted) {
         ns::Trajectory t;
         if (!ns::makeBuiltinTrajectory(name, settings.duration, t)) {
             fail("--trajectory: unknown trajectory \"" + name + "\" (expected run-strafe, slalom, circuit, aircraft-turn or all)");

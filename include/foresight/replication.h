@@ -143,9 +143,12 @@ enum class ReceiverMode : std::uint8_t {
     /// updates around that time (Source's entity interpolation): linear in position and
     /// velocity, slerp in orientation (no Hermite curve, Source's default). Before the oldest
     /// buffered update: that update as stamped; after the newest: extrapolate from it, up to
-    /// extrapolationLimit, when the buffer runs dry. Two updates further apart than
-    /// teleportDistance are not interpolated (no sweep through the level): the older one is
-    /// extrapolated until the newer one is due.
+    /// extrapolationLimit, when the buffer runs dry. Two updates whose newer one is further
+    /// than teleportDistance from the older one's own prediction (its model run, without
+    /// extrapolationLimit, to the newer one's timestamp) are not interpolated (a teleport: no
+    /// sweep through the level): the older one is extrapolated until the newer one is due.
+    /// Comparing with the prediction, not the older position, keeps sparse updates of a fast
+    /// entity (a threshold sender sends every few seconds) from counting as teleports.
     Interpolate,
 };
 
@@ -169,6 +172,16 @@ struct ReceiverSettings {
     /// [Units: s] [Limit: > 0, finite] how far in the past Interpolate mode renders (Source's
     /// cl_interp, 0.1 s).
     float interpolationDelay = 0.1f;
+    /// [Units: s] [Limit: >= 0; infinity disables] an update stamped more than this after its
+    /// receive time is dropped (UpdateOutcome::TooFarAhead): a corrupt timestamp or a clock
+    /// far off. Accepted, it would make every real update after it look out of order.
+    float maxFutureSkew = 1.0f;
+    /// [Units: s] [Limit: > 0; infinity disables] Extrapolate mode: when no update has been
+    /// accepted for this long (receive time), an update stamped earlier than the newest one is
+    /// taken as the sender's clock starting again (a restart, a reconnect): the receiver
+    /// forgets its updates and snaps to it (ReceiverCounters::clockRestarts). A late packet
+    /// of a live sender arrives sooner; the default is two default heartbeats.
+    float restartAfter = 10.0f;
 };
 
 /// Checks every field of `settings` against its documented range.
@@ -185,6 +198,7 @@ enum class UpdateOutcome : std::uint8_t {
                   ///< last sample()'s render time, or than every update of a full buffer
                   ///< (Interpolate mode).
     Duplicate,    ///< dropped: same timestamp as an update already received.
+    TooFarAhead,  ///< dropped: stamped more than maxFutureSkew after its receive time.
     Invalid,      ///< dropped: NaN or infinite fields, zero quaternion, unknown algorithm, a
                   ///< non-finite timestamp or receive time, or invalid receiver settings.
 };
@@ -201,7 +215,10 @@ struct ReceiverCounters {
     std::uint64_t held = 0;        ///< sample() calls that returned a held pose (ReceivedPose::held).
     std::uint64_t futureUpdates = 0; ///< updates stamped later than the receive time (treated
                                      ///< as age 0 until their timestamp: never extrapolated
-                                     ///< backwards).
+                                     ///< backwards), within maxFutureSkew.
+    std::uint64_t tooFarAhead = 0;   ///< TooFarAhead updates dropped.
+    std::uint64_t clockRestarts = 0; ///< older updates taken as a sender restart (restartAfter);
+                                     ///< each also counts as a snap.
 };
 
 /// The pose a receiver shows at a time, in world axes.
@@ -266,6 +283,7 @@ private:
                        bool& held) const;
     Status showExtrapolated(double time, ReceivedPose& out, Pose& shown) const;
     Status showInterpolated(double renderTime, ReceivedPose& out) const;
+    bool isTeleport(const Snapshot& from, const Snapshot& to) const;
     UpdateOutcome receiveInterpolated(double timestamp, const DeadReckoningState& state);
     const Snapshot& buffered(std::size_t i) const { return mBuffer[(mBufferStart + i) % kBufferCapacity]; }
 
@@ -289,6 +307,7 @@ private:
     glm::dvec3 mCurrentVelocity{0.0};     // PVB: V', mCurrent's world velocity at start
     glm::dvec3 mCurrentAcceleration{0.0}; // PVB: A', mCurrent's world acceleration at start
     double mCorrectionStart = 0.0;
+    double mLastAcceptedAt = 0.0;  // receive time of the last accepted update (restartAfter)
     bool mHasCurrent = false;
     bool mCorrecting = false;
 };
