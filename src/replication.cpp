@@ -347,12 +347,32 @@ Status DeadReckoningReceiver::showInterpolated(double renderTime, ReceivedPose& 
             pose.velocity = toF(a.velocity);
             pose.held = held;
         } else {
-            // Linear in position and velocity, slerp in orientation (Source's default; a
-            // Hermite curve through the velocities would overshoot on noisy updates).
-            const double alpha = (renderTime - from.timestamp) / (to.timestamp - from.timestamp);
-            pose.position = toR(a.position + (b.position - a.position) * alpha);
-            pose.velocity = toF(a.velocity + (b.velocity - a.velocity) * alpha);
-            pose.orientation = toF(glm::normalize(glm::slerp(a.orientation, b.orientation, alpha)));
+            // The older update's own prediction at the render time, plus the correction that
+            // takes its prediction at the newer update's timestamp onto the newer update,
+            // growing linearly (no extrapolation limit here: the newer update says where the
+            // entity went). For updates that agree with each other's models (fixed-rate
+            // snapshots of straight motion, STATIC updates) this is linear interpolation, as
+            // Source does; for sparse updates of a turning vehicle it follows the model's arc
+            // instead of the chord. No Hermite curve through the velocities: it would
+            // overshoot on noisy updates.
+            const double span = to.timestamp - from.timestamp;
+            const double alpha = (renderTime - from.timestamp) / span;
+            DeadReckoningResult now, atTo;
+            if (Status s = predictDeadReckoning(from.state, static_cast<float>(renderTime - from.timestamp), now);
+                s != Status::Ok)
+                return s;
+            if (Status s = predictDeadReckoning(from.state, static_cast<float>(span), atTo); s != Status::Ok) return s;
+            const DQuat nowOrientation = toD(now.orientation);
+            const DQuat atToOrientation = toD(atTo.orientation);
+            const DVec3 nowVelocity = worldVelocity(from.state.algorithm, nowOrientation, toD(now.velocity));
+            const DVec3 atToVelocity = worldVelocity(from.state.algorithm, atToOrientation, toD(atTo.velocity));
+            pose.position = toR(toD(now.position) + (b.position - toD(atTo.position)) * alpha);
+            pose.velocity = toF(nowVelocity + (b.velocity - atToVelocity) * alpha);
+            // The rotation from the prediction to the newer update (world frame), a fraction
+            // alpha of it applied to the prediction now.
+            DQuat correction = glm::normalize(b.orientation * glm::conjugate(atToOrientation));
+            if (correction.w < 0.0) correction = -correction;  // the short way
+            pose.orientation = toF(glm::normalize(glm::slerp(identityD(), correction, alpha) * nowOrientation));
         }
     }
     if (!isFinite(pose.position) || !isFinite(pose.velocity) || !isFinite(pose.orientation))

@@ -862,6 +862,34 @@ TEST(Interpolation, SparseUpdatesOnThePredictedPathAreNotTeleports) {
     EXPECT_EQ(sampled(receiver, 7.625).position, rv(75, 0, 0));
 }
 
+// A car at 20 m/s turning at 0.5 rad/s (a 40 m circle), RPB updates every 2 s (1 rad apart)
+// exactly on the circle: between two updates the shown car stays on the arc (the older update's
+// own prediction, which the newer one confirms), where the chord would cut 40 (1 - cos 0.5) =
+// 4.9 m inside at mid-span.
+TEST(Interpolation, SparseUpdatesOfATurningCarFollowTheArcNotTheChord) {
+    auto onCircle = [](double t) {
+        const double heading = 0.5 * t;
+        DeadReckoningState s = makeState(DeadReckoningAlgorithm::Rpb, DVec3(40 * (1 - std::cos(heading)), 0, 40 * std::sin(heading)),
+                                         DVec3(0, 0, 20), yaw(heading));
+        s.angularVelocity = Vec3(0.0f, 0.5f, 0.0f);
+        return s;
+    };
+    DeadReckoningReceiver receiver(interpolating(0.125f));
+    for (int k = 0; k < 4; ++k) ASSERT_EQ(receiver.receive(2.0 * k, onCircle(2.0 * k), 2.0 * k), UpdateOutcome::Buffered);
+    EXPECT_EQ(receiver.counters().teleports, 0u);
+    double worst = 0;
+    for (double render = 0.0; render <= 6.0; render += 1.0 / 16) {
+        const ReceivedPose p = sampled(receiver, render + 0.125);
+        const double heading = 0.5 * render;
+        const DVec3 expected(40 * (1 - std::cos(heading)), 0, 40 * std::sin(heading));
+        worst = std::max(worst, glm::length(ftest::toD(p.position) - expected));
+        EXPECT_LT(angleBetween(p.orientation, yaw(heading)), 1e-5) << render;
+    }
+    // Float positions (up to 80 m: 8e-6 m spacing) and float trigonometry of the updates and
+    // the model: far below the 4.9 m of the chord.
+    EXPECT_LT(worst, 1e-4);
+}
+
 TEST(Interpolation, NoSweepAcrossATeleport) {
     DeadReckoningReceiver receiver(interpolating(0.125f));
     ASSERT_EQ(receiver.receive(0.0, fpw(DVec3(0), DVec3(1, 0, 0)), 0.0), UpdateOutcome::Buffered);

@@ -140,8 +140,13 @@ enum class ReceiverMode : std::uint8_t {
     /// Show the newest update extrapolated to now (dead reckoning), with smoothing.
     Extrapolate,
     /// Show the entity interpolationDelay seconds in the past, between the two buffered
-    /// updates around that time (Source's entity interpolation): linear in position and
-    /// velocity, slerp in orientation (no Hermite curve, Source's default). Before the oldest
+    /// updates around that time (Source's entity interpolation, made model-aware): the older
+    /// update's own prediction at that time plus the correction onto the newer update, growing
+    /// linearly from 0 to 1 between their timestamps (position and velocity; orientation: that
+    /// fraction of the correcting rotation). For updates that agree with each other's models
+    /// (fixed-rate snapshots of straight motion, STATIC updates) this is exactly linear
+    /// interpolation and slerp; for sparse updates of a turning vehicle it follows the model's
+    /// arc instead of the chord (no Hermite curve: it would overshoot). Before the oldest
     /// buffered update: that update as stamped; after the newest: extrapolate from it, up to
     /// extrapolationLimit, when the buffer runs dry. Two updates whose newer one is further
     /// than teleportDistance from the older one's own prediction (its model run, without
