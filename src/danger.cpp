@@ -467,7 +467,9 @@ Status isPointSafe(const ProjectileDanger& danger, RVec3 point, float time, bool
         const DVec3 d = p - positionAt(danger.trajectory, static_cast<double>(danger.fuseTime));
         const double radius = static_cast<double>(danger.blastRadius);
         safe = !(glm::dot(d, d) <= radius * radius);
-    } else if (danger.contactRadius > 0.0f) {
+    } else if (danger.contactRadius > 0.0f && time >= danger.trajectory.front().time) {
+        // Before the trajectory's first time the projectile is not there yet (findDangerStart
+        // looks from that time on): only [first time, fuse) can be unsafe by contact.
         const DVec3 d = p - positionAt(danger.trajectory, static_cast<double>(time));
         const double radius = static_cast<double>(danger.contactRadius);
         safe = !(glm::dot(d, d) <= radius * radius);
@@ -610,21 +612,29 @@ Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBod
     if (const Status s = checkQuery(horizon, settings); s != Status::Ok) return s;
     const double end = static_cast<double>(horizon);
     const double tolerance = static_cast<double>(settings.tolerance);
+    // Two passes, sharing maxEvaluations (the header's contract, with mu the true minimum):
+    // 1. branch and bound to 3/4 of the tolerance: the lowest value m found has
+    //    mu <= m <= mu + 3 tolerance / 4;
+    // 2. conservative advancement from t = 0 that never skips a time where D <= m and stops at
+    //    the first time where D <= m + tolerance / 4 (every step is at least tolerance / (4 L),
+    //    so it ends). The reported time T has D > m >= mu on [0, T) and D(T) <= mu + tolerance:
+    //    no later than the first time of the true minimum, whatever pass 1's samples (equal
+    //    minima of a periodic path give the first, whatever the horizon).
+    // The split: pass 1's cost on a plateau (D constant for long) grows as 1 / its tolerance,
+    // pass 2's near a minimum as 1 / sqrt of its margin; 3/4 keeps pass 1 within a power-of-two
+    // depth of a plain search to `tolerance`.
+    const double searchTolerance = 0.75 * tolerance;
     // The separation is never below -radius (the segment inside the box): a floor for the bound,
     // which stops the search on an overlap plateau.
     const double floor = -motion.radius;
     std::uint32_t evaluations = 0;
     double bestValue = std::numeric_limits<double>::infinity();
-    double bestTime = 0;
     auto evaluate = [&](double t, double& value) {
         if (evaluations >= settings.maxEvaluations) return Status::TooManySteps;
         value = motion.separation(t);
         ++evaluations;
         if (!isFinite(value)) return Status::NonFiniteResult;
-        if (value < bestValue || (value == bestValue && t < bestTime)) {
-            bestValue = value;
-            bestTime = t;
-        }
+        bestValue = std::min(bestValue, value);
         return Status::Ok;
     };
     struct Interval {
@@ -645,7 +655,7 @@ Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBod
         stack[size++] = Interval{0.0, end, start, finish};
         while (size > 0) {
             const Interval interval = stack[--size];
-            if (!(lowerBound(interval) < bestValue - tolerance)) continue;
+            if (!(lowerBound(interval) < bestValue - searchTolerance)) continue;
             const double middle = 0.5 * (interval.a + interval.b);
             if (!(middle > interval.a && middle < interval.b)) continue;
             double value = 0;
@@ -653,13 +663,39 @@ Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBod
             const Interval left{interval.a, middle, interval.valueA, value};
             const Interval right{middle, interval.b, value, interval.valueB};
             if (size + 2 > stack.size()) return Status::TooManySteps;
-            if (lowerBound(right) < bestValue - tolerance) stack[size++] = right;
-            if (lowerBound(left) < bestValue - tolerance) stack[size++] = left;
+            if (lowerBound(right) < bestValue - searchTolerance) stack[size++] = right;
+            if (lowerBound(left) < bestValue - searchTolerance) stack[size++] = left;
         }
     }
+
+    // Pass 2. The value m is reached at a time in [0, end] that is never stepped over, so the
+    // advancement stops by then; `t >= end` only guards against rounding.
+    const double never = bestValue;                     // never stepped over
+    const double accept = bestValue + 0.25 * tolerance; // reported when reached
+    double t = 0.0;
+    double value = start;
+    for (;;) {
+        if (value <= accept || t >= end) break;
+        double bound = motion.speedBound(t, end);
+        if (!isFinite(bound)) return Status::NonFiniteResult;
+        if (bound <= 0.0) break;  // nothing moves: D is constant, so D(0) is already minimal
+        double step = (value - never) / bound;
+        for (int refine = 0; refine < 4 && t + step < end; ++refine) {
+            const double window = std::min(2.0 * step, end - t);
+            const double local = motion.speedBound(t, t + window);
+            const double candidate = local > 0.0 ? std::min((value - never) / local, window) : window;
+            if (!(candidate > step)) break;
+            step = candidate;
+        }
+        t = t + step >= end ? end : t + step;
+        if (evaluations >= settings.maxEvaluations) return Status::TooManySteps;
+        value = motion.separation(t);
+        ++evaluations;
+        if (!isFinite(value)) return Status::NonFiniteResult;
+    }
     ClosestApproach approach;
-    approach.distance = static_cast<float>(bestValue);
-    approach.time = static_cast<float>(bestTime);
+    approach.distance = static_cast<float>(value);
+    approach.time = floorToFloat(t);
     if (!isFinite(approach.distance)) return Status::NonFiniteResult;
     out = approach;
     return Status::Ok;

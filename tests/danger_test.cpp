@@ -128,13 +128,24 @@ TEST(DangerVehicle, StraightAtAStandingSphere) {
     // The closest approach is an overlap: the separation reaches -radius (segment inside).
     ClosestApproach closest;
     ASSERT_EQ(foresight::findClosestVehicleApproach(vehicle, target, 5.0f, settings, closest), Status::Ok);
-    EXPECT_NEAR(closest.distance, -0.5f, 1e-5f);  // the plateau's exact value, float rounding
+    // The plateau's value -0.5, up to the tolerance (the earliest time within it is reported).
+    EXPECT_GE(closest.distance, -0.5f - 1e-5f);  // float rounding
+    EXPECT_LE(closest.distance, -0.5f + settings.tolerance + 1e-5f);
+    // ... at the earliest time: no later than where the sphere's centre reaches the front face
+    // ((30 - 2.2) / 10 s: D = -0.5 from then on), no earlier than where D = -0.5 + tol.
+    EXPECT_LE(closest.time, (30.0 - 2.2) / 10.0 + 1e-6);
+    EXPECT_GE(closest.time, (30.0 - 2.2 - settings.tolerance) / 10.0 - 1e-6);
     // Short of the sphere: no contact, closest at the horizon.
     ASSERT_EQ(foresight::findVehicleContact(vehicle, target, 2.5f, settings, contact), Status::Ok);
     EXPECT_FALSE(contact.contact);
     ASSERT_EQ(foresight::findClosestVehicleApproach(vehicle, target, 2.5f, settings, closest), Status::Ok);
-    EXPECT_NEAR(closest.distance, 30.0 - 2.2 - 0.5 - 25.0, 1e-5);  // 2.3 m, at the horizon
-    EXPECT_NEAR(closest.time, 2.5f, 1e-6f);
+    // 2.3 m at the horizon, up to the tolerance: reported at the first time within it, which
+    // is at most tol / 10 m/s before the horizon (float rounding 1e-6).
+    EXPECT_GE(closest.distance, 30.0 - 2.2 - 0.5 - 25.0 - 1e-5);
+    EXPECT_LE(closest.distance, 30.0 - 2.2 - 0.5 - 25.0 + 1e-3 + 1e-5);
+    EXPECT_LE(closest.time, 2.5f);
+    EXPECT_GE(closest.time, 2.5 - 1e-3 / 10.0 - 1e-6);
+    EXPECT_NEAR(closest.distance, 30.0 - 2.2 - 0.5 - 10.0 * closest.time, 1e-5);  // D at its time
 }
 
 // A capsule (half axis 0.5 m up, radius 0.3) walking at 5 m/s across the car's path from x = 8,
@@ -189,6 +200,65 @@ TEST(DangerVehicle, TurningCarMeetsAPointOnItsCircle) {
     const double sweep = std::sqrt(20.9 * 20.9 + 2.2 * 2.2);
     EXPECT_LE(closest.distance, 30.0 - sweep - 0.3 + 1e-3 + 2e-5);  // within the tolerance
     EXPECT_GE(closest.distance, 30.0 - sweep - 0.3 - 2e-5);         // a real value
+}
+
+// Equal minima: a car at 10 m/s turning at 0.5 rad/s drives a 20 m circle every 4 pi = 12.57 s;
+// a sphere at (50, 0, 30), outside the circle, is closest once per turn, always at the same
+// distance mu. The reported time is in the first turn's band [first time D <= mu + tol, first
+// time D = mu], whatever the horizon (it was 4.92 s up to 20 s, then 17.49 s at 30 s and
+// 92.89 s at 100 s: whichever turn's samples happened to be lowest).
+TEST(DangerVehicle, ClosestApproachIsTheEarliestOfEqualMinima) {
+    const VehicleBody vehicle = car(DVec3(0.0), 10.0, 0.5);
+    const CharacterBody character = sphere(DVec3(50.0, 0.0, 30.0), 0.4);
+    const ApproachSettings settings;  // tolerance 1e-3 m
+    const double tolerance = static_cast<double>(settings.tolerance);
+    const double period = 4.0 * 3.14159265358979323846;
+    // The reference minimum over one turn: 1 ms samples, then golden section around the best.
+    double bestTime = 0, mu = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 12600; ++k) {
+        const double t = 1e-3 * k;
+        const double d = referenceSeparation(vehicle, character, t);
+        if (d < mu) mu = d, bestTime = t;
+    }
+    double low = std::max(0.0, bestTime - 1e-3), high = bestTime + 1e-3;
+    for (int i = 0; i < 60; ++i) {
+        const double a = low + 0.381966 * (high - low), b = high - 0.381966 * (high - low);
+        if (referenceSeparation(vehicle, character, a) < referenceSeparation(vehicle, character, b)) high = b;
+        else low = a;
+    }
+    mu = std::min(mu, referenceSeparation(vehicle, character, 0.5 * (low + high)));
+    // The reference's float poses of predictVehicleExact are good to ~1e-6 m at 60 m; 2e-5 m as
+    // in the other vehicle tests.
+    const double poseError = 2e-5;
+    std::vector<float> times;
+    for (const float horizon : {6.0f, 10.0f, 20.0f, 30.0f, 100.0f, 300.0f}) {
+        ClosestApproach closest;
+        ASSERT_EQ(foresight::findClosestVehicleApproach(vehicle, character, horizon, settings, closest), Status::Ok)
+            << "horizon " << horizon;
+        const double t = static_cast<double>(closest.time);
+        EXPECT_LT(t, period) << "horizon " << horizon;  // the first turn
+        EXPECT_GE(static_cast<double>(closest.distance), mu - poseError) << "horizon " << horizon;
+        EXPECT_LE(static_cast<double>(closest.distance), mu + tolerance + poseError) << "horizon " << horizon;
+        EXPECT_NEAR(referenceSeparation(vehicle, character, t), static_cast<double>(closest.distance), poseError);
+        times.push_back(closest.time);
+    }
+    // The band on the way into the first minimum, sampled at 0.1 ms (one sample of slack on
+    // the early side; the late side ends where D is within the pose error of mu).
+    double bandLow = -1, bandHigh = -1;
+    for (double s = 0.0; s < period && bandHigh < 0.0; s += 1e-4) {
+        const double d = referenceSeparation(vehicle, character, s);
+        if (bandLow < 0.0 && d <= mu + tolerance + poseError) bandLow = s - 1e-4;
+        if (d <= mu + poseError) bandHigh = s;
+    }
+    ASSERT_GE(bandLow, 0.0);
+    ASSERT_GE(bandHigh, bandLow);
+    std::printf("closest approach of a circling car: mu %.6f m at %.4f s; reported times", mu, bestTime);
+    for (const float t : times) std::printf(" %.5f", static_cast<double>(t));
+    std::printf(" s; band [%.5f, %.5f] s\n", bandLow, bandHigh);
+    for (const float t : times) {
+        EXPECT_GE(static_cast<double>(t), bandLow);
+        EXPECT_LE(static_cast<double>(t), bandHigh);
+    }
 }
 
 // The pose the queries use is predictVehicleExact's, also in the world frame and with an offset
@@ -567,6 +637,19 @@ TEST(DangerProjectile, DangerZoneSafetyAndDangerStart) {
     danger.contactRadius = 0.3f;
     ASSERT_EQ(foresight::isPointSafe(danger, onPath, 0.5f, safe), Status::Ok);
     EXPECT_FALSE(safe);
+    // At the throw point: unsafe from the first point's time (0) on, and safe before it (the
+    // projectile is not there yet), as findDangerStart says (0, not earlier).
+    const RVec3 thrower = t.points[0].position;
+    ASSERT_EQ(t.points[0].time, 0.0f);
+    ASSERT_EQ(foresight::isPointSafe(danger, thrower, -1.0f, safe), Status::Ok);
+    EXPECT_TRUE(safe);
+    ASSERT_EQ(foresight::isPointSafe(danger, thrower, -1e-6f, safe), Status::Ok);
+    EXPECT_TRUE(safe);
+    ASSERT_EQ(foresight::isPointSafe(danger, thrower, 0.0f, safe), Status::Ok);
+    EXPECT_FALSE(safe);
+    ASSERT_EQ(foresight::findDangerStart(danger, thrower, start), Status::Ok);
+    EXPECT_TRUE(start.ever);
+    EXPECT_EQ(start.time, 0.0f);
     ASSERT_EQ(foresight::isPointSafe(danger, onPath, 0.9f, safe), Status::Ok);
     EXPECT_TRUE(safe);  // it has flown on
     ASSERT_EQ(foresight::findDangerStart(danger, onPath, start), Status::Ok);

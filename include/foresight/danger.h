@@ -15,7 +15,9 @@
 ///   dangerous from the fuse time on (as `danger_zones` of docs/viewer-format.md).
 /// - Before the fuse only the projectile itself can be dangerous, and only when
 ///   `contactRadius > 0`: a point within `contactRadius` of the projectile's position at time t
-///   is unsafe at t.
+///   is unsafe at t, for t from the first point's time on. Before the first point's time the
+///   projectile is not there yet (not thrown): every point is safe then, so isPointSafe and
+///   findDangerStart agree (danger never starts before the first point's time).
 /// - Distances to the path are exact per segment: the squared distance from a point to
 ///   `p(s)` is a quartic in s whose derivative is the cubic
 ///   `(q.v) + s (v.v + q.a) + s^2 (3/2 v.a) + s^3 (a.a / 2)`, q = p0 - point. All of its real
@@ -44,10 +46,17 @@
 ///   t += D(t) / L (L over [t, horizon]). Since D(t') >= D(t) - L (t' - t) > 0 within the step, no
 ///   contact is ever skipped: the reported time T has D > 0 on [0, T) (it is never later than
 ///   the true first contact) and D(T) <= tolerance (the shapes are within `tolerance` there).
-/// - Closest approach (Lipschitz branch and bound, Piyavskii's lower bound): on [a, b],
-///   `D >= (D(a) + D(b) - L (b - a)) / 2`; intervals whose bound cannot beat the best value by
-///   more than `tolerance` are dropped, others are halved. The reported distance is a value of
-///   D at the reported time, and no time in [0, horizon] has D below it minus `tolerance`.
+/// - Closest approach, in two passes. (1) Lipschitz branch and bound (Piyavskii's lower bound):
+///   on [a, b], `D >= (D(a) + D(b) - L (b - a)) / 2`; intervals whose bound cannot beat the best
+///   value m by more than `3 tolerance / 4` are dropped, others are halved, so the true minimum
+///   mu is in [m - 3 tolerance / 4, m]. (2) Conservative advancement from t = 0 as for the first
+///   contact, never stepping over a time where D <= m and stopping at the first time T where
+///   D <= m + tolerance / 4 (each step is at least tolerance / (4 L)). So
+///   `mu <= D(T) <= mu + tolerance`, and D > m >= mu on [0, T): T is no later than the first
+///   time the true minimum is reached, and no earlier than the first time D comes within
+///   `tolerance` of it. Both bounds are properties of the path, not of where pass 1 sampled:
+///   among equal minima (a turning vehicle's period) the first is reported, whatever the
+///   horizon.
 /// Rounding: D is computed in double from float/Real inputs; its rounding (about 1e-7 of the
 /// coordinates' magnitude in the float build) adds to `tolerance`.
 ///
@@ -94,7 +103,10 @@ struct ClosestApproach {
     /// The smallest distance [Units: m]. For vehicles: the separation (negative when
     /// overlapping, down to minus the character's radius).
     float distance = 0;
-    float time = 0;    ///< when it happens (the earliest such time found) [Units: s].
+    /// When it happens [Units: s]. For paths: the earliest time of the smallest distance. For
+    /// vehicles: a time no later than the first time of the minimum, where the separation is
+    /// within the tolerance of it (see findClosestVehicleApproach): the first of equal minima.
+    float time = 0;
 };
 
 /// Checks a trajectory: Ok; InvalidStep when it is empty or its times decrease; NonFiniteInput
@@ -118,7 +130,8 @@ Status computeDangerZone(const ProjectileDanger& danger, DangerZone& out);
 
 /// Whether `point` is safe at `time`: from the fuse time on, outside the blast (a point at
 /// exactly blastRadius is unsafe); before it, farther than contactRadius from the projectile
-/// (always safe when contactRadius is 0).
+/// (always safe when contactRadius is 0, and before the trajectory's first time, when the
+/// projectile is not there yet).
 /// @param point  [Units: m] (finite).  @param time  [Units: s] (finite, any sign).
 /// @return Ok or validateProjectileDanger's refusals, NonFiniteInput.
 Status isPointSafe(const ProjectileDanger& danger, RVec3 point, float time, bool& safe);
@@ -201,14 +214,19 @@ Status computeVehicleSeparation(const VehicleBody& vehicle, const CharacterBody&
 /// advancement with the proven bound of the header).
 /// @param horizon  [Units: s] [Limit: >= 0, finite]; 0 checks t = 0 only.
 /// @return Ok, validateVehicleCharacter's refusals, NegativeTime, InvalidStep (a tolerance <= 0
-///         or not finite, or maxEvaluations 0), TooManySteps (maxEvaluations reached: a long
+///         or not finite, or maxEvaluations 0), TooManySteps (maxEvaluations reached: a horizon
+///         too long for the tolerance, the work growing with horizon / tolerance, or a long
 ///         grazing pass) or NonFiniteResult. `out` is untouched unless Ok.
 Status findVehicleContact(const VehicleBody& vehicle, const CharacterBody& character,
                           float horizon, const ApproachSettings& settings, VehicleContact& out);
 
-/// The closest approach in [0, horizon] (Lipschitz branch and bound): the separation and its
-/// time; the true minimum is no lower than `distance - tolerance`.
-/// @return as findVehicleContact.
+/// The closest approach in [0, horizon] (Lipschitz branch and bound, then conservative
+/// advancement; see the header): `distance` is the separation at `time`, and the true minimum
+/// mu satisfies `mu <= distance <= mu + tolerance`; `time` is no later than the first time
+/// the separation reaches mu (before it the separation stays above mu) and no earlier than
+/// the first time it comes within `tolerance` of mu. Among equal minima (a vehicle turning in
+/// circles) the first is reported, whatever the horizon.
+/// @return as findVehicleContact (both passes share maxEvaluations).
 Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBody& character,
                                   float horizon, const ApproachSettings& settings,
                                   ClosestApproach& out);
