@@ -1285,6 +1285,22 @@ TEST_F(cli, AimOutOfRangeIsAnEmptyListAndExtensionsWork) {
     EXPECT_TRUE(out["shots"][4].at("solutions").empty());
 }
 
+// The contract's time is in (0, max_time]: 1e-30 m at 3e38 m/s meets at 3.3e-69 s, 0 as a
+// float, so no solution is printed (not "time": 0); 1e-20 m at 1e10 m/s (1e-30 s) is printed.
+TEST_F(cli, AimNeverPrintsTimeZero) {
+    const CliRun run = runCli({"aim", "-"}, R"({"shots": [
+        {"from": [0, 0, 0], "speed": 3e38, "gravity": [0, 0, 0], "target": {"position": [1e-30, 0, 0]}},
+        {"from": [0, 0, 0], "speed": 1e10, "gravity": [0, 0, 0], "target": {"position": [1e-20, 0, 0]}}]})");
+    const Json out = parseOutput(run);
+    EXPECT_EQ(run.err, "");
+    ASSERT_EQ(out.at("shots").size(), 2u);
+    EXPECT_TRUE(out["shots"][0].at("solutions").empty()) << out["shots"][0];
+    ASSERT_EQ(out["shots"][1].at("solutions").size(), 1u);
+    const double time = out["shots"][1]["solutions"][0].at("time").get<double>();
+    EXPECT_GT(time, 0.0);
+    EXPECT_NEAR(time, 1e-30, 1e-36);  // a float's rounding: 6e-8 relative
+}
+
 TEST_F(cli, AimErrorsNameTheJsonPathAndExitTwo) {
     const CliRun run = runCli({"aim", "-"}, R"({"gravity": [0, -9.81], "shots": [
         {"from": [0, 0, 0], "speed": -1, "arc": "mid", "max_time": -2,
@@ -1574,6 +1590,61 @@ TEST_F(cli, DangerPicturesDrawTheDangerZones) {
     EXPECT_EQ(bad.status, 2);
     EXPECT_TRUE(bad.out.empty());
     EXPECT_NE(bad.err.find("x.svg"), std::string::npos) << bad.err;
+}
+
+// tools/README.md's grenade with contact_radius 0.3: at the throw point it is unsafe from the
+// throw (time 0) on, and safe before it (not thrown yet), as danger_start (0) says.
+TEST_F(cli, DangerBeforeTheThrowIsSafe) {
+    const CliRun run = runCli({"danger", "-"}, R"({"world": {"planes": [{"normal": [0, 1, 0], "distance": 0}]},
+      "predictions": [{"id": "grenade", "model": "projectile", "position": [0, 1.5, 0], "velocity": [0, 4, 8],
+        "time": 3, "friction": 0.4, "blast_radius": 5, "contact_radius": 0.3,
+        "points": [{"position": [0, 1.5, 0], "time": -1}, {"position": [0, 1.5, 0], "time": 0}]}]})");
+    const Json out = parseOutput(run);
+    const Json& points = byId(out, "grenade").at("points");
+    ASSERT_EQ(points.size(), 2u);
+    EXPECT_EQ(points[0].at("danger_start"), 0);
+    EXPECT_EQ(points[0].at("safe"), true);
+    EXPECT_EQ(points[1].at("safe"), false);
+}
+
+namespace {
+
+// A car at 10 m/s turning at 0.5 rad/s (a 20 m circle every 4 pi = 12.57 s) and a guard outside
+// the circle at (50, 0, 30), over a horizon of `time` seconds.
+std::string circlingCar(const std::string& time) {
+    return R"({"predictions": [{"id": "car", "model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
+      "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": )" + time + R"(,
+      "characters": [{"id": "guard", "position": [50, 0, 30], "velocity": [0, 0, 0], "radius": 0.5}]}]})";
+}
+
+} // namespace
+
+// The closest approach is the first turn's, whatever the horizon (it was 4.92 s up to 20 s,
+// 17.49 s at 30 s and 92.89 s at 100 s); a horizon too long for the tolerance names "time".
+TEST_F(cli, DangerClosestApproachDoesNotMoveWithTheHorizon) {
+    std::vector<Json> approaches;
+    for (const char* horizon : {"6", "30", "100"}) {
+        const CliRun run = runCli({"danger", "-"}, circlingCar(horizon));
+        const Json out = parseOutput(run);
+        approaches.push_back(byId(out, "car").at("characters")[0].at("closest_approach"));
+    }
+    const double time = approaches[0].at("time").get<double>();
+    EXPECT_GT(time, 4.0);
+    EXPECT_LT(time, 5.0);  // the first pass of the guard, near 4.5 s (danger_test.cpp pins it)
+    for (const Json& approach : approaches) EXPECT_EQ(approach, approaches[0]);  // the same bytes
+
+    const CliRun tooLong = runCli({"danger", "-"}, circlingCar("3000"));
+    EXPECT_EQ(tooLong.status, 2);
+    EXPECT_EQ(tooLong.out, "");
+    EXPECT_NE(tooLong.err.find("predictions[0].time: the horizon 3000 s is too long for \"tolerance\" 0.001 m: "
+                               "characters[0] needs more than 65536 separation evaluations"),
+              std::string::npos)
+        << tooLong.err;
+    EXPECT_NE(tooLong.err.find("shorten \"time\" or raise \"tolerance\""), std::string::npos) << tooLong.err;
+    // A coarser tolerance does the same horizon.
+    const std::string coarse = "{\"tolerance\": 0.05, " + circlingCar("3000").substr(1);
+    const CliRun done = runCli({"danger", "-"}, coarse);
+    EXPECT_EQ(done.status, 0) << done.err;
 }
 
 TEST_F(cli, DangerRefusesBadInputNamingThePath) {

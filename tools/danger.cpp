@@ -231,12 +231,22 @@ bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
                 if (status == Status::Ok)
                     status = foresight::findClosestVehicleApproach(vehicle, query.characters[k], p.time, input.approach,
                                                                    closest);
+                if (status == Status::TooManySteps) {
+                    // The work grows with horizon / tolerance (and with long grazing passes): the
+                    // usual cause is the prediction's "time", so the message is about it.
+                    diagnostics.error(p.path + ".time",
+                                      "the horizon " + shortNumber(static_cast<double>(p.time)) +
+                                          " s is too long for \"tolerance\" " +
+                                          shortNumber(static_cast<double>(input.approach.tolerance)) +
+                                          " m: characters[" + std::to_string(k) + "] needs more than " +
+                                          std::to_string(input.approach.maxEvaluations) +
+                                          " separation evaluations (the work cap; it grows with time / "
+                                          "tolerance, and with a long grazing pass): shorten \"time\" or "
+                                          "raise \"tolerance\"");
+                    continue;
+                }
                 if (status != Status::Ok) {
-                    std::string message = foresight::statusMessage(status);
-                    if (status == Status::TooManySteps)
-                        message += ": more than " + std::to_string(input.approach.maxEvaluations) +
-                                   " evaluations (a long grazing pass: raise \"tolerance\")";
-                    diagnostics.error(path, message);
+                    diagnostics.error(path, foresight::statusMessage(status));
                     continue;
                 }
                 Json out = Json::object();
