@@ -87,8 +87,9 @@ public:
         }
         out.planCount = mAccepted;
         out.predictions = mPredictions;
-        // No throw finished (none ran, or all failed): the largest float says "nowhere near".
-        const bool any = std::isfinite(mClosest.distance);
+        // No throw finished (none ran, or all failed), or it ended beyond a float's range (or
+        // the double distance overflowed): the largest float says "nowhere near".
+        const bool any = mClosest.distance <= static_cast<double>(std::numeric_limits<float>::max());
         out.closestDistance = any ? static_cast<float>(mClosest.distance) : std::numeric_limits<float>::max();
         out.closestVelocity = any ? Vec3(mClosest.velocity) : Vec3(0);
     }
@@ -482,9 +483,21 @@ Status validateThrowPlanRequest(const ThrowPlanRequest& request) {
         b.refinementPredictions == 0 || b.maxPredictions == 0)
         return Status::InvalidIterations;
     if (!std::isfinite(request.budget.gridStep) || request.budget.gridStep < 0.0f) return Status::InvalidStep;
+    if (b.maxTotalSteps == 0) return Status::InvalidIterations;
     if (steppedStepCount(request.fuseTime, request.settings.step) > request.settings.maxSteps)
         return Status::TooManySteps;
+    if (throwPlanWork(request) > b.maxTotalSteps) return Status::TooManySteps;
     return Status::Ok;
+}
+
+std::uint64_t throwPlanWork(const ThrowPlanRequest& request) {
+    // steppedStepCount is 0 for a bad fuse or step and saturates at 2^64 - 1: no overflow below
+    // (a count over settings.maxSteps, a uint32, is refused before the product is used).
+    const std::uint64_t steps = steppedStepCount(request.fuseTime, request.settings.step);
+    const std::uint64_t predictions = request.budget.maxPredictions;
+    if (steps != 0 && predictions > std::numeric_limits<std::uint64_t>::max() / steps)
+        return std::numeric_limits<std::uint64_t>::max();
+    return steps * predictions;
 }
 
 std::size_t throwPlanScratchSize(const ThrowPlanRequest& request) {

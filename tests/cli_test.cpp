@@ -1194,6 +1194,41 @@ TEST_F(cli, PlanRefusesBadInputNamingEveryPath) {
     EXPECT_EQ(runCli({"plan"}).status, 2); // usage: FILE is required
 }
 
+// One prediction of a 20000 s fuse at 0.02 s fits the step cap, but 400 of them (2^24 steps in
+// all at most) do not: refused at once, naming "fuse" (it ran ~30 s before the cap).
+TEST_F(cli, PlanRefusesTooMuchWorkNamingTheFuse) {
+    const CliRun run = runCli({"plan", "-"}, R"({"throws": [{"start": [0, 1, 0], "target": [0, 0, 1e6],
+      "fuse": 20000, "method": "stepped", "max_speed": 20}]})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("throws[0].fuse: too much work for one plan: 20000 s at a step of 0.02 s is 1000000 "
+                           "steps per prediction, times max_predictions 400 = 400000000 steps, over the cap of "
+                           "16777216: shorten \"fuse\", lengthen \"step\" or lower \"max_predictions\""),
+              std::string::npos)
+        << run.err;
+    // The same fuse with one prediction is within the cap.
+    const CliRun one = runCli({"plan", "-"}, R"({"throws": [{"start": [0, 1, 0], "target": [0, 0, 1e6],
+      "fuse": 20000, "method": "stepped", "max_speed": 20, "max_predictions": 1}]})");
+    EXPECT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(parseOutput(one).at("throws")[0].at("predictions"), 1);
+}
+
+// A target no throw ends within a float's range of: closest_distance and closest_velocity are
+// null (not 3.4028235e+38 and a zero velocity).
+TEST_F(cli, PlanNowhereNearPrintsNull) {
+    const CliRun run = runCli({"plan", "-"}, R"({"throws": [{"start": [0, 1, 0], "target": [1e308, 0, 7],
+      "fuse": 3, "max_speed": 20}, {"start": [0, 1, 0], "target": [0, 0, 200], "fuse": 3, "max_speed": 10}]})");
+    const Json out = parseOutput(run);
+    const Json& nowhere = out.at("throws")[0];
+    EXPECT_TRUE(nowhere.at("plans").empty());
+    EXPECT_TRUE(nowhere.at("closest_distance").is_null()) << nowhere;
+    EXPECT_TRUE(nowhere.at("closest_velocity").is_null()) << nowhere;
+    // Out of reach but finite: a number (at least 200 - 10 m/s x 3 s - 1 m of height).
+    const Json& far = out.at("throws")[1];
+    EXPECT_GE(far.at("closest_distance").get<double>(), 200.0 - 30.0 - 1.0);
+    EXPECT_EQ(far.at("closest_velocity").size(), 3u);
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------------------------

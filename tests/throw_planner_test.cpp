@@ -280,6 +280,49 @@ TEST_F(ThrowPlanner, OutOfReachIsAnEmptyAnswer) {
     for (const ThrowPlan& plan : plans) EXPECT_EQ(plan.distance, 123.0f); // untouched
 }
 
+// A target beyond a float's range of any throw (3e38 m on two axes: 4.2e38 m > FLT_MAX): no
+// distance can be reported, so closestDistance is FLT_MAX ("nowhere near") and the velocity
+// zero, not an infinity.
+TEST_F(ThrowPlanner, NowhereNearIsTheLargestFloat) {
+    const ThrowPlanRequest r = request(rv(0, 1.5, 0), rv(3e38, 0, 3e38));
+    const Planning p(r, &floor);
+    ASSERT_EQ(p.status, Status::Ok);
+    EXPECT_EQ(p.result.planCount, 0u);
+    EXPECT_GT(p.result.predictions, 0u);
+    EXPECT_EQ(p.result.closestDistance, std::numeric_limits<float>::max());
+    EXPECT_EQ(p.result.closestVelocity, Vec3(0.0f));
+}
+
+// The total work, maxPredictions x fuse / step, is capped (maxTotalSteps, 2^24 by default): a
+// 20000 s fuse at 0.02 s (10^6 steps per prediction, under settings.maxSteps) with 400
+// predictions is refused; 838 s (41 900 steps, 16 760 000 in all) is not; 20000 s with one
+// prediction is not.
+TEST_F(ThrowPlanner, TotalWorkIsCapped) {
+    ThrowPlanRequest r = request(rv(0, 1.5, 0), rv(0, 0, 1e6));
+    r.settings.method = foresight::ProjectileMethod::Stepped;
+    r.fuseTime = 20000.0f;
+    EXPECT_EQ(foresight::throwPlanWork(r), 400u * 1000000u);
+    EXPECT_EQ(foresight::validateThrowPlanRequest(r), Status::TooManySteps);
+    EXPECT_EQ(foresight::throwPlanScratchSize(r), 0u);
+    ThrowPlanResult result;
+    result.predictions = 99;
+    std::array<ThrowPlan, 1> plans{};
+    EXPECT_EQ(foresight::planThrow(r, &floor, plans, {}, result), Status::TooManySteps);
+    EXPECT_EQ(result.predictions, 99u);  // untouched
+    r.budget.maxPredictions = 1;
+    EXPECT_EQ(foresight::throwPlanWork(r), 1000000u);
+    EXPECT_EQ(foresight::validateThrowPlanRequest(r), Status::Ok);
+    r.budget.maxPredictions = 400;
+    r.fuseTime = 838.0f;
+    EXPECT_EQ(foresight::throwPlanWork(r), 400u * 41900u);
+    EXPECT_EQ(foresight::validateThrowPlanRequest(r), Status::Ok);
+    r.budget.maxTotalSteps = 400u * 41900u - 1u;  // one step under: refused
+    EXPECT_EQ(foresight::validateThrowPlanRequest(r), Status::TooManySteps);
+    // A bad fuse or step: no work to count.
+    r.fuseTime = 0.0f;
+    EXPECT_EQ(foresight::throwPlanWork(r), 0u);
+}
+
 TEST_F(ThrowPlanner, BudgetCapsThePredictions) {
     ThrowPlanRequest r = request(rv(0, 1.5, 0), rv(0, 0, 200));
     r.budget.maxPredictions = 7;
@@ -324,6 +367,8 @@ TEST_F(ThrowPlanner, BadInputIsRefusedWithAStatusAndNothingWritten) {
         {"no plans wanted", [](ThrowPlanRequest& r, float) { r.maxPlans = 0; }, Status::InvalidIterations},
         {"no grid", [](ThrowPlanRequest& r, float) { r.budget.azimuthSamples = 0; }, Status::InvalidIterations},
         {"no predictions", [](ThrowPlanRequest& r, float) { r.budget.maxPredictions = 0; }, Status::InvalidIterations},
+        {"no work allowed", [](ThrowPlanRequest& r, float) { r.budget.maxTotalSteps = 0; }, Status::InvalidIterations},
+        {"total work over the cap", [](ThrowPlanRequest& r, float) { r.fuseTime = 20000.0f; }, Status::TooManySteps},
         {"too many refinements",
          [](ThrowPlanRequest& r, float) { r.budget.refinements = foresight::kMaxThrowPlanRefinements + 1; },
          Status::InvalidIterations},

@@ -3,7 +3,9 @@
 #include "json_input.h"
 
 #include <cmath>
+#include <cstdint>
 #include <iostream>
+#include <limits>
 
 namespace foresight_cli {
 
@@ -67,6 +69,18 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
     if (d.errors.size() != errorsBefore) return;
     // What the fields above cannot see alone (the work cap of fuse / step).
     const Status status = foresight::validateThrowPlanRequest(r);
+    const std::uint64_t steps = foresight::steppedStepCount(r.fuseTime, s.step);
+    if (status == Status::TooManySteps && steps <= s.maxSteps) {
+        // One prediction fits, but the whole search (max_predictions of them) is over the cap.
+        d.error(m.at("fuse"), "too much work for one plan: " + shortNumber(static_cast<double>(r.fuseTime)) +
+                                  " s at a step of " + shortNumber(static_cast<double>(s.step)) + " s is " +
+                                  std::to_string(steps) + " steps per prediction, times max_predictions " +
+                                  std::to_string(r.budget.maxPredictions) + " = " +
+                                  std::to_string(foresight::throwPlanWork(r)) + " steps, over the cap of " +
+                                  std::to_string(r.budget.maxTotalSteps) +
+                                  ": shorten \"fuse\", lengthen \"step\" or lower \"max_predictions\"");
+        return;
+    }
     if (status != Status::Ok) {
         std::string message = foresight::statusMessage(status);
         if (status == Status::TooManySteps)
@@ -194,8 +208,10 @@ Json planResultDocument(const std::vector<ThrowRequest>& throws, const std::vect
         }
         entry["plans"] = std::move(plans);
         entry["predictions"] = o.result.predictions;
-        entry["closest_distance"] = jsonFloat(o.result.closestDistance);
-        entry["closest_velocity"] = jsonVector(o.result.closestVelocity);
+        // FLT_MAX: no throw finished, or none ended within a float's range of the target.
+        const bool approached = o.result.closestDistance < std::numeric_limits<float>::max();
+        entry["closest_distance"] = approached ? jsonFloat(o.result.closestDistance) : Json(nullptr);
+        entry["closest_velocity"] = approached ? jsonVector(o.result.closestVelocity) : Json(nullptr);
         list.push_back(std::move(entry));
     }
     Json document = Json::object();

@@ -49,6 +49,15 @@ struct ThrowPlanBudget {
     std::uint32_t refinements = 6;
     std::uint32_t refinementPredictions = 24; ///< predictions per refinement at most.
     std::uint32_t maxPredictions = 400;  ///< predictions per planThrow call at most, in total.
+    /// The work of one call at most: maxPredictions x the steps of one prediction
+    /// (`fuseTime / settings.step`, counted as for the Stepped method whatever the method: the
+    /// exact method's chord casts also advance by `step`) [Limit: >= 1]. A request over it is
+    /// refused (TooManySteps) instead of running for long. The default, 2^24 steps, allows
+    /// e.g. a 838 s fuse at 0.02 s: an unreachable target then took 1.5 s with Stepped
+    /// predictions over a floor and a box (0.2 s in free flight), where a 20000 s fuse ran
+    /// 372 predictions of 10^6 steps for ~30 s. The default request (3 s fuse, 0.02 s step,
+    /// 400 predictions) is 60 000 steps.
+    std::uint64_t maxTotalSteps = std::uint64_t{1} << 24;
     /// Grid: the time step of the grid's predictions when it is longer than the request's step
     /// and the method is Exact [Units: s] [Limit: >= 0, finite; 0: the request's step]. The
     /// exact method stays on the true parabola whatever the step (only its chord casts get
@@ -101,7 +110,8 @@ struct ThrowPlanResult {
     std::uint32_t predictions = 0;    ///< forward predictions run.
     /// The closest any tried throw came to the target at the fuse time [Units: m] (also when
     /// no plan was found: how far out of reach the target is, as far as the search saw);
-    /// FLT_MAX when no throw finished.
+    /// FLT_MAX when no throw finished or the distance is beyond a float (a target ~1e38 m
+    /// away or more): then closestVelocity is zero. `foresight plan` prints null for both.
     float closestDistance = 0;
     Vec3 closestVelocity{0};          ///< the launch velocity of that throw [Units: m/s].
 };
@@ -109,11 +119,17 @@ struct ThrowPlanResult {
 /// Checks a request as planThrow does: Ok, NonFiniteInput (any NaN or infinity), InvalidFuse
 /// (fuseTime <= 0: a zero fuse is refused too), InvalidRadius (acceptanceRadius <= 0),
 /// InvalidSpeed (maxSpeed <= 0, or minSpeed outside [0, maxSpeed]: no launch velocity exists),
-/// InvalidIterations (maxPlans or a budget count is 0, or refinements over
-/// kMaxThrowPlanRefinements), InvalidStep (budget.gridStep negative or not finite),
+/// InvalidIterations (maxPlans or a budget count is 0, maxTotalSteps included, or refinements
+/// over kMaxThrowPlanRefinements), InvalidStep (budget.gridStep negative or not finite),
 /// what validateProjectileSettings returns for the settings, or TooManySteps (fuseTime / step
-/// over settings.maxSteps).
+/// over settings.maxSteps, or budget.maxPredictions x fuseTime / step over
+/// budget.maxTotalSteps: a fuse too long for its step; see throwPlanWork).
 Status validateThrowPlanRequest(const ThrowPlanRequest& request);
+
+/// The work bound validateThrowPlanRequest compares with budget.maxTotalSteps:
+/// budget.maxPredictions x the steps of one prediction (fuseTime / settings.step, as
+/// steppedStepCount counts them); 0 when fuseTime or step is not positive and finite.
+std::uint64_t throwPlanWork(const ThrowPlanRequest& request);
 
 /// Scratch points that let planThrow record every first impact:
 /// `trajectoryCapacity(fuseTime, settings, 1)` (0 for an invalid request).
