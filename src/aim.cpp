@@ -343,8 +343,7 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
         if (maxTime > 0) times[static_cast<std::size_t>(timeCount++)] = maxTime;
     }
     // A time that rounds to 0 as a float (a tiny positive double, e.g. a target 1e-30 m away
-    // at 3e38 m/s) would be reported as `time: 0`, outside (0, maxTime]: drop it. Such a shot
-    // meets the target before any step of a prediction anyway.
+    // at 3e38 m/s) would be reported as `time: 0`, outside (0, maxTime]: drop it.
     {
         int kept = 0;
         for (int i = 0; i < timeCount; ++i) {
