@@ -4,6 +4,8 @@
 
 #include "internal.h"
 
+#include <type_traits>
+
 FORESIGHT_NAMESPACE_BEGIN
 using namespace detail;
 
@@ -863,6 +865,7 @@ DeadReckoningBatch::DeadReckoningBatch(std::size_t capacity) : mPrepared(capacit
     sizeVec(mBodyAcceleration);
     sizeVec(mBodyAxis);
     sizeQuat(mBodyOrientation);
+    sizeQuat(mBodyAxisTerm);
     mBodyTimestamp.resize(capacity);
     mBodyHalfRate.resize(capacity);
     sizeVec(mBodyPosition);
@@ -903,7 +906,9 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
     mAgeScale[entity] = u.mKernel == kKernelStatic ? 0.0f : 1.0f;
 
     const std::span<const PreparedDeadReckoning> all(mPrepared);
-    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+    // Body-axis entities get their orientation from the body pass (the same formula, with the
+    // sine and cosine it computes anyway).
+    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0 && u.mKernel != kKernelBody, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
         putQuat(mTurnOrientation, slot, m.mOrientation);
         putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
         mTurnTimestamp[slot] = m.mTimestamp;
@@ -915,6 +920,7 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
         put(mBodyAcceleration, slot, m.mAcceleration);
         put(mBodyAxis, slot, m.mAxis);
         putQuat(mBodyOrientation, slot, m.mOrientation);
+        putQuat(mBodyAxisTerm, slot, m.mAxisTerm);
         mBodyTimestamp[slot] = m.mTimestamp;
         mBodyHalfRate[slot] = m.mHalfRate;
     });
@@ -964,7 +970,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
         }
     }
 
-    // Pass 2, the turning entities (dense): the orientation A cos h + B sin h, then one
+    // Pass 2, the turning world-axis entities (dense): the orientation A cos h + B sin h, then one
     // Newton step towards unit length. Chunks whose angles are all in the first quadrant (the
     // usual case: |w| t / 2 < pi/4) skip the range reduction; the results are the same.
     for (std::size_t begin = 0; begin < mTurning.count; begin += kChunk) {
@@ -1014,12 +1020,14 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
     }
 
     // Pass 3, the body-axis entities (dense): positions from the integrals (see
-    // extrapolateOne), in float, rotated to world axes by the orientation.
+    // extrapolateOne), in float, rotated to world axes by the orientation; and the
+    // orientation itself.
     for (std::size_t begin = 0; begin < mBody.count; begin += kChunk) {
         const std::size_t m = std::min(kChunk, mBody.count - begin);
         alignas(16) double h[kChunk];
         alignas(16) float age[kChunk];
         alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
+        alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
         std::int64_t reduce = 0;  // 64 bits, as in pass 2
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t s = begin + j;
@@ -1027,7 +1035,9 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
             h[j] = mBodyHalfRate[s] * static_cast<double>(age[j]);
             reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
         }
-        auto integrate = [&](auto sinCos) {
+        // firstQuadrant: every h < pi/4, so x = 2h < 2 and e(x) is the series (same bits,
+        // without the division of the direct form).
+        auto integrate = [&](auto sinCos, auto firstQuadrant) {
             std::int32_t flags = 0;  // a local, so that the reduction vectorises
             for (std::size_t j = 0; j < m; ++j) {
                 const std::size_t s = begin + j;
@@ -1043,8 +1053,11 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                     zz * (1.0f / 120.0f -
                           zz * (1.0f / 5040.0f -
                                 zz * (1.0f / 362880.0f - zz * (1.0f / 39916800.0f - zz / 6227020800.0f))));
-                const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
-                const float ex = xx < 2.0f ? series : direct;
+                float ex = series;
+                if constexpr (!decltype(firstQuadrant)::value) {
+                    const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
+                    ex = xx < 2.0f ? series : direct;
+                }
                 const float t2 = t * t;
                 const float cV = t * sincX, cUxV = t * xx * c1, cA = t2 * (sincX - c1), cUxA = t2 * xx * (c1 - ex);
                 const float ux = mBodyAxis.x[s], uy = mBodyAxis.y[s], uz = mBodyAxis.z[s];
@@ -1064,14 +1077,33 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                 pz[j] = mBodyPosition.z[s] + Real(dz + qw * cz + (qx * cy - qy * cx));
                 flags |= static_cast<std::int32_t>(!(h[j] < kReductionLimit)) |
                          static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j]));
+                // The orientation, as pass 2 computes it for the world-axis entities.
+                const float w = qw * cosine + mBodyAxisTerm.w[s] * sine;
+                const float x = qx * cosine + mBodyAxisTerm.x[s] * sine;
+                const float y = qy * cosine + mBodyAxisTerm.y[s] * sine;
+                const float z = qz * cosine + mBodyAxisTerm.z[s] * sine;
+                const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
+                ow[j] = w * f;
+                ox[j] = x * f;
+                oy[j] = y * f;
+                oz[j] = z * f;
             }
             unusual |= flags;
         };
         if (reduce != 0)
-            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); });
+            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); },
+                      std::false_type{});
         else
-            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); });
-        for (std::size_t j = 0; j < m; ++j) out[mBody.entity[begin + j]].position = RVec3(px[j], py[j], pz[j]);
+            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); },
+                      std::true_type{});
+        for (std::size_t j = 0; j < m; ++j) {
+            DeadReckoningResult& r = out[mBody.entity[begin + j]];
+            r.position = RVec3(px[j], py[j], pz[j]);
+            r.orientation.w = ow[j];
+            r.orientation.x = ox[j];
+            r.orientation.y = oy[j];
+            r.orientation.z = oz[j];
+        }
     }
 
     std::size_t refused = 0;

@@ -422,9 +422,9 @@ std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> enti
 /// Entities are numbered 0 to capacity() - 1; each starts as a default PreparedDeadReckoning
 /// (STATIC at the origin). The constructor allocates everything (about 340 bytes per entity,
 /// 380 in the double build); no other call allocates. One frame: a vectorised pass over every
-/// entity (the world-axis translation), then one over the turning entities only (their
-/// orientation: a non-turning entity pays no sine or cosine), then one over the body-axis
-/// entities (their positions).
+/// entity (the world-axis translation), then one over the turning world-axis entities only
+/// (their orientation: a non-turning entity pays no sine or cosine), then one over the
+/// body-axis entities (their positions and orientations).
 class DeadReckoningBatch {
 public:
     /// A batch of `capacity` entities [Limit: < 2^32]. Allocates.
@@ -473,14 +473,14 @@ private:
     QuatColumns mFixedOrientation;  // A normalised as the turning formula does at h = 0
     std::vector<double> mTimestamp;
     std::vector<float> mAgeScale;  // 0 for STATIC, 1 otherwise
-    // Turning entities (|w| > 0, world or body axes): the orientation A cos h + B sin h.
+    // Turning world-axis entities (|w| > 0): the orientation A cos h + B sin h.
     Group mTurning;
     QuatColumns mTurnOrientation, mTurnAxisTerm;
     std::vector<double> mTurnTimestamp, mTurnHalfRate;
-    // Body-axis entities: the columns the integrals read.
+    // Body-axis entities: the columns the integrals and their orientation read.
     Group mBody;
     Vec3Columns<float> mBodyVelocity, mBodyAcceleration, mBodyAxis;
-    QuatColumns mBodyOrientation;
+    QuatColumns mBodyOrientation, mBodyAxisTerm;
     std::vector<double> mBodyTimestamp, mBodyHalfRate;
     Vec3Columns<Real> mBodyPosition;
 };
