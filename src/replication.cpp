@@ -393,6 +393,7 @@ Status DeadReckoningReceiver::sample(double time, ReceivedPose& out) {
         mHasRendered = true;
         if (mBufferCount == 0) return Status::NoUpdate;
         if (Status s = showInterpolated(renderTime, pose); s != Status::Ok) return s;
+        applySwitchOffset(renderTime, pose);
     } else {
         if (!mHasCurrent) return Status::NoUpdate;
         Pose shown;
@@ -403,11 +404,30 @@ Status DeadReckoningReceiver::sample(double time, ReceivedPose& out) {
     return Status::Ok;
 }
 
+void DeadReckoningReceiver::applySwitchOffset(double renderTime, ReceivedPose& pose) const {
+    if (!mHasSwitchOffset) return;
+    const double progress = (renderTime - mSwitchStart) / static_cast<double>(mSettings.blendTime);
+    const double remaining = 1.0 - std::clamp(progress, 0.0, 1.0);
+    if (remaining <= 0.0) return;
+    pose.position = toR(toD(pose.position) + mSwitchOffset * remaining);
+    const DQuat turn = glm::slerp(identityD(), mSwitchRotationOffset, remaining);
+    pose.orientation = toF(glm::normalize(turn * toD(pose.orientation)));
+}
+
 UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const DeadReckoningState& state) {
     if (mHasRendered && timestamp < mLastRenderTime) {
         ++mCounters.outOfOrder;
         return UpdateOutcome::OutOfOrder;
     }
+    // When the last frame showed the newest update extrapolated (the buffer had run dry) and
+    // this update is newer, the frames from now on interpolate towards it instead: where they
+    // start differs from where the extrapolation was. That difference, at the last render time,
+    // fades out linearly over blendTime (no pop at the switch; a teleport still snaps).
+    ReceivedPose before;
+    const bool switching = mHasRendered && mBufferCount > 0 && buffered(mBufferCount - 1).timestamp < mLastRenderTime &&
+                           timestamp > buffered(mBufferCount - 1).timestamp &&
+                           showInterpolated(mLastRenderTime, before) == Status::Ok;
+    if (switching) applySwitchOffset(mLastRenderTime, before);
     // Where it goes: after every buffered update stamped earlier (usually at the end).
     std::size_t index = mBufferCount;
     while (index > 0 && buffered(index - 1).timestamp >= timestamp) {
@@ -430,9 +450,22 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
         mBuffer[(mBufferStart + i) % kBufferCapacity] = mBuffer[(mBufferStart + i - 1) % kBufferCapacity];
     mBuffer[(mBufferStart + index) % kBufferCapacity] = Snapshot{timestamp, state};
     ++mBufferCount;
-    if (index > 0 && isTeleport(buffered(index - 1), buffered(index))) {
+    const bool teleport = index > 0 && isTeleport(buffered(index - 1), buffered(index));
+    if (teleport) {
         ++mCounters.teleports;
         ++mCounters.snaps;
+    }
+    ReceivedPose after;
+    if (switching && !teleport && showInterpolated(mLastRenderTime, after) == Status::Ok) {
+        const DVec3 offset = toD(before.position) - toD(after.position);
+        if (glm::length(offset) <= static_cast<double>(mSettings.teleportDistance)) {
+            mSwitchOffset = offset;
+            DQuat rotation = glm::normalize(toD(before.orientation) * glm::conjugate(toD(after.orientation)));
+            if (rotation.w < 0.0) rotation = -rotation;  // the short way
+            mSwitchRotationOffset = rotation;
+            mSwitchStart = mLastRenderTime;
+            mHasSwitchOffset = true;
+        }
     }
     ++mCounters.accepted;
     return UpdateOutcome::Buffered;

@@ -890,6 +890,30 @@ TEST(Interpolation, SparseUpdatesOfATurningCarFollowTheArcNotTheChord) {
     EXPECT_LT(worst, 1e-4);
 }
 
+// The buffer runs dry (the render time passes the newest update, which is then extrapolated);
+// when a newer update arrives, interpolating towards it would move the shown entity at once.
+// That difference fades out over blendTime instead. STATIC updates at x = 0, 1, 2 (stamped 0,
+// 1, 2), delay 1/8 s, blend 1/4 s: every value is dyadic.
+TEST(Interpolation, SwitchFromExtrapolatingToInterpolatingDoesNotPop) {
+    ReceiverSettings settings = interpolating(0.125f);
+    settings.blendTime = 0.25f;
+    DeadReckoningReceiver receiver(settings);
+    auto at = [](double x) { return makeState(DeadReckoningAlgorithm::Static, DVec3(x, 0, 0), DVec3(0)); };
+    ASSERT_EQ(receiver.receive(0.0, at(0), 0.0), UpdateOutcome::Buffered);
+    ASSERT_EQ(receiver.receive(1.0, at(1), 1.0), UpdateOutcome::Buffered);
+    // Render 1.125, past the newest: STATIC extrapolated, x = 1.
+    EXPECT_EQ(sampled(receiver, 1.25).position, rv(1, 0, 0));
+    ASSERT_EQ(receiver.receive(2.0, at(2), 1.25), UpdateOutcome::Buffered);
+    // Same render time: still x = 1 (plain interpolation would say 1.125).
+    EXPECT_EQ(sampled(receiver, 1.25).position, rv(1, 0, 0));
+    // Half-way through the fade (render 1.25): 1.25 - 0.125 / 2.
+    EXPECT_EQ(sampled(receiver, 1.375).position, rv(1.1875, 0, 0));
+    // Faded (render 1.375 and later): plain interpolation.
+    EXPECT_EQ(sampled(receiver, 1.5).position, rv(1.375, 0, 0));
+    EXPECT_EQ(sampled(receiver, 2.0).position, rv(1.875, 0, 0));
+    EXPECT_EQ(receiver.counters().snaps, 0u);
+}
+
 TEST(Interpolation, NoSweepAcrossATeleport) {
     DeadReckoningReceiver receiver(interpolating(0.125f));
     ASSERT_EQ(receiver.receive(0.0, fpw(DVec3(0), DVec3(1, 0, 0)), 0.0), UpdateOutcome::Buffered);

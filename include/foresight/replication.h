@@ -146,7 +146,10 @@ enum class ReceiverMode : std::uint8_t {
     /// fraction of the correcting rotation). For updates that agree with each other's models
     /// (fixed-rate snapshots of straight motion, STATIC updates) this is exactly linear
     /// interpolation and slerp; for sparse updates of a turning vehicle it follows the model's
-    /// arc instead of the chord (no Hermite curve: it would overshoot). Before the oldest
+    /// arc instead of the chord (no Hermite curve: it would overshoot). When the buffer had run
+    /// dry (the last frame extrapolated the newest update) and a newer update arrives, the
+    /// difference its interpolation makes at the last render time fades out linearly over
+    /// blendTime, so the switch does not pop (unless it is a teleport). Before the oldest
     /// buffered update: that update as stamped; after the newest: extrapolate from it, up to
     /// extrapolationLimit, when the buffer runs dry. Two updates whose newer one is further
     /// than teleportDistance from the older one's own prediction (its model run, without
@@ -161,7 +164,8 @@ enum class ReceiverMode : std::uint8_t {
 struct ReceiverSettings {
     ReceiverMode mode = ReceiverMode::Extrapolate;               ///< extrapolate or interpolate.
     Smoothing smoothing = Smoothing::ProjectiveVelocityBlending; ///< Extrapolate mode only.
-    /// [Units: s] [Limit: > 0, finite] duration of LinearBlend and ProjectiveVelocityBlending.
+    /// [Units: s] [Limit: > 0, finite] duration of LinearBlend and ProjectiveVelocityBlending,
+    /// and of the fade of Interpolate mode's switch from extrapolating to interpolating.
     float blendTime = 0.2f;
     /// [Units: s] [Limit: > 0, finite] half-life of the ExponentialDecay offset.
     float decayHalfLife = 0.1f;
@@ -290,6 +294,7 @@ private:
     Status showInterpolated(double renderTime, ReceivedPose& out) const;
     bool isTeleport(const Snapshot& from, const Snapshot& to) const;
     UpdateOutcome receiveInterpolated(double timestamp, const DeadReckoningState& state);
+    void applySwitchOffset(double renderTime, ReceivedPose& pose) const;
     const Snapshot& buffered(std::size_t i) const { return mBuffer[(mBufferStart + i) % kBufferCapacity]; }
 
     ReceiverSettings mSettings;
@@ -301,6 +306,12 @@ private:
     std::size_t mBufferCount = 0;
     double mLastRenderTime = 0.0; // the last sample()'s render time (OutOfOrder)
     bool mHasRendered = false;
+    // Interpolate mode: what the switch from extrapolating the newest update to interpolating
+    // towards a newer one moved the shown pose by, fading out over blendTime from mSwitchStart.
+    glm::dvec3 mSwitchOffset{0.0};
+    glm::dquat mSwitchRotationOffset{glm::identity<glm::dquat>()};
+    double mSwitchStart = 0.0;
+    bool mHasSwitchOffset = false;
     // Extrapolate mode: the update being shown and the correction in progress.
     Snapshot mCurrent{};
     Snapshot mPrevious{};          // the update shown before mCurrent (LinearBlend)
