@@ -1830,6 +1830,7 @@ TEST_F(cli, NetsimRefusesBadOptionsWithStatusTwo) {
         // -1 was once a hidden "default" value.
         {{"netsim", "--interpolation-delay", "-1"}, "--interpolation-delay must be > 0 and <= 60000 ms (got -1)"},
         {{"netsim", "--extrapolation-limit", "-1"}, "--extrapolation-limit must be >= 0 and <= 3.6e6 ms (got -1)"},
+        {{"netsim", "--sender", "always"}, "--sender: expected thresholds or snapshots, got \"always\""},
         {{"netsim", "--teleport-distance", "0"}, "--teleport-distance must be > 0 and <= 1e6 m (got 0)"},
     };
     for (const auto& c : cases) {

@@ -398,6 +398,24 @@ TEST(NetsimSimulation, EverythingLostShowsNothing) {
     EXPECT_EQ(markdown.find("0.00 / 0.00"), std::string::npos) << markdown;
 }
 
+// Snapshots: every sender tick sends (60 s at 20 Hz: 1201 ticks, k / 20 for k = 0..1200),
+// whatever the thresholds say, and they are counted as snapshots, not as threshold reasons.
+TEST(NetsimSimulation, SnapshotSenderSendsEveryTick) {
+    SimulationSettings settings = perfectLink();
+    settings.snapshots = true;
+    settings.sendRate = 20;
+    settings.duration = 60;
+    settings.models = {DeadReckoningAlgorithm::Fpw};
+    TrajectoryResult result;
+    std::string error;
+    ASSERT_TRUE(simulateTrajectory(builtin("circuit", 60), settings, false, result, error)) << error;
+    const ModelResult& m = result.models[0];
+    EXPECT_EQ(m.updates, 1201u);
+    EXPECT_EQ(m.sentSnapshot, 1201u);
+    EXPECT_EQ(m.sentFirst + m.sentPosition + m.sentOrientation + m.sentHeartbeat, 0u);
+    EXPECT_NE(settingsLine(settings).find("sender: a snapshot every tick"), std::string::npos);
+}
+
 // The sender's reasons are counted per model: the first update once, then position threshold
 // crossings and heartbeats; every update has at least one reason.
 TEST(NetsimSimulation, SendReasonsAreCounted) {

@@ -741,12 +741,20 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
                         foresight::statusMessage(status);
                 return false;
             }
-            if (!decision.send()) continue;
+            if (settings.snapshots) {
+                // Every tick: the thresholds' decision is ignored (the sender still runs, so a
+                // bad state is refused the same way).
+                ++modelResult.sentSnapshot;
+            } else if (!decision.send()) {
+                continue;
+            }
             ++modelResult.updates;
+            if (!settings.snapshots) {
             modelResult.sentFirst += (decision.reasons & foresight::SendReasonFirst) != 0 ? 1 : 0;
             modelResult.sentPosition += (decision.reasons & foresight::SendReasonPosition) != 0 ? 1 : 0;
             modelResult.sentOrientation += (decision.reasons & foresight::SendReasonOrientation) != 0 ? 1 : 0;
             modelResult.sentHeartbeat += (decision.reasons & foresight::SendReasonHeartbeat) != 0 ? 1 : 0;
+            }
             double delay = 0;
             if (!link.transmit(delay)) {
                 ++modelResult.lost;
@@ -853,10 +861,13 @@ std::string settingsLine(const SimulationSettings& settings) {
                        milliseconds(settings.link.jitter) + " ms (uniform), loss " +
                        format("%g", settings.link.loss * 100) + "%, seed " + std::to_string(settings.link.seed) +
                        "; send " + format("%g", settings.sendRate) + " Hz, render " + format("%g", settings.renderRate) +
-                       " Hz; sender thresholds " + format("%g", static_cast<double>(settings.sender.positionThreshold)) +
-                       " m, " + format("%g", std::round(static_cast<double>(settings.sender.orientationThreshold) * 180 / kPi * 1e4) / 1e4) +
-                       " deg, heartbeat " + format("%g", static_cast<double>(settings.sender.heartbeat)) +
-                       " s; blend " + milliseconds(static_cast<double>(settings.receiver.blendTime)) +
+                       (settings.snapshots
+                            ? std::string(" Hz; sender: a snapshot every tick")
+                            : " Hz; sender thresholds " + format("%g", static_cast<double>(settings.sender.positionThreshold)) +
+                                  " m, " +
+                                  format("%g", std::round(static_cast<double>(settings.sender.orientationThreshold) * 180 / kPi * 1e4) / 1e4) +
+                                  " deg, heartbeat " + format("%g", static_cast<double>(settings.sender.heartbeat)) + " s") +
+                       "; blend " + milliseconds(static_cast<double>(settings.receiver.blendTime)) +
                        " ms, decay half-life " + milliseconds(static_cast<double>(settings.receiver.decayHalfLife)) +
                        " ms, interpolation delay " +
                        milliseconds(static_cast<double>(settings.receiver.interpolationDelay)) + " ms, extrapolation limit " +

@@ -119,6 +119,10 @@ inline foresight::ReceiverSettings unlimitedReceiverSettings() {
 struct SimulationSettings {
     double duration = 60.0;    ///< [Units: s] (0, kMaxDuration]; cut to a CSV's length.
     double sendRate = 30.0;    ///< [Units: Hz] sender ticks.
+    /// false: DeadReckoningSender's thresholds decide which ticks send (dead reckoning);
+    /// true: every tick sends a snapshot (Source's model: a fixed rate, usually with
+    /// interpolation on the receiver).
+    bool snapshots = false;
     double renderRate = 60.0;  ///< [Units: Hz] receiver frames.
     LinkSettings link;
     foresight::SenderSettings sender;     ///< thresholds and heartbeat.
@@ -169,6 +173,7 @@ struct ModelResult {
     std::uint64_t reordered = 0;     ///< arrived after a packet sent later.
     /// Updates sent for each reason (SendReason bits; one update may count under several).
     std::uint64_t sentFirst = 0, sentPosition = 0, sentOrientation = 0, sentHeartbeat = 0;
+    std::uint64_t sentSnapshot = 0;  ///< updates sent as fixed-rate snapshots (SimulationSettings::snapshots).
     std::vector<DisplayResult> displays;
 };
 
@@ -219,6 +224,7 @@ struct NetsimOptions {
     std::string loss = "0.02";               ///< a fraction in [0, 1] or a percentage ("2%").
     std::string seed = "1";                  ///< the link's seed: an unsigned 64-bit decimal.
     double sendRate = 30;                    ///< [Units: Hz] [1, 1000].
+    std::string sender = "thresholds";       ///< "thresholds" (DIS dead reckoning) or "snapshots".
     double renderRate = 60;                  ///< [Units: Hz] [1, 1000].
     std::vector<std::string> models;         ///< DIS names (any case) or "all"; empty: the default set.
     std::vector<std::string> smoothings;     ///< display names or "all"; empty: all.

@@ -115,6 +115,10 @@ bool buildSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
     settings.receiver.teleportDistance = static_cast<float>(o.teleportDistance);
     settings.duration = o.duration;
     settings.sendRate = o.sendRate;
+    if (o.sender == "snapshots")
+        settings.snapshots = true;
+    else if (o.sender != "thresholds")
+        return fail("--sender: expected thresholds or snapshots, got \"" + o.sender + "\"");
     settings.renderRate = o.renderRate;
     settings.link.latency = o.latency / 1000;
     settings.link.jitter = o.jitter / 1000;
@@ -183,6 +187,7 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
     Json settings = Json::object();
     settings["duration"] = jsonDouble(s.duration);
     settings["send_rate"] = jsonDouble(s.sendRate);
+    settings["sender"] = s.snapshots ? "snapshots" : "thresholds";
     settings["render_rate"] = jsonDouble(s.renderRate);
     settings["latency"] = jsonDouble(s.link.latency);
     settings["jitter"] = jsonDouble(s.link.jitter);
@@ -228,6 +233,7 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
             reasons["position"] = m.sentPosition;
             reasons["orientation"] = m.sentOrientation;
             reasons["heartbeat"] = m.sentHeartbeat;
+            reasons["snapshot"] = m.sentSnapshot;
             model["send_reasons"] = std::move(reasons);
             model["displays"] = std::move(displays);
             models.push_back(std::move(model));
@@ -266,6 +272,10 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
     netsim->add_option("--seed", o.seed, "the link's random seed (default 1)")->type_name("N");
     netsim->add_option("--send-rate", o.sendRate, "sender ticks per second (default 30)")->type_name("HZ");
     netsim->add_option("--render-rate", o.renderRate, "receiver frames per second (default 60)")->type_name("HZ");
+    netsim->add_option("--sender", o.sender,
+                       "thresholds: dead reckoning, send when the error crosses a threshold (default); snapshots: "
+                       "send every tick (with --send-rate 20: Source's snapshots)")
+        ->type_name("KIND");
     netsim->add_option("--models", o.models,
                        "DIS models, comma-separated, or all (default STATIC,FPW,RVW,RPB,RVB)")
         ->type_name("LIST");
