@@ -419,15 +419,15 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
         ++mCounters.outOfOrder;
         return UpdateOutcome::OutOfOrder;
     }
-    // When the last frame showed the newest update extrapolated (the buffer had run dry) and
-    // this update is newer, the frames from now on interpolate towards it instead: where they
-    // start differs from where the extrapolation was. That difference, at the last render time,
-    // fades out linearly over blendTime (no pop at the switch; a teleport still snaps).
-    ReceivedPose before;
-    const bool switching = mHasRendered && mBufferCount > 0 && buffered(mBufferCount - 1).timestamp < mLastRenderTime &&
-                           timestamp > buffered(mBufferCount - 1).timestamp &&
-                           showInterpolated(mLastRenderTime, before) == Status::Ok;
-    if (switching) applySwitchOffset(mLastRenderTime, before);
+    // An update can change what the last render time shows: when the buffer had run dry (the
+    // newest update was being extrapolated) and this one is newer, the frames from now on
+    // interpolate towards it instead; a late update can land in the pair being shown. The
+    // difference at the last render time fades out linearly over blendTime instead of popping
+    // (a teleport still snaps).
+    ReceivedPose beforeRaw;
+    const bool rendered = mHasRendered && mBufferCount > 0 && showInterpolated(mLastRenderTime, beforeRaw) == Status::Ok;
+    ReceivedPose before = beforeRaw;
+    if (rendered) applySwitchOffset(mLastRenderTime, before);
     // Where it goes: after every buffered update stamped earlier (usually at the end).
     std::size_t index = mBufferCount;
     while (index > 0 && buffered(index - 1).timestamp >= timestamp) {
@@ -456,7 +456,8 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
         ++mCounters.snaps;
     }
     ReceivedPose after;
-    if (switching && !teleport && showInterpolated(mLastRenderTime, after) == Status::Ok) {
+    if (rendered && !teleport && showInterpolated(mLastRenderTime, after) == Status::Ok &&
+        (after.position != beforeRaw.position || after.orientation != beforeRaw.orientation)) {
         const DVec3 offset = toD(before.position) - toD(after.position);
         if (glm::length(offset) <= static_cast<double>(mSettings.teleportDistance)) {
             mSwitchOffset = offset;

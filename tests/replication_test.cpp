@@ -914,6 +914,26 @@ TEST(Interpolation, SwitchFromExtrapolatingToInterpolatingDoesNotPop) {
     EXPECT_EQ(receiver.counters().snaps, 0u);
 }
 
+// A late update landing in the pair being shown bends the path there: the shown entity moves
+// onto the bent path over blendTime, not at once.
+TEST(Interpolation, LateUpdateInTheShownPairFadesIn) {
+    ReceiverSettings settings = interpolating(0.125f);
+    settings.blendTime = 0.25f;
+    DeadReckoningReceiver receiver(settings);
+    ASSERT_EQ(receiver.receive(0.0, lineAt(0.0), 0.0), UpdateOutcome::Buffered);
+    ASSERT_EQ(receiver.receive(0.25, lineAt(0.25), 0.25), UpdateOutcome::Buffered);
+    ASSERT_EQ(receiver.receive(0.5, lineAt(0.5), 0.5), UpdateOutcome::Buffered);
+    EXPECT_EQ(sampled(receiver, 0.4375).position.y, 1.0f);  // render 0.3125, on the line
+    DeadReckoningState late = lineAt(0.375);
+    late.position.y = 2;
+    ASSERT_EQ(receiver.receive(0.375, late, 0.45), UpdateOutcome::Buffered);
+    // Same render time: y still 1 (the bent path says 1.5 there); half-way through the fade
+    // (render 0.4375, where the bent path says 1.5 again): 1.5 - 0.5 / 2; then the bent path.
+    EXPECT_EQ(sampled(receiver, 0.4375).position.y, 1.0f);
+    EXPECT_EQ(sampled(receiver, 0.5625).position.y, 1.25f);
+    EXPECT_EQ(sampled(receiver, 0.6875).position.y, 1.0f);  // render 0.5625: faded, past the bend
+}
+
 TEST(Interpolation, NoSweepAcrossATeleport) {
     DeadReckoningReceiver receiver(interpolating(0.125f));
     ASSERT_EQ(receiver.receive(0.0, fpw(DVec3(0), DVec3(1, 0, 0)), 0.0), UpdateOutcome::Buffered);

@@ -146,10 +146,11 @@ enum class ReceiverMode : std::uint8_t {
     /// fraction of the correcting rotation). For updates that agree with each other's models
     /// (fixed-rate snapshots of straight motion, STATIC updates) this is exactly linear
     /// interpolation and slerp; for sparse updates of a turning vehicle it follows the model's
-    /// arc instead of the chord (no Hermite curve: it would overshoot). When the buffer had run
-    /// dry (the last frame extrapolated the newest update) and a newer update arrives, the
-    /// difference its interpolation makes at the last render time fades out linearly over
-    /// blendTime, so the switch does not pop (unless it is a teleport). Before the oldest
+    /// arc instead of the chord (no Hermite curve: it would overshoot). When an update changes
+    /// what the last render time showed (the buffer had run dry and the newest update was being
+    /// extrapolated, or a late update lands in the pair being shown), the difference fades out
+    /// linearly over blendTime, so the shown entity does not pop (unless it is a teleport).
+    /// Before the oldest
     /// buffered update: that update as stamped; after the newest: extrapolate from it, up to
     /// extrapolationLimit, when the buffer runs dry. Two updates whose newer one is further
     /// than teleportDistance from the older one's own prediction (its model run, without
