@@ -201,16 +201,19 @@ Status validateReceiverSettings(const ReceiverSettings& settings);
 /// What DeadReckoningReceiver::receive did with an update.
 enum class UpdateOutcome : std::uint8_t {
     Accepted,     ///< applied, smoothed per the settings.
-    Snapped,      ///< applied with a snap: the first update, Snap smoothing, or a teleport.
+    Snapped,      ///< applied with a snap: the first update, Snap smoothing, a teleport, or
+                  ///< a sender whose clock started again (ReceiverSettings::restartAfter).
     Buffered,     ///< Interpolate mode: every accepted update (stored in timestamp order, shown
                   ///< once the render time reaches it), late ones included.
-    OutOfOrder,   ///< dropped: older than the newest update (Extrapolate mode); older than the
+    OutOfOrder,   ///< dropped: older than the newest update (Extrapolate mode, unless it
+                  ///< comes after restartAfter of silence); older than the
                   ///< last sample()'s render time, or than every update of a full buffer
                   ///< (Interpolate mode).
     Duplicate,    ///< dropped: same timestamp as an update already received.
-    TooFarAhead,  ///< dropped: stamped more than maxFutureSkew after its receive time.
     Invalid,      ///< dropped: NaN or infinite fields, zero quaternion, unknown algorithm, a
                   ///< non-finite timestamp or receive time, or invalid receiver settings.
+    TooFarAhead,  ///< dropped: stamped more than maxFutureSkew after its receive time (last, so
+                  ///< that the earlier values keep their numbers).
 };
 
 /// Counts of what a receiver did, for statistics and tests.
