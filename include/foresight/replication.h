@@ -219,9 +219,11 @@ enum class UpdateOutcome : std::uint8_t {
 /// Counts of what a receiver did, for statistics and tests.
 struct ReceiverCounters {
     std::uint64_t accepted = 0;    ///< updates applied or buffered (Accepted, Snapped, Buffered).
-    std::uint64_t snaps = 0;       ///< updates that snapped (first, Snap smoothing, teleports).
+    std::uint64_t snaps = 0;       ///< updates that snapped (first, Snap smoothing, teleports,
+                                   ///< sender restarts).
     std::uint64_t teleports = 0;   ///< snaps caused by teleportDistance (Interpolate mode: updates
-                                   ///< further than it from the previous buffered one).
+                                   ///< further than it from the previous buffered one's
+                                   ///< prediction at their timestamp).
     std::uint64_t outOfOrder = 0;  ///< OutOfOrder updates dropped.
     std::uint64_t duplicates = 0;  ///< Duplicate updates dropped.
     std::uint64_t invalid = 0;     ///< Invalid updates dropped.
