@@ -963,6 +963,65 @@ private:
     std::uint64_t mState;
 };
 
+// Bad input never leads to a crash or a non-finite pose: every mode and smoothing, 20 000
+// random packets each (out of order, duplicates, far in the future, NaN fields, zero
+// quaternions, clock restarts, huge gaps, teleports), sampled at times that mostly go forward
+// and sometimes back. Every Ok sample must be finite, unit in orientation, and within reach of
+// the updates: positions are within 1.5e3 m of the origin, speeds 1.1e2 m/s, accelerations
+// 35 m/s^2, and the default limit stops extrapolation after 0.25 s (blends add at most a
+// correction), so 1e6 m is a loose bound that only a runaway would break.
+TEST(Receiver, RandomBadPacketsNeverGiveANonFinitePose) {
+    for (const ReceiverMode mode : {ReceiverMode::Extrapolate, ReceiverMode::Interpolate}) {
+        for (const Smoothing smoothing : {Smoothing::Snap, Smoothing::LinearBlend, Smoothing::ProjectiveVelocityBlending,
+                                          Smoothing::ExponentialDecay}) {
+            if (mode == ReceiverMode::Interpolate && smoothing != Smoothing::Snap) continue;
+            ReceiverSettings settings;
+            settings.mode = mode;
+            settings.smoothing = smoothing;
+            DeadReckoningReceiver receiver(settings);
+            Random random(1000 + static_cast<std::uint64_t>(smoothing) * 10 + static_cast<std::uint64_t>(mode));
+            double now = 0.0;
+            std::size_t okSamples = 0;
+            for (int i = 0; i < 20000; ++i) {
+                now += random.uniform(0.0, 0.05);
+                if (random.uniform(0, 1) < 0.001) now += random.uniform(10, 1e5);  // a huge gap
+                DeadReckoningState s = makeState(static_cast<DeadReckoningAlgorithm>(1 + i % 9),
+                                                 DVec3(random.uniform(-1e3, 1e3), random.uniform(-10, 10), random.uniform(-1e3, 1e3)),
+                                                 DVec3(random.uniform(-100, 100), random.uniform(-10, 10), random.uniform(-100, 100)),
+                                                 ftest::quatWXYZ(static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1)),
+                                                                 static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1))));
+                s.acceleration = ftest::toF(DVec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20)));
+                s.angularVelocity = ftest::toF(DVec3(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5)));
+                double stamp = now - random.uniform(0.0, 0.3);
+                const double u = random.uniform(0, 1);
+                if (u < 0.05) stamp -= random.uniform(0.5, 20);        // late, or a restarted clock
+                else if (u < 0.08) stamp += random.uniform(0.5, 1e6);  // in the future, some far
+                else if (u < 0.10) s.position.x = std::numeric_limits<Real>::quiet_NaN();
+                else if (u < 0.12) s.orientation = ftest::quatWXYZ(0, 0, 0, 0);
+                else if (u < 0.13) stamp = kNaN;
+                (void)receiver.receive(stamp, s, now);
+                if (random.uniform(0, 1) < 0.3) (void)receiver.receive(stamp, s, now);  // a duplicate
+                const double sampleTime = random.uniform(0, 1) < 0.05 ? now - random.uniform(0, 2) : now;
+                ReceivedPose pose;
+                if (receiver.sample(sampleTime, pose) != Status::Ok) continue;
+                ++okSamples;
+                const DVec3 p = ftest::toD(pose.position);
+                ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << i;
+                ASSERT_LT(glm::length(p), 1e6) << i;
+                const DVec3 v = ftest::toD(pose.velocity);
+                ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) << i;
+                const double length = glm::length(ftest::toD(pose.orientation));
+                ASSERT_NEAR(length, 1.0, 1e-5) << i;  // unit within float rounding of a few operations
+            }
+            // Most frames show something: bad packets did not lock the receiver.
+            EXPECT_GT(okSamples, 19000u) << static_cast<int>(mode) << " " << static_cast<int>(smoothing);
+            EXPECT_GT(receiver.counters().tooFarAhead, 0u);
+            EXPECT_GT(receiver.counters().invalid, 0u);
+            EXPECT_GT(receiver.counters().duplicates, 0u);
+        }
+    }
+}
+
 bool sameResult(const DeadReckoningResult& a, const DeadReckoningResult& b) {
     return ftest::sameBytes(a.position, b.position) && ftest::sameBytes(a.velocity, b.velocity) &&
            ftest::sameBytes(a.orientation, b.orientation);
