@@ -304,11 +304,10 @@ Status DeadReckoningReceiver::showExtrapolated(double time, ReceivedPose& out, P
     return Status::Ok;
 }
 
-bool DeadReckoningReceiver::isTeleport(const Snapshot& from, const Snapshot& to) const {
+bool DeadReckoningReceiver::isTeleport(const Snapshot& from, const Snapshot& to, DeadReckoningResult& predicted) const {
     // The older update's own prediction at the newer one's timestamp, without the
     // extrapolation limit (the sender's view of what receivers show): a threshold sender's
     // updates land within its threshold of it, a teleport far from it.
-    DeadReckoningResult predicted;
     const auto age = static_cast<float>(to.timestamp - from.timestamp);
     if (!std::isfinite(age) || predictDeadReckoning(from.state, age, predicted) != Status::Ok) return true;
     return glm::length(toD(to.state.position) - toD(predicted.position)) >
@@ -336,11 +335,8 @@ Status DeadReckoningReceiver::showInterpolated(double renderTime, ReceivedPose& 
         while (next > 1 && buffered(next - 1).timestamp > renderTime) --next;
         const Snapshot& from = buffered(next - 1);
         const Snapshot& to = buffered(next);
-        Pose b;
-        DeadReckoningResult resultB;
-        if (Status s = extrapolate(from, from.timestamp, result, a, held); s != Status::Ok) return s;
-        if (Status s = extrapolate(to, to.timestamp, resultB, b, held); s != Status::Ok) return s;
-        if (isTeleport(from, to)) {
+        DeadReckoningResult atTo;  // from's prediction at to's timestamp
+        if (isTeleport(from, to, atTo)) {
             // A teleport between the two: no sweep through the level; `from` moves on its own
             // model until `to` is due.
             if (Status s = extrapolate(from, renderTime, result, a, held); s != Status::Ok) return s;
@@ -357,13 +353,14 @@ Status DeadReckoningReceiver::showInterpolated(double renderTime, ReceivedPose& 
             // Source does; for sparse updates of a turning vehicle it follows the model's arc
             // instead of the chord. No Hermite curve through the velocities: it would
             // overshoot on noisy updates.
-            const double span = to.timestamp - from.timestamp;
-            const double alpha = (renderTime - from.timestamp) / span;
-            DeadReckoningResult now, atTo;
+            Pose b;
+            DeadReckoningResult resultB;
+            if (Status s = extrapolate(to, to.timestamp, resultB, b, held); s != Status::Ok) return s;
+            const double alpha = (renderTime - from.timestamp) / (to.timestamp - from.timestamp);
+            DeadReckoningResult now;
             if (Status s = predictDeadReckoning(from.state, static_cast<float>(renderTime - from.timestamp), now);
                 s != Status::Ok)
                 return s;
-            if (Status s = predictDeadReckoning(from.state, static_cast<float>(span), atTo); s != Status::Ok) return s;
             const DQuat nowOrientation = toD(now.orientation);
             const DQuat atToOrientation = toD(atTo.orientation);
             const DVec3 nowVelocity = worldVelocity(from.state.algorithm, nowOrientation, toD(now.velocity));
@@ -450,7 +447,8 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
         mBuffer[(mBufferStart + i) % kBufferCapacity] = mBuffer[(mBufferStart + i - 1) % kBufferCapacity];
     mBuffer[(mBufferStart + index) % kBufferCapacity] = Snapshot{timestamp, state};
     ++mBufferCount;
-    const bool teleport = index > 0 && isTeleport(buffered(index - 1), buffered(index));
+    DeadReckoningResult predicted;
+    const bool teleport = index > 0 && isTeleport(buffered(index - 1), buffered(index), predicted);
     if (teleport) {
         ++mCounters.teleports;
         ++mCounters.snaps;
@@ -610,6 +608,43 @@ constexpr double kPiOver2Head = 1.57079632673412561417e+00;
 constexpr double kPiOver2Tail = 6.07710050650619224932e-11;
 constexpr double kReductionLimit = 823549.6;  // 2^19 pi/2: k stays below 2^20
 
+// Cephes sinf/cosf minimax polynomials of r in [-pi/4, pi/4] (about 1 ulp in float):
+// sin r = r + r sinPoly, cos r = c.
+inline void sinCosPolynomials(float r, float& sinPoly, float& sine, float& cosine) {
+    const float z = r * r;
+    sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
+    sine = r + r * sinPoly;
+    cosine = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z - 0.5f * z +
+             1.0f;
+}
+
+// sin, cos and sin(h)/h of 0 <= h < kReductionLimit: the Cody-Waite reduction, then the
+// quadrant by arithmetic, not a switch, so that loops over it vectorise.
+inline void sinCosReduced(double h, float& sine, float& cosine, float& sinc) {
+    const auto k = static_cast<std::int32_t>(h * kTwoOverPi + 0.5);
+    const double kd = static_cast<double>(k);
+    const auto r = static_cast<float>((h - kd * kPiOver2Head) - kd * kPiOver2Tail);
+    float sinPoly, s, c;
+    sinCosPolynomials(r, sinPoly, s, c);
+    const bool odd = (k & 1) != 0;
+    const float sineSign = (k & 2) != 0 ? -1.0f : 1.0f;
+    const float cosineSign = ((k + 1) & 2) != 0 ? -1.0f : 1.0f;
+    sine = (odd ? c : s) * sineSign;
+    cosine = (odd ? s : c) * cosineSign;
+    // k = 0: h = r and sin(r)/r = 1 + the polynomial, exact at 0; otherwise h >= pi/4.
+    const float hf = k == 0 ? 1.0f : static_cast<float>(h);
+    sinc = k == 0 ? 1.0f + sinPoly : sine / hf;
+}
+
+// The same for h * kTwoOverPi + 0.5 < 1 (k = 0, h < pi/4 about): then the reduction is
+// exact (r = h rounded to float) and the results are sinCosReduced's bit for bit, without
+// its double arithmetic and quadrant selection.
+inline void sinCosFirstQuadrant(double h, float& sine, float& cosine, float& sinc) {
+    float sinPoly;
+    sinCosPolynomials(static_cast<float>(h), sinPoly, sine, cosine);
+    sinc = 1.0f + sinPoly;
+}
+
 SinCos sinCosHalfAngle(double h) {
     SinCos out;
     if (!(h < kReductionLimit)) {
@@ -620,35 +655,60 @@ SinCos sinCosHalfAngle(double h) {
         out.sinc = static_cast<float>(std::sin(h) / h);
         return out;
     }
+    // sinCosReduced's results, with a switch and a branch: cheaper where nothing vectorises.
     const auto k = static_cast<std::int32_t>(h * kTwoOverPi + 0.5);
     const double kd = static_cast<double>(k);
     const auto r = static_cast<float>((h - kd * kPiOver2Head) - kd * kPiOver2Tail);
-    const float z = r * r;
-    // Cephes sinf/cosf minimax polynomials on [-pi/4, pi/4] (about 1 ulp in float).
-    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
-    const float s = r + r * sinPoly;
-    const float c = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
-                    0.5f * z + 1.0f;
+    float sinPoly, s, c;
+    sinCosPolynomials(r, sinPoly, s, c);
     switch (k & 3) {
         case 0: out.sine = s; out.cosine = c; break;
         case 1: out.sine = c; out.cosine = -s; break;
         case 2: out.sine = -s; out.cosine = -c; break;
         default: out.sine = -c; out.cosine = s; break;
     }
-    // k = 0: h = r and sin(r)/r = 1 + the polynomial, exact at 0; otherwise h >= pi/4.
     out.sinc = k == 0 ? 1.0f + sinPoly : out.sine / static_cast<float>(h);
     return out;
+}
+
+// The receiver's age of an update stamped `timestamp` (>= 0, at most `limit`), clamped in
+// double and rounded to float once; branch-free.
+inline float frameAge(double time, double timestamp, double limit) {
+    double age = time - timestamp;
+    age = age > 0.0 ? age : 0.0;
+    age = age < limit ? age : limit;
+    return static_cast<float>(age);
+}
+
+// The orientation q exp(w t) = A cos h + B sin h (A = q, B = q (0, u)), then one Newton step
+// towards unit length (1/sqrt(n2) ~ (3 - n2) / 2 for n2 = 1 + O(1e-7): error O(1e-14), no
+// sqrt). Plain float arithmetic on values, so that loops over it vectorise.
+inline Quat turnedOrientation(const Quat& a, const Quat& b, float cosine, float sine) {
+    const float w = a.w * cosine + b.w * sine;
+    const float x = a.x * cosine + b.x * sine;
+    const float y = a.y * cosine + b.y * sine;
+    const float z = a.z * cosine + b.z * sine;
+    const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
+    Quat o;
+    o.w = w * f;
+    o.x = x * f;
+    o.y = y * f;
+    o.z = z * f;
+    return o;
+}
+
+// The Taylor series of (x - sin x) / x^3 in z = x^2 (the first omitted term, x^12 / 15!, is
+// below 3e-9 at x = 2).
+inline float xMinusSinSeriesF(float z) {
+    return 1.0f / 6.0f -
+           z * (1.0f / 120.0f - z * (1.0f / 5040.0f - z * (1.0f / 362880.0f - z * (1.0f / 39916800.0f - z / 6227020800.0f))));
 }
 
 // (x - sin x) / x^3 for x >= 0 in float, with sin x given: Taylor series below 2 (the direct
 // form cancels there; the first omitted term, x^12 / 15!, is below 3e-9 at 2), direct above.
 float xMinusSinOverCubeF(float x, float sinX) {
     const float z = x * x;
-    const float series =
-        1.0f / 6.0f -
-        z * (1.0f / 120.0f -
-             z * (1.0f / 5040.0f - z * (1.0f / 362880.0f - z * (1.0f / 39916800.0f - z / 6227020800.0f))));
-    if (x < 2.0f) return series;
+    if (x < 2.0f) return xMinusSinSeriesF(z);
     return (x - sinX) / (z * x);
 }
 
@@ -712,19 +772,15 @@ bool detail::PreparedAccess::extrapolateOne(const PreparedDeadReckoning& e, doub
         result.orientation = e.mOrientation;
         return true;
     }
-    // The receiver's age: clamped in double, rounded to float once.
-    double age = time - e.mTimestamp;
-    age = age > 0.0 ? age : 0.0;
-    age = age < limit ? age : limit;
-    const double t = static_cast<double>(static_cast<float>(age));
+    const double t = frameAge(time, e.mTimestamp, limit);
 
     const DVec3 p = toD(e.mPosition);
     const DVec3 v = toD(e.mVelocity);
     const DVec3 a = toD(e.mAcceleration);
     const SinCos sc = sinCosHalfAngle(e.mHalfRate * t);
 
-    // Orientation A cos h + B sin h, then one Newton step towards unit length
-    // (1/sqrt(n2) ~ (3 - n2) / 2 for n2 = 1 + O(1e-7): error O(1e-14), no sqrt).
+    // turnedOrientation's operations, written out: through the helper this scalar path measured
+    // 12% slower (bench_replication's Prepared), the vectorised passes the same.
     Quat o;
     o.w = e.mOrientation.w * sc.cosine + e.mAxisTerm.w * sc.sine;
     o.x = e.mOrientation.x * sc.cosine + e.mAxisTerm.x * sc.sine;
@@ -794,48 +850,53 @@ namespace {
 constexpr std::uint32_t kNoSlot = 0xffffffffu;
 constexpr std::size_t kChunk = 256;  // entities per vectorised pass
 
-// sinCosHalfAngle's float part for a reduced h < kReductionLimit, branch-free so that loops
-// over it vectorise (the quadrant by arithmetic, not a switch). Same results.
-inline void sinCosReduced(double h, float& sine, float& cosine, float& sinc) {
-    const auto k = static_cast<std::int32_t>(h * kTwoOverPi + 0.5);
-    const double kd = static_cast<double>(k);
-    const auto r = static_cast<float>((h - kd * kPiOver2Head) - kd * kPiOver2Tail);
-    const float z = r * r;
-    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
-    const float s = r + r * sinPoly;
-    const float c = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
-                    0.5f * z + 1.0f;
-    const bool odd = (k & 1) != 0;
-    const float sineSign = (k & 2) != 0 ? -1.0f : 1.0f;
-    const float cosineSign = ((k + 1) & 2) != 0 ? -1.0f : 1.0f;
-    sine = (odd ? c : s) * sineSign;
-    cosine = (odd ? s : c) * cosineSign;
-    const float hf = k == 0 ? 1.0f : static_cast<float>(h);
-    sinc = k == 0 ? 1.0f + sinPoly : sine / hf;
-}
-
-// The same for h * kTwoOverPi + 0.5 < 1 (k = 0, h < pi/4 about): then the reduction is
-// exact (r = h rounded to float) and the results are sinCosReduced's bit for bit, without
-// its double arithmetic and quadrant selection.
-inline void sinCosFirstQuadrant(double h, float& sine, float& cosine, float& sinc) {
-    const auto r = static_cast<float>(h);
-    const float z = r * r;
-    const float sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
-    sine = r + r * sinPoly;
-    cosine = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
-             0.5f * z + 1.0f;
-    sinc = 1.0f + sinPoly;
-}
-
 inline bool finiteF(float x) { return x - x == 0.0f; }
 inline bool finiteR(Real x) { return x - x == Real(0); }
 
-// The receiver's age of an update stamped `timestamp`, as extrapolateOne computes it.
-inline float clampedAge(double time, double timestamp, double limit) {
-    double age = time - timestamp;
-    age = age > 0.0 ? age : 0.0;
-    age = age < limit ? age : limit;
-    return static_cast<float>(age);
+// Entity i's quaternion from a batch's w, x, y, z columns.
+template <class Columns>
+inline Quat quatAt(const Columns& c, std::size_t i) {
+    Quat q;
+    q.w = c.w[i];
+    q.x = c.x[i];
+    q.y = c.y[i];
+    q.z = c.z[i];
+    return q;
+}
+
+// A chunk's ages and half angles h = |w| t / 2 (pass 2 and pass 3): `reduce` when an angle is
+// past the first quadrant (sinCosReduced needed), `beyond` when one is past kReductionLimit
+// (redone by extrapolateOne).
+struct HalfAngleChunk {
+    std::int32_t reduce;
+    std::int32_t beyond;
+};
+inline HalfAngleChunk halfAngles(const double* timestamp, const double* halfRate, std::size_t m, double time,
+                                 double limit, float* age, double* h) {
+    // 64-bit flags: a double-wide lane type, so that the loop vectorises (and `age` a float
+    // array beside the doubles, for the same reason).
+    std::int64_t reduce = 0;
+    std::int64_t beyond = 0;
+    for (std::size_t j = 0; j < m; ++j) {
+        age[j] = frameAge(time, timestamp[j], limit);
+        h[j] = halfRate[j] * static_cast<double>(age[j]);
+        reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
+        beyond |= static_cast<std::int64_t>(!(h[j] < kReductionLimit));
+    }
+    return {static_cast<std::int32_t>(reduce), static_cast<std::int32_t>(beyond)};
+}
+
+// Calls body(sinCos, firstQuadrant) with sinCosReduced and std::false_type, or, when no angle
+// needs the reduction, sinCosFirstQuadrant and std::true_type (the same bits, cheaper). Lambdas,
+// not function pointers, so that the loops inline and vectorise.
+template <class Body>
+inline void withSinCos(std::int32_t reduce, Body&& body) {
+    if (reduce != 0)
+        body([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); },
+             std::false_type{});
+    else
+        body([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); },
+             std::true_type{});
 }
 
 // Puts `entity` in or out of `group`; `fill(slot, update)` writes a member's columns at `slot`
@@ -924,18 +985,8 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
     put(mPosition, entity, u.mPosition);
     put(mVelocity, entity, u.mVelocity);
     put(mAcceleration, entity, u.mAcceleration);
-    // What the turning formula gives at h = 0 (cos 1, sin 0; B is finite): A times one Newton
-    // step towards unit length.
-    {
-        const Quat& a = u.mOrientation;
-        const float f = 1.5f - 0.5f * (a.w * a.w + a.x * a.x + a.y * a.y + a.z * a.z);
-        Quat fixed;
-        fixed.w = a.w * f;
-        fixed.x = a.x * f;
-        fixed.y = a.y * f;
-        fixed.z = a.z * f;
-        putQuat(mFixedOrientation, entity, fixed);
-    }
+    // What the turning formula gives at h = 0: the orientation of an entity that does not turn.
+    putQuat(mFixedOrientation, entity, turnedOrientation(u.mOrientation, u.mAxisTerm, 1.0f, 0.0f));
     mTimestamp[entity] = u.mTimestamp;
     mAgeScale[entity] = u.mKernel == kKernelStatic ? 0.0f : 1.0f;
 
@@ -980,7 +1031,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
         alignas(16) float vx[kChunk], vy[kChunk], vz[kChunk];
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t i = begin + j;
-            const float tf = clampedAge(time, mTimestamp[i], limit) * mAgeScale[i];
+            const float tf = frameAge(time, mTimestamp[i], limit) * mAgeScale[i];
             const Real t = static_cast<Real>(tf);
             const Real halfT2 = Real(0.5) * t * t;
             px[j] = mPosition.x[i] + (Real(mVelocity.x[i]) * t + Real(mAcceleration.x[i]) * halfT2);
@@ -1004,46 +1055,26 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
         }
     }
 
-    // Pass 2, the turning world-axis entities (dense): the orientation A cos h + B sin h, then one
-    // Newton step towards unit length. Chunks whose angles are all in the first quadrant (the
-    // usual case: |w| t / 2 < pi/4) skip the range reduction; the results are the same.
+    // Pass 2, the turning world-axis entities (dense): the orientation (turnedOrientation).
     for (std::size_t begin = 0; begin < mTurning.count; begin += kChunk) {
         const std::size_t m = std::min(kChunk, mTurning.count - begin);
         alignas(16) double h[kChunk];
-        alignas(16) float age[kChunk];  // (a float array too, so that the loop vectorises)
+        alignas(16) float age[kChunk];
         alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
-        // 64-bit flags: a double-wide lane type, so that the loop vectorises.
-        std::int64_t reduce = 0;
-        std::int64_t beyond = 0;
-        for (std::size_t j = 0; j < m; ++j) {
-            const std::size_t s = begin + j;
-            age[j] = clampedAge(time, mTurnTimestamp[s], limit);
-            h[j] = mTurnHalfRate[s] * static_cast<double>(age[j]);
-            reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
-            beyond |= static_cast<std::int64_t>(!(h[j] < kReductionLimit));
-        }
-        unusual |= static_cast<std::int32_t>(beyond);
-        auto turn = [&](auto sinCos) {
+        const HalfAngleChunk chunk = halfAngles(&mTurnTimestamp[begin], &mTurnHalfRate[begin], m, time, limit, age, h);
+        unusual |= chunk.beyond;
+        withSinCos(chunk.reduce, [&](auto sinCos, auto) {
             for (std::size_t j = 0; j < m; ++j) {
                 const std::size_t s = begin + j;
                 float sine, cosine, sinc;
                 sinCos(h[j] * static_cast<double>(h[j] < kReductionLimit), sine, cosine, sinc);
-                const float w = mTurnOrientation.w[s] * cosine + mTurnAxisTerm.w[s] * sine;
-                const float x = mTurnOrientation.x[s] * cosine + mTurnAxisTerm.x[s] * sine;
-                const float y = mTurnOrientation.y[s] * cosine + mTurnAxisTerm.y[s] * sine;
-                const float z = mTurnOrientation.z[s] * cosine + mTurnAxisTerm.z[s] * sine;
-                const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
-                ow[j] = w * f;
-                ox[j] = x * f;
-                oy[j] = y * f;
-                oz[j] = z * f;
+                const Quat o = turnedOrientation(quatAt(mTurnOrientation, s), quatAt(mTurnAxisTerm, s), cosine, sine);
+                ow[j] = o.w;
+                ox[j] = o.x;
+                oy[j] = o.y;
+                oz[j] = o.z;
             }
-        };
-        // (Lambdas, not function pointers, so that the loop is inlined and vectorised.)
-        if (reduce != 0)
-            turn([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); });
-        else
-            turn([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); });
+        });
         for (std::size_t j = 0; j < m; ++j) {
             Quat& o = out[mTurning.entity[begin + j]].orientation;
             o.w = ow[j];
@@ -1055,23 +1086,18 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
 
     // Pass 3, the body-axis entities (dense): positions from the integrals (see
     // extrapolateOne), in float, rotated to world axes by the orientation; and the
-    // orientation itself.
+    // orientation itself, from the same sine and cosine.
     for (std::size_t begin = 0; begin < mBody.count; begin += kChunk) {
         const std::size_t m = std::min(kChunk, mBody.count - begin);
         alignas(16) double h[kChunk];
         alignas(16) float age[kChunk];
         alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
         alignas(16) float ow[kChunk], ox[kChunk], oy[kChunk], oz[kChunk];
-        std::int64_t reduce = 0;  // 64 bits, as in pass 2
-        for (std::size_t j = 0; j < m; ++j) {
-            const std::size_t s = begin + j;
-            age[j] = clampedAge(time, mBodyTimestamp[s], limit);
-            h[j] = mBodyHalfRate[s] * static_cast<double>(age[j]);
-            reduce |= static_cast<std::int64_t>(!(h[j] * kTwoOverPi + 0.5 < 1.0));
-        }
+        const HalfAngleChunk chunk = halfAngles(&mBodyTimestamp[begin], &mBodyHalfRate[begin], m, time, limit, age, h);
+        unusual |= chunk.beyond;
         // firstQuadrant: every h < pi/4, so x = 2h < 2 and e(x) is the series (same bits,
         // without the division of the direct form).
-        auto integrate = [&](auto sinCos, auto firstQuadrant) {
+        withSinCos(chunk.reduce, [&](auto sinCos, auto firstQuadrant) {
             std::int32_t flags = 0;  // a local, so that the reduction vectorises
             for (std::size_t j = 0; j < m; ++j) {
                 const std::size_t s = begin + j;
@@ -1082,11 +1108,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                 const auto xx = static_cast<float>(2.0 * h[j]);
                 const float c1 = 0.5f * sincHalf * sincHalf;
                 const float zz = xx * xx;
-                const float series =
-                    1.0f / 6.0f -
-                    zz * (1.0f / 120.0f -
-                          zz * (1.0f / 5040.0f -
-                                zz * (1.0f / 362880.0f - zz * (1.0f / 39916800.0f - zz / 6227020800.0f))));
+                const float series = xMinusSinSeriesF(zz);
                 float ex = series;
                 if constexpr (!decltype(firstQuadrant)::value) {
                     const float direct = (xx - 2.0f * sine * cosine) / (xx < 2.0f ? 1.0f : zz * xx);
@@ -1103,33 +1125,20 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                 const float dy = cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
                 const float dz = cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
                 // q d q^-1 = d + w c + q.xyz x c with c = 2 q.xyz x d.
-                const float qw = mBodyOrientation.w[s], qx = mBodyOrientation.x[s], qy = mBodyOrientation.y[s],
-                            qz = mBodyOrientation.z[s];
-                const float cx = 2.0f * (qy * dz - qz * dy), cy = 2.0f * (qz * dx - qx * dz), cz = 2.0f * (qx * dy - qy * dx);
-                px[j] = mBodyPosition.x[s] + Real(dx + qw * cx + (qy * cz - qz * cy));
-                py[j] = mBodyPosition.y[s] + Real(dy + qw * cy + (qz * cx - qx * cz));
-                pz[j] = mBodyPosition.z[s] + Real(dz + qw * cz + (qx * cy - qy * cx));
-                flags |= static_cast<std::int32_t>(!(h[j] < kReductionLimit)) |
-                         static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j]));
-                // The orientation, as pass 2 computes it for the world-axis entities.
-                const float w = qw * cosine + mBodyAxisTerm.w[s] * sine;
-                const float x = qx * cosine + mBodyAxisTerm.x[s] * sine;
-                const float y = qy * cosine + mBodyAxisTerm.y[s] * sine;
-                const float z = qz * cosine + mBodyAxisTerm.z[s] * sine;
-                const float f = 1.5f - 0.5f * (w * w + x * x + y * y + z * z);
-                ow[j] = w * f;
-                ox[j] = x * f;
-                oy[j] = y * f;
-                oz[j] = z * f;
+                const Quat q = quatAt(mBodyOrientation, s);
+                const float cx = 2.0f * (q.y * dz - q.z * dy), cy = 2.0f * (q.z * dx - q.x * dz), cz = 2.0f * (q.x * dy - q.y * dx);
+                px[j] = mBodyPosition.x[s] + Real(dx + q.w * cx + (q.y * cz - q.z * cy));
+                py[j] = mBodyPosition.y[s] + Real(dy + q.w * cy + (q.z * cx - q.x * cz));
+                pz[j] = mBodyPosition.z[s] + Real(dz + q.w * cz + (q.x * cy - q.y * cx));
+                flags |= static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j]));
+                const Quat o = turnedOrientation(q, quatAt(mBodyAxisTerm, s), cosine, sine);
+                ow[j] = o.w;
+                ox[j] = o.x;
+                oy[j] = o.y;
+                oz[j] = o.z;
             }
             unusual |= flags;
-        };
-        if (reduce != 0)
-            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosReduced(a, sine, cosine, sinc); },
-                      std::false_type{});
-        else
-            integrate([](double a, float& sine, float& cosine, float& sinc) { sinCosFirstQuadrant(a, sine, cosine, sinc); },
-                      std::true_type{});
+        });
         for (std::size_t j = 0; j < m; ++j) {
             DeadReckoningResult& r = out[mBody.entity[begin + j]];
             r.position = RVec3(px[j], py[j], pz[j]);
@@ -1145,7 +1154,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
         for (std::size_t i = 0; i < n; ++i) {
             const PreparedDeadReckoning& e = mPrepared[i];
             const DeadReckoningResult& r = out[i];
-            const double h = e.mHalfRate * static_cast<double>(clampedAge(time, e.mTimestamp, limit));
+            const double h = e.mHalfRate * static_cast<double>(frameAge(time, e.mTimestamp, limit));
             const bool beyondReduction = e.mHalfRate > 0.0 && !(h < kReductionLimit);
             if (beyondReduction || !isFinite(r.position) || !isFinite(r.velocity))
                 if (!PreparedAccess::extrapolateOne(e, time, limit, out[i])) ++refused;

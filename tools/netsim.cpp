@@ -745,16 +745,15 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
                 // Every tick: the thresholds' decision is ignored (the sender still runs, so a
                 // bad state is refused the same way).
                 ++modelResult.sentSnapshot;
-            } else if (!decision.send()) {
-                continue;
+            } else {
+                if (!decision.send()) continue;
+                const auto counts = [&](std::uint8_t reason) { return (decision.reasons & reason) != 0 ? 1u : 0u; };
+                modelResult.sentFirst += counts(foresight::SendReasonFirst);
+                modelResult.sentPosition += counts(foresight::SendReasonPosition);
+                modelResult.sentOrientation += counts(foresight::SendReasonOrientation);
+                modelResult.sentHeartbeat += counts(foresight::SendReasonHeartbeat);
             }
             ++modelResult.updates;
-            if (!settings.snapshots) {
-            modelResult.sentFirst += (decision.reasons & foresight::SendReasonFirst) != 0 ? 1 : 0;
-            modelResult.sentPosition += (decision.reasons & foresight::SendReasonPosition) != 0 ? 1 : 0;
-            modelResult.sentOrientation += (decision.reasons & foresight::SendReasonOrientation) != 0 ? 1 : 0;
-            modelResult.sentHeartbeat += (decision.reasons & foresight::SendReasonHeartbeat) != 0 ? 1 : 0;
-            }
             double delay = 0;
             if (!link.transmit(delay)) {
                 ++modelResult.lost;

@@ -298,7 +298,9 @@ private:
                        bool& held) const;
     Status showExtrapolated(double time, ReceivedPose& out, Pose& shown) const;
     Status showInterpolated(double renderTime, ReceivedPose& out) const;
-    bool isTeleport(const Snapshot& from, const Snapshot& to) const;
+    // Whether `to` is further than teleportDistance from `from`'s prediction at its timestamp
+    // (true when that prediction overflows); `predicted` receives the prediction.
+    bool isTeleport(const Snapshot& from, const Snapshot& to, DeadReckoningResult& predicted) const;
     UpdateOutcome receiveInterpolated(double timestamp, const DeadReckoningState& state);
     void applySwitchOffset(double renderTime, ReceivedPose& pose) const;
     const Snapshot& buffered(std::size_t i) const { return mBuffer[(mBufferStart + i) % kBufferCapacity]; }
