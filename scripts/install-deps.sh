@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages foresight needs to build, test and benchmark, when missing, then
-# the HTML viewer's npm packages (viewer/node_modules, from viewer/package-lock.json).
+# the npm packages of the HTML viewer (viewer/node_modules) and of the engine harnesses
+# (tests/engines/node_modules: Jolt, PhysX, Rapier and ammo.js builds, each from its lock file).
 #
 # Idempotent and silent when everything is present: it only asks dpkg which packages are
 # missing, and runs `apt-get update && apt-get install` for those alone (as root, or through
@@ -15,7 +16,9 @@ if [[ "${FORESIGHT_SKIP_DEPS:-0}" == "1" ]]; then
 fi
 
 # Build tools, then libraries, then the HTML viewer's: Node.js and npm to bundle it (only when
-# `node`/`npm` are not already on PATH, e.g. from nodesource) and chromium for its browser tests.
+# `node`/`npm` are not already on PATH, e.g. from nodesource) and chromium for its browser tests;
+# then the real engines the engine-matched predictions are tested against: headless Godot 3 and
+# Box2D (Bullet is already among the libraries; the wasm engines come from npm).
 # Keep in sync with CONTRIBUTING.md.
 packages=(
     cmake ninja-build g++ pkg-config
@@ -23,26 +26,32 @@ packages=(
     libembree-dev libbullet-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     chromium
+    godot3-server libbox2d-dev
 )
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
 if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
-# viewer/node_modules (npm ci), when missing or older than viewer/package-lock.json.
-viewer_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/viewer"
-install_viewer_modules() {
-    if [[ ! -f "$viewer_dir/package-lock.json" ]]; then
+# DIR/node_modules (npm ci), when missing or older than DIR/package-lock.json.
+root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+install_npm_modules() {
+    local dir=$1
+    if [[ ! -f "$dir/package-lock.json" ]]; then
         return 0
     fi
-    if [[ -f "$viewer_dir/node_modules/.package-lock.json" &&
-        ! "$viewer_dir/package-lock.json" -nt "$viewer_dir/node_modules/.package-lock.json" ]]; then
+    if [[ -f "$dir/node_modules/.package-lock.json" &&
+        ! "$dir/package-lock.json" -nt "$dir/node_modules/.package-lock.json" ]]; then
         return 0
     fi
-    echo "install-deps: installing the viewer's npm packages (npm ci in viewer/)"
-    if ! (cd "$viewer_dir" &&
+    echo "install-deps: installing npm packages (npm ci in ${dir#"$root_dir"/})"
+    if ! (cd "$dir" &&
         PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error >/dev/null); then
-        echo "install-deps: npm ci failed in $viewer_dir (is the npm registry reachable?)" >&2
+        echo "install-deps: npm ci failed in $dir (is the npm registry reachable?)" >&2
         exit 1
     fi
+}
+install_viewer_modules() {
+    install_npm_modules "$root_dir/viewer"
+    install_npm_modules "$root_dir/tests/engines"
 }
 
 if ! command -v dpkg-query >/dev/null 2>&1; then

@@ -1,5 +1,6 @@
 #include <foresight/projectile.h>
 
+#include "engine_internal.h"
 #include "internal.h"
 
 #include <algorithm>
@@ -10,24 +11,7 @@ using namespace detail;
 
 namespace {
 
-// Records trajectory points into the caller's storage; counts what did not fit.
-struct Recorder {
-    std::span<TrajectoryPoint> storage;
-    std::size_t size = 0;
-    std::size_t needed = 0;
-
-    void add(double time, TrajectoryEvent event, const DVec3& position, const DVec3& velocity,
-             const DVec3& normal = DVec3(0.0)) {
-        ++needed;
-        if (size >= storage.size()) return;
-        TrajectoryPoint& point = storage[size++];
-        point.time = static_cast<float>(time);
-        point.event = event;
-        point.position = toR(position);
-        point.velocity = toF(velocity);
-        point.normal = toF(normal);
-    }
-};
+using Recorder = TrajectoryRecorder;
 
 // A projectile's state during a prediction.
 struct Body {
@@ -601,7 +585,14 @@ Status validateProjectileSettings(const ProjectileSettings& settings) {
         return Status::InvalidRestitution;
     if (!(settings.friction >= 0.0f)) return Status::InvalidFriction;
     if (!(settings.radius >= 0.0f)) return Status::InvalidRadius;
+    if (settings.method == ProjectileMethod::Engine) return validateEngineProfile(settings.engine);
+    if (static_cast<unsigned>(settings.method) > static_cast<unsigned>(ProjectileMethod::Engine))
+        return Status::InvalidSetting;
     return Status::Ok;
+}
+
+float settingsStep(const ProjectileSettings& settings) {
+    return settings.method == ProjectileMethod::Engine ? settings.engine.timestep : settings.step;
 }
 
 std::uint64_t steppedStepCount(float time, float step) {
@@ -618,7 +609,7 @@ std::uint64_t steppedStepCount(float time, float step) {
 
 std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings,
                                std::size_t expectedEvents) {
-    const std::uint64_t steps = steppedStepCount(time, settings.step);
+    const std::uint64_t steps = steppedStepCount(time, settingsStep(settings));
     const std::uint64_t capped = std::min<std::uint64_t>(steps, settings.maxSteps);
     return static_cast<std::size_t>(capped) + 3 + 2 * expectedEvents;
 }
@@ -630,7 +621,7 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
         return Status::NonFiniteInput;
     if (Status s = validateProjectileSettings(settings); s != Status::Ok) return s;
     if (time < 0.0f) return Status::NegativeTime;
-    const std::uint64_t steps = steppedStepCount(time, settings.step);
+    const std::uint64_t steps = steppedStepCount(time, settingsStep(settings));
     if (steps > settings.maxSteps) return Status::TooManySteps;
 
     static const EmptyWorld emptyWorld;
@@ -638,7 +629,10 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     Recorder recorder{trajectory};
     ProjectileResult result;
     Status status;
-    if (settings.method == ProjectileMethod::Stepped) {
+    if (settings.method == ProjectileMethod::Engine) {
+        status = runEngineProjectile(toD(position), toD(velocity), steps, settings, collisionWorld, recorder,
+                                     result);
+    } else if (settings.method == ProjectileMethod::Stepped) {
         status = runStepped(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
     } else {
         ExactRun run(settings, collisionWorld, recorder, result);

@@ -20,10 +20,18 @@
 ///   micrometre), the projectile slides on it (constant tangential gravity, Coulomb friction)
 ///   and comes to rest when static friction holds it: reported as `atRest`.
 ///
+/// - Engine: the flight a game's physics engine will compute (Jolt, PhysX, Rapier, Bullet,
+///   Godot 3, Box2D or a custom profile: settings.engine, see engine_profile.h): its fixed steps
+///   with its own damping, sub-steps and first-step rule, its contacts (speculative or
+///   penetrating), bounce threshold, position correction and friction on a spinning sphere.
+///   `ceil(time / engine.timestep)` steps; `step` is not used. One cast per step, as the
+///   article's loop.
+///
 /// No allocation: the trajectory is written into caller-provided storage. Computation runs in
 /// double; the float inputs `time`, `step` and `gravity` are taken at the decimal value they were
 /// written as (0.02f means 0.02 s, so step 5 is at 0.1 s, not 0.099999994 s).
 
+#include <foresight/engine_profile.h>
 #include <foresight/world.h>
 
 #include <cstddef>
@@ -36,13 +44,14 @@ FORESIGHT_NAMESPACE_BEGIN
 enum class ProjectileMethod : std::uint8_t {
     Exact,   ///< event-driven, exact impact times, contact handling (default).
     Stepped, ///< the reference article's fixed-step loop, faithfully.
+    Engine,  ///< step for step as a physics engine computes it (ProjectileSettings::engine).
 };
 
 /// What a TrajectoryPoint marks.
 enum class TrajectoryEvent : std::uint8_t {
     Start,  ///< the initial state (t = 0).
     Step,   ///< the state at a step boundary (Exact: a multiple of `step`).
-    Bounce, ///< an impact (Exact: at its exact time; Stepped: the step that hit). Has a normal.
+    Bounce, ///< an impact (Exact: at its exact time; Stepped, Engine: the step that hit). Has a normal.
     Rest,   ///< the projectile came to rest (Exact only); it stays there until the end.
     Hit,    ///< the prediction stopped at this impact (maxBounces reached). Has a normal.
     End,    ///< the final state at the prediction time.
@@ -79,10 +88,19 @@ struct ProjectileSettings {
     std::uint32_t maxSteps = 1u << 20;
     /// Work cap (Exact): impacts plus contact changes handled before TooManyEvents.
     std::uint32_t maxEvents = 1u << 16;
+    /// The engine to follow (method Engine only): its timestep replaces `step`. The projectile's
+    /// `restitution` and `friction` are the contact's values after the engine's combine rule
+    /// (a world may report a shape's own material, see CastHit; then the rule combines them).
+    EngineProfile engine = engineProfile(PhysicsEngine::Jolt);
 };
 
+/// The time step a prediction with these settings runs: `engine.timestep` for the Engine method,
+/// `step` otherwise [Units: s].
+float settingsStep(const ProjectileSettings& settings);
+
 /// Checks settings as predictProjectile does: Ok, NonFiniteInput, InvalidStep,
-/// InvalidRestitution, InvalidFriction or InvalidRadius.
+/// InvalidRestitution, InvalidFriction, InvalidRadius, or (method Engine) what
+/// validateEngineProfile refuses.
 Status validateProjectileSettings(const ProjectileSettings& settings);
 
 /// Number of steps the Stepped method runs for `time`: `ceil(time / step)` on the decimal values

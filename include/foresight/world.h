@@ -23,6 +23,12 @@ struct CastHit {
     RVec3 position{0};     ///< the cast's origin point (sphere centre) at the hit [Units: m].
                            ///< The surface contact is `position - normal * radius`.
     Vec3 normal{0, 1, 0};  ///< unit surface normal at the hit, facing against the motion.
+    /// The surface's own coefficient of restitution, or negative when the world has none (then
+    /// the projectile's value is the contact's). Used by ProjectileMethod::Engine, which combines
+    /// it with the projectile's by the engine's rule [Limit: < 0, or 0 .. 1].
+    float restitution = -1.0f;
+    /// The surface's own friction coefficient, or negative when the world has none [Limit: < 0, or >= 0].
+    float friction = -1.0f;
 };
 
 /// What a world must answer. Rules every implementation should follow (the built-in one does):

@@ -1,0 +1,232 @@
+// Engine profiles (engine_profile.h) and ProjectileMethod::Engine: the closed form of each
+// profile's free flight against a plain step loop written here from the engines' documented
+// update rules, validation, combine rules, and contact behaviour on a floor. The comparison with
+// the real engines is tests/engine_oracle_test.cpp.
+
+#include <foresight/engine_profile.h>
+#include <foresight/projectile.h>
+#include <foresight/static_world.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace foresight;
+
+namespace {
+
+struct State {
+    long double p[3], v[3];
+};
+
+// The engines' free-flight step, written out per engine as each documents it (not through the
+// library's recurrence), in long double.
+State stepLoop(PhysicsEngine engine, float timestep, float damping, long double p0[3], long double v0[3],
+               long double g[3], int steps, int substeps = 1) {
+    State s{};
+    for (int i = 0; i < 3; ++i) {
+        s.p[i] = p0[i];
+        s.v[i] = v0[i];
+    }
+    const long double h = static_cast<long double>(timestep);
+    for (int k = 1; k <= steps; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            long double& v = s.v[i];
+            long double& p = s.p[i];
+            switch (engine) {
+            case PhysicsEngine::Jolt:
+            case PhysicsEngine::PhysX:
+                v = (v + g[i] * h) * std::max(0.0L, 1.0L - damping * h);
+                p += v * h;
+                break;
+            case PhysicsEngine::Rapier: {
+                const long double sub = h / substeps;
+                for (int j = 0; j < substeps; ++j) {
+                    v += g[i] * sub;
+                    p += v * sub;
+                }
+                v *= 1.0L / (1.0L + damping * h);
+                break;
+            }
+            case PhysicsEngine::Bullet:
+                v = v * std::pow(1.0L - std::min(1.0L, static_cast<long double>(damping)), h) + g[i] * h;
+                p += v * h;
+                break;
+            case PhysicsEngine::Godot3:
+                if (k == 1) {
+                    p += v * h;
+                } else {
+                    v = v * std::max(0.0L, 1.0L - damping * h) + g[i] * h;
+                    p += v * h;
+                }
+                break;
+            case PhysicsEngine::Godot3Bullet:
+                // The body's damping plus the project default 0.1.
+                if (k == 1) {
+                    v = v * (1.0L - (damping + 0.1L) * h);
+                } else {
+                    v = v * (1.0L - (damping + 0.1L) * h) + g[i] * h;
+                }
+                p += v * h;
+                break;
+            case PhysicsEngine::Box2D:
+                if (i == 2) {  // motion in the x-y plane
+                    v = 0.0L;
+                    break;
+                }
+                v = (v + g[i] * h) / (1.0L + damping * h);
+                p += v * h;
+                break;
+            case PhysicsEngine::Custom:
+                break;
+            }
+        }
+    }
+    return s;
+}
+
+struct FlightCase {
+    PhysicsEngine engine;
+    float timestep;
+    float damping;
+    int steps;
+};
+
+}  // namespace
+
+TEST(EngineProfile, FreeFlightClosedFormMatchesSteppingEveryEngine) {
+    const FlightCase cases[] = {
+        {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.05f, 180},  {PhysicsEngine::Jolt, 1.0f / 30.0f, 1.5f, 90},
+        {PhysicsEngine::PhysX, 1.0f / 120.0f, 0.7f, 360}, {PhysicsEngine::Rapier, 1.0f / 60.0f, 0.0f, 180},
+        {PhysicsEngine::Rapier, 1.0f / 90.0f, 1.2f, 270}, {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.3f, 180},
+        {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.0f, 180}, {PhysicsEngine::Godot3, 1.0f / 60.0f, 0.1f, 180},
+        {PhysicsEngine::Godot3, 1.0f / 45.0f, 0.0f, 1},   {PhysicsEngine::Godot3Bullet, 1.0f / 60.0f, 0.0f, 180},
+        {PhysicsEngine::Box2D, 1.0f / 60.0f, 0.5f, 180},  {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.0f, 0},
+        {PhysicsEngine::Jolt, 1.0f / 60.0f, 1e-7f, 100000},
+    };
+    long double p0[3] = {1.0L, 1.5L, -2.0L}, v0[3] = {3.0L, 4.0L, 5.0L}, g[3] = {0.0L, -9.81L, 0.0L};
+    for (const FlightCase& c : cases) {
+        EngineProfile profile = engineProfile(c.engine);
+        profile.timestep = c.timestep;
+        profile.linearDamping = c.damping;
+        ASSERT_EQ(validateEngineProfile(profile), Status::Ok);
+        // The loop takes the float timestep as it is; the library its decimal value. Use steps
+        // whose float and decimal agree closely: the difference is below 1e-9 relative.
+        const State s = stepLoop(c.engine, c.timestep, c.damping, p0, v0, g, c.steps, 4);
+        const EngineFlightState f = engineFreeFlight(profile, RVec3(1.0f, 1.5f, -2.0f), Vec3(3, 4, 5),
+                                                     Vec3(0, -9.81f, 0), static_cast<std::uint64_t>(c.steps));
+        SCOPED_TRACE(engineName(c.engine));
+        SCOPED_TRACE(c.steps);
+        // Float output positions (up to ~1e5 m here) round at 2^-24 relative; the float
+        // timestep's decimal reading changes dt by < 3e-8 relative: over 1e5 steps that moves a
+        // position by under 1e-7 * |p| * 2.
+        const double scale = std::max(1.0, std::abs(static_cast<double>(s.p[1])));
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(f.position[i], static_cast<double>(s.p[i]), 4e-7 * scale) << "axis " << i;
+            EXPECT_NEAR(f.velocity[i], static_cast<double>(s.v[i]), 4e-7 * std::max(1.0, std::abs(double(s.v[i]))))
+                << "axis " << i;
+        }
+    }
+}
+
+TEST(EngineProfile, MeasuredFreeFallOfTheReferenceThrow) {
+    // Throw (0, 1.5, 0) at (3, 4, 5), 60 Hz, no damping, 3 s: the engines' float32 runs put y at
+    // -30.890 (Jolt, PhysX, Bullet), -30.706 (Rapier), -30.400 (GodotPhysics) and -28.003 (Godot
+    // with Bullet and its project damping 0.1). Measured by the harnesses in tests/engines; the
+    // float32 engines round to about 1e-3 m over 180 steps.
+    struct Expect {
+        PhysicsEngine engine;
+        float damping;
+        double y;
+    };
+    const Expect expects[] = {{PhysicsEngine::Jolt, 0.0f, -30.890}, {PhysicsEngine::PhysX, 0.0f, -30.890},
+                              {PhysicsEngine::Bullet, 0.0f, -30.890}, {PhysicsEngine::Rapier, 0.0f, -30.706},
+                              {PhysicsEngine::Godot3, 0.0f, -30.400}, {PhysicsEngine::Godot3Bullet, 0.0f, -28.003}};
+    for (const Expect& e : expects) {
+        EngineProfile profile = engineProfile(e.engine);
+        profile.linearDamping = e.damping;
+        const EngineFlightState f =
+            engineFreeFlight(profile, RVec3(0, 1.5f, 0), Vec3(3, 4, 5), Vec3(0, -9.81f, 0), 180);
+        EXPECT_NEAR(f.position.y, e.y, 2e-3) << engineName(e.engine);
+    }
+}
+
+TEST(EngineProfile, ValidationRefusesBadSettings) {
+    EngineProfile p = engineProfile(PhysicsEngine::Jolt);
+    EXPECT_EQ(validateEngineProfile(p), Status::Ok);
+    p.timestep = 0.0f;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidStep);
+    p.timestep = NAN;
+    EXPECT_EQ(validateEngineProfile(p), Status::NonFiniteInput);
+    p = engineProfile(PhysicsEngine::Rapier);
+    p.substeps = 0;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+    p.substeps = 65;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+    p = engineProfile(PhysicsEngine::Bullet);
+    p.linearDamping = -0.1f;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+    p = engineProfile(PhysicsEngine::PhysX);
+    p.restitutionThreshold = -1.0f;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+    p = engineProfile(PhysicsEngine::Box2D);
+    p.positionCorrection = 1.5f;
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+    p = engineProfile(PhysicsEngine::Godot3);
+    p.order = static_cast<DampingOrder>(7);
+    EXPECT_EQ(validateEngineProfile(p), Status::InvalidSetting);
+}
+
+TEST(EngineProfile, CombineRules) {
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::Average, 0.2f, 0.6f), 0.4f);
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::Min, 0.2f, 0.6f), 0.2f);
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::Max, 0.2f, 0.6f), 0.6f);
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::Multiply, 0.5f, 0.6f), 0.3f);
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::GeometricMean, 0.25f, 0.64f), 0.4f);
+    EXPECT_FLOAT_EQ(combineMaterial(CombineRule::SumClamped, 0.7f, 0.6f), 1.0f);
+}
+
+TEST(EngineProjectile, FreeFlightStepsAgreeWithTheClosedForm) {
+    for (PhysicsEngine engine : {PhysicsEngine::Jolt, PhysicsEngine::Rapier, PhysicsEngine::Godot3,
+                                 PhysicsEngine::Godot3Bullet, PhysicsEngine::Bullet}) {
+        ProjectileSettings settings;
+        settings.method = ProjectileMethod::Engine;
+        settings.engine = engineProfile(engine);
+        settings.engine.linearDamping = 0.3f;
+        std::vector<TrajectoryPoint> points(200);
+        ProjectileResult result;
+        ASSERT_EQ(predictProjectile(RVec3(0, 1.5f, 0), Vec3(3, 4, 5), 3.0f, settings, nullptr, points, result),
+                  Status::Ok);
+        ASSERT_EQ(result.trajectorySize, 181u);  // start + 180 steps
+        for (std::uint64_t k = 0; k <= 180; k += 30) {
+            const EngineFlightState f =
+                engineFreeFlight(settings.engine, RVec3(0, 1.5f, 0), Vec3(3, 4, 5), settings.gravity, k);
+            // Stepping in double against the closed form: rounding only (positions ~30 m).
+            EXPECT_NEAR(glm::length(glm::dvec3(points[k].position - f.position)), 0.0, 1e-5)
+                << engineName(engine) << " step " << k;
+        }
+        EXPECT_NEAR(result.time, 3.0f, 1e-6f);
+    }
+}
+
+TEST(EngineProjectile, RestsOnAFloorAndBouncesAboveTheThreshold) {
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(PhysicsEngine::Jolt);
+    settings.radius = 0.1f;
+    settings.restitution = 0.5f;
+    settings.friction = 0.0f;
+    std::vector<TrajectoryPoint> points(400);
+    ProjectileResult result;
+    ASSERT_EQ(predictProjectile(RVec3(0, 2.0f, 0), Vec3(1, 0, 0), 5.0f, settings, &world, points, result),
+              Status::Ok);
+    EXPECT_GE(result.bounces, 1u);
+    // Bounces below Jolt's 1 m/s threshold stop: the sphere ends on the floor (its slop 0.02 m
+    // is the deepest it may rest), sliding at the start speed times the damping.
+    EXPECT_NEAR(result.position.y, 0.1f, 0.021f);
+    EXPECT_NEAR(result.velocity.y, 0.0f, 0.2f);
+    EXPECT_GT(result.velocity.x, 0.7f);
+}
