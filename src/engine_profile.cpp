@@ -73,7 +73,7 @@ EngineProfile engineProfile(PhysicsEngine engine) {
     case PhysicsEngine::Bullet:
         p.order = DampingOrder::DampingThenGravity;
         p.damping = DampingLaw::Power;
-        p.restitutionThreshold = 0.0f;
+        p.restitutionThreshold = 0.2f;  // Bullet 2.87 and later (ammo.js's older Bullet has none)
         p.restitutionBase = RestitutionBase::StepStart;
         p.restitutionCombine = CombineRule::Multiply;
         p.frictionCombine = CombineRule::Multiply;
@@ -86,13 +86,14 @@ EngineProfile engineProfile(PhysicsEngine engine) {
         p.order = DampingOrder::DampingThenGravity;
         p.damping = DampingLaw::LinearClamped;
         p.linearDamping = 0.1f;  // the project default, which a body's own value replaces
-        p.angularDamping = 1.0f;
+        p.angularDamping = 0.1f;
         p.firstStep = FirstStepRule::NoGravity;
         p.restitutionBase = RestitutionBase::AfterGravity;
         p.restitutionCombine = CombineRule::SumClamped;
         p.frictionCombine = CombineRule::Min;
         p.contact = ContactMethod::Penetration;
         p.contactDistance = 0.0f;
+        p.penetrationSlop = 0.01f;
         p.positionCorrection = 0.3f;
         p.correctionIsVelocity = true;
         break;
@@ -101,7 +102,8 @@ EngineProfile engineProfile(PhysicsEngine engine) {
         p.damping = DampingLaw::LinearClamped;
         p.linearDamping = 0.0f;
         p.addedLinearDamping = 0.1f;  // the project default, added to the body's own value
-        p.angularDamping = 0.0f;
+        p.angularDamping = 0.1f;
+        p.restitutionThreshold = 0.2f;  // Godot 3.2 bundles Bullet 2.89
         p.firstStep = FirstStepRule::DampingOnly;
         p.restitutionBase = RestitutionBase::StepStart;
         p.restitutionCombine = CombineRule::SumClamped;

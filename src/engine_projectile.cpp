@@ -47,6 +47,7 @@ struct Surface {
     double e = 0.0, mu = 0.0;
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
+    bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
 };
 
 class EngineRun {
@@ -125,14 +126,16 @@ private:
             freeMotion = mVelocity * dt;
         }
         const DVec3 before = mPosition;
-        mPosition += acted ? mVelocity * dt : freeMotion;
+        if (acted && mProfile.engine == PhysicsEngine::Rapier) mPosition = mSubstepPosition;
+        else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
-        correctPositions(before);
+        correctPositions();
 
         bool bounced = false;
         mTouching = false;
         for (int i = 0; i < mCount; ++i) {
-            const Surface& s = mSurfaces[i];
+            Surface& s = mSurfaces[i];
+            s.carried = s.acting && s.normalImpulse > 0.0;
             if (!s.acting || s.normalImpulse <= 0.0) continue;
             mTouching = true;
             // A real impact, not resting contact: faster than twice what gravity adds in a step.
@@ -148,7 +151,7 @@ private:
 
     // Probes the surfaces already known, and casts the step's free motion for new ones.
     void findSurfaces(const DVec3& freeMotion, const DVec3& velocity) {
-        const double reach = std::max<double>(mProfile.contactDistance, 0.0);
+        const double reach = contactReach();
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
@@ -182,6 +185,15 @@ private:
         }
     }
 
+    // The largest gap that makes a contact. Bullet scales its contact breaking threshold by the
+    // shape's bounding radius (sqrt(3) r for a sphere's box bound).
+    double contactReach() const {
+        const double distance = mProfile.contactDistance;
+        if (mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet)
+            return distance * std::sqrt(3.0) * mRadius;
+        return distance;
+    }
+
     void addSurface(const CastHit& hit) {
         const DVec3 n = glm::normalize(toD(hit.normal));
         const DVec3 touch = toD(hit.position);
@@ -207,15 +219,16 @@ private:
         return mWorld.castSegment(c, hit);
     }
 
-    // The contact solve; returns true when any contact applied an impulse.
+    // The contact solve; returns true when any contact applied an impulse. Each engine's own rule
+    // for a sphere against static surfaces (the per-engine notes are in docs/engines.md).
     bool solve(const DVec3& v0, DVec3& v) {
-        const double dt = mRec.dt;
         bool any = false;
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.normalImpulse = 0.0;
             s.frictionImpulse = DVec3(0.0);
             s.bounce = false;
+            s.approach = -glm::dot(v, s.normal);
             if (!s.acting) continue;
             any = true;
             s.e = s.restitution >= 0.0f
@@ -223,60 +236,232 @@ private:
                       : mSettings.restitution;
             s.mu = s.friction >= 0.0f ? combineMaterial(mProfile.frictionCombine, mSettings.friction, s.friction)
                                       : mSettings.friction;
+        }
+        mPushVelocity = DVec3(0.0);
+        if (!any) return false;
+        switch (mProfile.engine) {
+        case PhysicsEngine::Rapier: solveRapier(v0, v); break;
+        case PhysicsEngine::PhysX: solvePhysX(v); break;
+        default: solveSequential(v0, v); break;
+        }
+        return true;
+    }
+
+    // Jolt, Bullet, GodotPhysics, Box2D and custom profiles: targets set once, then sequential
+    // impulses (friction first, bounded by the normal impulse so far, then the normal row).
+    void solveSequential(const DVec3& v0, DVec3& v) {
+        const double dt = mRec.dt;
+        const PhysicsEngine engine = mProfile.engine;
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
             const double vn = glm::dot(v, s.normal);
-            s.approach = -vn;
-            const double base = mProfile.restitutionBase == RestitutionBase::StepStart ? glm::dot(v0, s.normal) : vn;
             const double speculative = std::max(0.0, s.gap / dt);
+            double base = mProfile.restitutionBase == RestitutionBase::StepStart ? glm::dot(v0, s.normal) : vn;
+            if (engine == PhysicsEngine::Jolt) {
+                // Jolt 5.6: the post-gravity normal velocity with this step's gravity taken out.
+                base = vn + std::max(0.0, -glm::dot(mGravity, s.normal)) * dt;
+            } else if (engine == PhysicsEngine::Bullet || engine == PhysicsEngine::Godot3Bullet) {
+                base = glm::dot(v0 * mRec.d, s.normal);  // damped, before this step's gravity
+            }
+            const bool overThreshold = engine == PhysicsEngine::Jolt || engine == PhysicsEngine::Box2D
+                                           ? vn < -mProfile.restitutionThreshold
+                                           : -base > mProfile.restitutionThreshold;
             const bool reaches = s.gap <= 0.0 || vn < -speculative;
-            s.bounce = s.e > 0.0 && -base > mProfile.restitutionThreshold && reaches;
-            s.target = s.bounce ? -s.e * base : -speculative;
-            if (mProfile.correctionIsVelocity) {
-                const double depth = -s.gap - mProfile.penetrationSlop;
-                if (depth > 0.0) s.target += mProfile.positionCorrection * depth / dt;
+            s.bounce = s.e > 0.0 && overThreshold && reaches && base < 0.0;
+            switch (engine) {
+            case PhysicsEngine::Bullet:
+            case PhysicsEngine::Godot3Bullet: {
+                double target = s.bounce ? -s.e * base : 0.0;
+                if (s.gap > 0.0) target -= s.gap / dt;
+                else if (s.gap > -0.04) target += mProfile.positionCorrection * -s.gap / dt;
+                else mPushVelocity += s.normal * (mProfile.positionCorrection * -s.gap / dt);
+                s.target = target;
+                break;
+            }
+            case PhysicsEngine::Godot3:
+                s.target = s.bounce ? -s.e * vn : 0.0;
+                mPushVelocity += s.normal * (mProfile.positionCorrection *
+                                             std::max(0.0, -s.gap - mProfile.penetrationSlop) / dt);
+                break;
+            case PhysicsEngine::Box2D:
+                s.target = s.bounce ? -s.e * vn : 0.0;
+                break;
+            default:
+                s.target = s.bounce ? -s.e * base : -speculative;
+                if (mProfile.correctionIsVelocity) {
+                    const double depth = -s.gap - mProfile.penetrationSlop;
+                    if (depth > 0.0) s.target += mProfile.positionCorrection * depth / dt;
+                }
+                break;
             }
         }
-        if (!any) return false;
-        const double tangentialMass = mRotates ? 1.0 / 3.5 : 1.0;
+        const double tangentialMass = tangentialEffectiveMass();
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                // Friction first, bounded by the normal impulse so far (as Jolt and Box2D order it).
-                const DVec3 arm = -mRadius * s.normal;
-                DVec3 slip = v + glm::cross(mAngular, arm);
-                slip -= glm::dot(slip, s.normal) * s.normal;
-                DVec3 total = s.frictionImpulse - slip * tangentialMass;
-                const double limit = s.mu * s.normalImpulse;
-                const double size = glm::length(total);
-                if (size > limit) total *= size > 0.0 ? limit / size : 0.0;
-                applyTangential(total - s.frictionImpulse, s.normal, v);
-                s.frictionImpulse = total;
-                // Normal row.
+                frictionRow(s, v, tangentialMass, 1.0);
                 const double vn = glm::dot(v, s.normal);
                 const double accumulated = std::max(0.0, s.normalImpulse + (s.target - vn));
                 v += (accumulated - s.normalImpulse) * s.normal;
                 s.normalImpulse = accumulated;
             }
         }
-        return true;
+    }
+
+    // PhysX 4.1 PGS: biased rows (push-out, speculative allowance) in 4 position iterations with
+    // friction in the last 3 at 0.8 relaxation; the position moves with that velocity; one
+    // unbiased velocity iteration gives the stored velocity.
+    void solvePhysX(DVec3& v) {
+        const double dt = mRec.dt;
+        double biased[kMaxSurfaces] = {}, unbiased[kMaxSurfaces] = {};
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            const double vn = glm::dot(v, s.normal);
+            s.bounce = s.e > 0.0 && vn < -mProfile.restitutionThreshold && -vn > s.gap / dt;
+            const double target = s.bounce ? -s.e * vn : 0.0;
+            const double bias = s.bounce ? 0.0 : mProfile.positionCorrection * s.gap / dt;
+            biased[i] = target - bias;
+            unbiased[i] = s.bounce ? target : target - std::max(bias, 0.0);
+        }
+        const double tangentialMass = tangentialEffectiveMass();
+        for (int iteration = 0; iteration < 4; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double vn = glm::dot(v, s.normal);
+                const double accumulated = std::max(0.0, s.normalImpulse + (biased[i] - vn));
+                v += (accumulated - s.normalImpulse) * s.normal;
+                s.normalImpulse = accumulated;
+                if (iteration > 0) frictionRow(s, v, tangentialMass, 0.8);
+            }
+        }
+        const DVec3 positionVelocity = v;
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            const double vn = glm::dot(v, s.normal);
+            const double accumulated = std::max(0.0, s.normalImpulse + (unbiased[i] - vn));
+            v += (accumulated - s.normalImpulse) * s.normal;
+            s.normalImpulse = accumulated;
+            frictionRow(s, v, tangentialMass, 0.8);
+        }
+        mPushVelocity = positionVelocity - v;
+    }
+
+    // Rapier: the contacts of the step start, solved in each of the sub-steps with soft push-out
+    // and an unbiased pass; a new contact bounces at the end of the step with e times the
+    // start-of-step approach. Damping comes last, as in free flight.
+    void solveRapier(const DVec3& v0, DVec3& v) {
+        const double dt = mRec.dt;
+        const int n = static_cast<int>(mProfile.substeps);
+        const double h = dt / n;
+        const double omega = 2.0 * M_PI * 60.0, zeta = 10.0;  // static contacts: 60 Hz, damping ratio 10
+        const double erpInvDt = omega / (h * omega + 2.0 * zeta);
+        const double erp = h * erpInvDt;
+        const double cfmCoefficient = (1.0 / erp - 1.0) * (1.0 / erp - 1.0) / ((1.0 / erp) * 4.0 * zeta * zeta);
+        const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
+        const double tangentialMass = tangentialEffectiveMass();
+        DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
+        const DVec3 start = mPosition;
+        DVec3 x = mPosition;
+        double seed[kMaxSurfaces] = {};
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            const double vn0 = glm::dot(v0, s.normal);
+            s.bounce = (!s.carried || s.e >= 1.0) && s.e > 0.0 && vn0 < 0.0;
+            seed[i] = s.bounce ? s.e * vn0 : 0.0;
+        }
+        for (int sub = 0; sub < n; ++sub) {
+            vel += mGravity * h;
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double dist = s.gap + glm::dot(x - start, s.normal);
+                const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -3.0, 0.0);
+                const double cf = dist <= 0.0 ? cfmFactor : 1.0;
+                const double vn = glm::dot(vel, s.normal);
+                // Warm-started: the accumulated impulse so far stays applied.
+                const double accumulated = std::max(0.0, cf * (s.normalImpulse - (vn + rhs)));
+                vel += (accumulated - s.normalImpulse) * s.normal;
+                s.normalImpulse = accumulated;
+                frictionRow(s, vel, tangentialMass, 1.0);
+            }
+            x += vel * h;
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double dist = s.gap + glm::dot(x - start, s.normal);
+                const double vn = glm::dot(vel, s.normal);
+                const double accumulated = std::max(0.0, s.normalImpulse - (vn + std::max(dist, 0.0) / h));
+                vel += (accumulated - s.normalImpulse) * s.normal;
+                s.normalImpulse = accumulated;
+            }
+        }
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting || seed[i] >= 0.0 || s.normalImpulse <= 0.0) continue;
+            const double vn = glm::dot(vel, s.normal);
+            if (vn < -seed[i]) vel += (-seed[i] - vn) * s.normal;
+        }
+        mSubstepPosition = x;
+        v = vel * mRec.d;
+    }
+
+    double tangentialEffectiveMass() const {
+        if (!mRotates) return 1.0;
+        // Solid sphere I = 2/5 m r^2: K_t = 1/m + r^2/I = 3.5/m; Box2D's disk (I = m r^2 / 2): 3/m.
+        return mProfile.planar ? 1.0 / 3.0 : 1.0 / 3.5;
+    }
+
+    // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
+    void frictionRow(Surface& s, DVec3& v, double tangentialMass, double relaxation) {
+        const DVec3 arm = -mRadius * s.normal;
+        DVec3 slip = v + glm::cross(mAngular, arm);
+        slip -= glm::dot(slip, s.normal) * s.normal;
+        DVec3 total = s.frictionImpulse - slip * (tangentialMass * relaxation);
+        const double limit = s.mu * s.normalImpulse;
+        const double size = glm::length(total);
+        if (size > limit) total *= size > 0.0 ? limit / size : 0.0;
+        applyTangential(total - s.frictionImpulse, s.normal, v);
+        s.frictionImpulse = total;
     }
 
     void applyTangential(const DVec3& impulse, const DVec3& normal, DVec3& v) {
         v += impulse;
-        if (mRotates) mAngular += -(2.5 / mRadius) * glm::cross(normal, impulse);
+        if (mRotates) {
+            const double inverse = mProfile.planar ? 2.0 : 2.5;  // r^2 / I per unit mass
+            mAngular += -(inverse / mRadius) * glm::cross(normal, impulse);
+        }
     }
 
-    // Position-based correction (Jolt, Box2D, Rapier): out of each surface by a fraction of the
-    // depth beyond the slop.
-    void correctPositions(const DVec3& before) {
-        (void)before;
+    // Position-based correction after the move (Jolt: 2 iterations of 0.2 beyond the 0.02 slop,
+    // capped at 0.2 m; Box2D: 3 iterations of 0.2 towards a 0.005 m gap; custom: one of
+    // positionCorrection beyond penetrationSlop).
+    void correctPositions() {
         if (mProfile.correctionIsVelocity || mProfile.positionCorrection <= 0.0f) return;
-        for (int i = 0; i < mCount; ++i) {
-            const Surface& s = mSurfaces[i];
-            if (!s.acting) continue;
-            const double gap = glm::dot(mPosition - s.touch, s.normal);
-            const double depth = -gap - mProfile.penetrationSlop;
-            if (depth > 0.0) mPosition += s.normal * (mProfile.positionCorrection * depth);
+        const PhysicsEngine engine = mProfile.engine;
+        if (engine == PhysicsEngine::Rapier) return;  // its sub-steps pushed out already
+        const int iterations = engine == PhysicsEngine::Jolt ? 2 : engine == PhysicsEngine::Box2D ? 3 : 1;
+        for (int iteration = 0; iteration < iterations; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                const Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double gap = glm::dot(mPosition - s.touch, s.normal);
+                if (engine == PhysicsEngine::Jolt) {
+                    const double c = std::max(gap + mProfile.penetrationSlop, -0.2);
+                    if (c < 0.0) mPosition -= s.normal * (mProfile.positionCorrection * c);
+                } else if (engine == PhysicsEngine::Box2D) {
+                    const double c = std::clamp(mProfile.positionCorrection * (gap - 0.005), -0.2, 0.0);
+                    mPosition -= s.normal * c;
+                } else {
+                    const double depth = -gap - mProfile.penetrationSlop;
+                    if (depth > 0.0) mPosition += s.normal * (mProfile.positionCorrection * depth);
+                }
+            }
         }
     }
 
@@ -292,6 +477,8 @@ private:
     double mAngularFactor = 1.0;
     DVec3 mPosition{0.0}, mVelocity{0.0}, mAngular{0.0};
     std::array<Surface, kMaxSurfaces> mSurfaces{};
+    DVec3 mPushVelocity{0.0};    // moves the position this step but is not kept in the velocity
+    DVec3 mSubstepPosition{0.0}; // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
     DVec3 mLastNormal{0.0};

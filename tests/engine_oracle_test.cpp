@@ -1,0 +1,403 @@
+// ProjectileMethod::Engine against the real engines: Jolt, PhysX, Rapier and Bullet (ammo.js) in
+// WebAssembly through Node.js, GodotPhysics and Godot's Bullet through headless Godot 3, native
+// Bullet and Box2D through foresight_engine_harness (tests/engines/README.md). Random throws
+// (fixed seed) in free flight and in scenes of a floor and box walls are run by the engine and
+// predicted; the figures are printed as a Markdown table and the targets asserted:
+//   - free flight: every step within 2e-3 m of the engine (the float32 engines' own rounding
+//     reaches 1e-3 m over a few seconds);
+//   - scenes: the first bounce on the engine's step in >= 90 % of throws, and the position after
+//     the last step within 0.02 m of the engine's in >= 90 %.
+// A runtime that is not installed skips its engines (and says so), unless FORESIGHT_REQUIRE_ENGINES
+// is set (scripts/test.sh sets it: CI runs them all).
+
+#include <foresight/engine_profile.h>
+#include <foresight/projectile.h>
+#include <foresight/static_world.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace foresight;
+using Json = nlohmann::json;
+using DVec3 = glm::dvec3;
+
+namespace {
+
+constexpr double kFreeFlightTolerance = 2e-3;  // [m]
+constexpr double kEndTolerance = 0.02;         // [m]
+constexpr double kShareTarget = 0.9;
+
+// SplitMix64: a small generator whose sequence is the same on every platform (the standard
+// distributions are not).
+struct Random {
+    std::uint64_t state;
+    std::uint64_t next() {
+        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+};
+
+struct Box {
+    DVec3 center{0.0}, half{0.5};
+    double yaw = 0.0;  // rotation about y (about z for box2d) [rad]
+};
+
+// One throw for one engine.
+struct Throw {
+    std::string id;
+    std::string harnessEngine;  // the harness's name ("ammo" and "bullet" are both Bullet)
+    PhysicsEngine engine = PhysicsEngine::Jolt;
+    bool scene = false;
+    int hz = 60;
+    int steps = 180;
+    double radius = 0.1;
+    DVec3 position{0.0}, velocity{0.0};
+    std::optional<double> damping;  // the body's linear damping; absent: the engine's default
+    double restitution = 0.5, friction = 0.0;  // the contact's (combined) values
+    std::vector<Box> boxes;
+};
+
+struct EngineRun {
+    std::vector<DVec3> positions, velocities;
+};
+
+struct EngineInfo {
+    const char* name;  // harness engine name
+    PhysicsEngine engine;
+    const char* runtime;  // "node", "godot", "native"
+};
+
+const EngineInfo kEngines[] = {
+    {"jolt", PhysicsEngine::Jolt, "node"},          {"physx", PhysicsEngine::PhysX, "node"},
+    {"rapier", PhysicsEngine::Rapier, "node"},      {"ammo", PhysicsEngine::Bullet, "node"},
+    {"bullet", PhysicsEngine::Bullet, "native"},    {"godot3", PhysicsEngine::Godot3, "godot"},
+    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot"}, {"box2d", PhysicsEngine::Box2D, "native"},
+};
+
+Quat yawQuat(double yaw, bool aboutZ) {
+    const Vec3 axis = aboutZ ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+    return glm::angleAxis(static_cast<float>(yaw), axis);
+}
+
+std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCount) {
+    Random random{0x5EEDull + static_cast<std::uint64_t>(info.engine) * 1000 + std::string(info.name).size()};
+    const bool planar = info.engine == PhysicsEngine::Box2D;
+    const int rates[] = {30, 60, 90, 120};
+    std::vector<Throw> throws;
+    for (int i = 0; i < freeCount + sceneCount; ++i) {
+        Throw t;
+        t.harnessEngine = info.name;
+        t.engine = info.engine;
+        t.scene = i >= freeCount;
+        t.id = std::string(info.name) + (t.scene ? "-scene-" : "-free-") + std::to_string(i);
+        t.hz = rates[random.below(4)];
+        t.steps = 3 * t.hz;
+        t.radius = random.uniform(0.05, 0.25);
+        const double heading = random.uniform(0.0, 2.0 * M_PI);
+        const double speed = random.uniform(3.0, 12.0);
+        t.position = DVec3(random.uniform(-1, 1), random.uniform(0.5, 2.0), planar ? 0.0 : random.uniform(-1, 1));
+        t.velocity = planar ? DVec3(speed * std::cos(heading), random.uniform(1.0, 7.0), 0.0)
+                            : DVec3(speed * std::cos(heading), random.uniform(1.0, 7.0), speed * std::sin(heading));
+        if (!t.scene) {
+            t.damping = random.uniform(0.0, 1.5);
+        } else {
+            if (random.below(2) == 0) t.damping = random.uniform(0.0, 0.5);
+            t.restitution = random.uniform(0.2, 0.8);
+            t.friction = random.uniform(0.0, 0.6);
+            t.boxes.push_back({DVec3(0, -0.5, 0), DVec3(30, 0.5, planar ? 0.5 : 30), 0.0});
+            const int walls = 1 + random.below(3);
+            for (int w = 0; w < walls; ++w) {
+                Box b;
+                const double around = random.uniform(0.0, 2.0 * M_PI);
+                const double distance = random.uniform(2.5, 7.0);
+                if (planar) {
+                    b.center = DVec3((w % 2 == 0 ? 1 : -1) * distance, random.uniform(0.5, 2.0), 0.0);
+                    b.half = DVec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), 0.5);
+                    b.yaw = random.uniform(-0.3, 0.3);
+                } else {
+                    b.center = DVec3(distance * std::cos(around), random.uniform(0.5, 2.0), distance * std::sin(around));
+                    b.half = DVec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1.0, 4.0));
+                    b.yaw = random.uniform(0.0, M_PI);
+                }
+                t.boxes.push_back(b);
+            }
+        }
+        throws.push_back(t);
+    }
+    return throws;
+}
+
+// Materials for body and boxes whose combination under the engine's rules is the throw's
+// restitution and friction.
+void materials(const Throw& t, Json& body, Json& box) {
+    const EngineProfile p = engineProfile(t.engine);
+    auto split = [](CombineRule rule, double value, double& a, double& b) {
+        switch (rule) {
+        case CombineRule::Max:
+        case CombineRule::SumClamped: a = value; b = 0.0; break;
+        case CombineRule::Multiply: a = value; b = 1.0; break;
+        default: a = value; b = value; break;
+        }
+    };
+    double be, se, bf, sf;
+    split(p.restitutionCombine, t.restitution, be, se);
+    split(p.frictionCombine, t.friction, bf, sf);
+    body["restitution"] = be;
+    body["friction"] = bf;
+    box["restitution"] = se;
+    box["friction"] = sf;
+}
+
+Json caseJson(const Throw& t) {
+    Json c;
+    c["id"] = t.id;
+    c["engine"] = t.harnessEngine;
+    c["timestep"] = 1.0 / t.hz;
+    c["steps"] = t.steps;
+    c["gravity"] = {0.0, -9.81, 0.0};
+    Json body;
+    body["radius"] = t.radius;
+    body["mass"] = 1.0;
+    body["position"] = {t.position.x, t.position.y, t.position.z};
+    body["velocity"] = {t.velocity.x, t.velocity.y, t.velocity.z};
+    if (t.damping) body["linear_damping"] = *t.damping;
+    Json box;
+    materials(t, body, box);
+    c["body"] = body;
+    c["boxes"] = Json::array();
+    const bool planar = t.engine == PhysicsEngine::Box2D;
+    for (const Box& b : t.boxes) {
+        Json j = box;
+        j["center"] = {b.center.x, b.center.y, b.center.z};
+        j["half_extents"] = {b.half.x, b.half.y, b.half.z};
+        const Quat q = yawQuat(b.yaw, planar);
+        j["rotation"] = {q.x, q.y, q.z, q.w};
+        c["boxes"].push_back(j);
+    }
+    return c;
+}
+
+struct Prediction {
+    std::vector<DVec3> positions, velocities;
+    DVec3 end{0.0};
+};
+
+Prediction predict(const Throw& t, ProjectileMethod method) {
+    StaticWorld world;
+    const bool planar = t.engine == PhysicsEngine::Box2D;
+    for (const Box& b : t.boxes) {
+        OrientedBox box;
+        box.center = RVec3(b.center);
+        box.halfExtents = Vec3(b.half);
+        box.orientation = yawQuat(b.yaw, planar);
+        EXPECT_EQ(world.add(box), Status::Ok);
+    }
+    ProjectileSettings settings;
+    settings.method = method;
+    settings.engine = engineProfile(t.engine);
+    settings.engine.timestep = static_cast<float>(1.0 / t.hz);
+    if (t.damping) settings.engine.linearDamping = static_cast<float>(*t.damping);
+    // ammo.js 0.0.10 carries a Bullet older than 2.87: no restitution threshold (a project setting).
+    if (t.harnessEngine == "ammo") settings.engine.restitutionThreshold = 0.0f;
+    settings.step = settings.engine.timestep;
+    settings.radius = static_cast<float>(t.radius);
+    settings.restitution = static_cast<float>(t.restitution);
+    settings.friction = static_cast<float>(t.friction);
+    const float time = static_cast<float>(t.steps) / static_cast<float>(t.hz);
+    std::vector<TrajectoryPoint> points(static_cast<std::size_t>(t.steps) + 400);
+    ProjectileResult result;
+    const Status status = predictProjectile(RVec3(t.position), Vec3(t.velocity), time, settings,
+                                            t.scene ? &world : nullptr, points, result);
+    EXPECT_EQ(status, Status::Ok) << t.id;
+    Prediction out;
+    for (std::size_t i = 0; i < result.trajectorySize; ++i) {
+        out.positions.push_back(DVec3(points[i].position));
+        out.velocities.push_back(DVec3(points[i].velocity));
+    }
+    out.end = DVec3(result.position);
+    return out;
+}
+
+// The first step whose velocity change is not free flight's (|dv - expected| > 0.05 m/s), or -1.
+int firstContactStep(const std::vector<DVec3>& velocities, const EngineProfile& profile, const Throw& t) {
+    const double dt = 1.0 / t.hz;
+    const double c = (t.damping ? *t.damping : profile.linearDamping) + profile.addedLinearDamping;
+    EngineProfile p = profile;
+    p.linearDamping = static_cast<float>(c - profile.addedLinearDamping);
+    p.timestep = static_cast<float>(dt);
+    for (std::size_t k = 1; k < velocities.size(); ++k) {
+        const EngineFlightState f = engineFreeFlight(p, RVec3(0.0f), Vec3(velocities[k - 1]), Vec3(0, -9.81f, 0), 1);
+        if (k == 1 && profile.firstStep != FirstStepRule::Normal) continue;
+        if (glm::length(DVec3(f.velocity) - velocities[k]) > 0.05) return static_cast<int>(k);
+    }
+    return -1;
+}
+
+std::string runCommand(const std::string& command) {
+    std::string output;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return "popen failed";
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    const int status = pclose(pipe);
+    if (status != 0) output = "exit status " + std::to_string(status) + ": " + output;
+    else output.clear();
+    return output;
+}
+
+class EngineOracle : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                          ("foresight-engines-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        std::map<std::string, Json> casesByRuntime;
+        for (const EngineInfo& info : kEngines) {
+            for (const Throw& t : makeThrows(info, 20, 40)) {
+                sThrows.push_back(t);
+                casesByRuntime[info.runtime]["cases"].push_back(caseJson(t));
+            }
+        }
+        const std::string engineDir = FORESIGHT_ENGINE_DIR;
+        std::map<std::string, std::string> commands;
+        const std::string node = FORESIGHT_NODE;
+        if (!node.empty() && std::filesystem::exists(engineDir + "/node_modules"))
+            commands["node"] = node + " " + engineDir + "/harness.mjs";
+        else
+            sMissing["node"] = "Node.js or tests/engines/node_modules (npm ci) missing";
+        const std::string godot = FORESIGHT_GODOT;
+        if (!godot.empty())
+            commands["godot"] = "GODOT=" + godot + " " + engineDir + "/godot/run_godot.sh";
+        else
+            sMissing["godot"] = "godot3-server missing";
+        const std::string native = FORESIGHT_NATIVE_HARNESS;
+        if (!native.empty())
+            commands["native"] = native;
+        else
+            sMissing["native"] = "foresight_engine_harness not built (Bullet or Box2D missing)";
+        for (auto& [runtime, cases] : casesByRuntime) {
+            if (!commands.count(runtime)) continue;
+            const auto in = dir / (runtime + "-cases.json"), out = dir / (runtime + "-results.json");
+            std::ofstream(in) << cases.dump();
+            const std::string error = runCommand(commands[runtime] + " " + in.string() + " " + out.string());
+            if (!error.empty()) {
+                sFailed[runtime] = error;
+                continue;
+            }
+            std::ifstream file(out);
+            Json results = Json::parse(file, nullptr, false);
+            if (results.is_discarded()) {
+                sFailed[runtime] = "unreadable result file " + out.string();
+                continue;
+            }
+            for (const Json& r : results["results"]) {
+                EngineRun run;
+                for (const Json& p : r["positions"]) run.positions.emplace_back(p[0], p[1], p[2]);
+                for (const Json& v : r["velocities"]) run.velocities.emplace_back(v[0], v[1], v[2]);
+                sRuns[r["id"].get<std::string>()] = run;
+            }
+            if (results.contains("engine_versions")) sVersions[runtime] = results["engine_versions"].dump();
+        }
+        std::filesystem::remove_all(dir);
+    }
+
+    void check(const char* engineName) {
+        const EngineInfo* info = nullptr;
+        for (const EngineInfo& e : kEngines)
+            if (std::string(e.name) == engineName) info = &e;
+        ASSERT_NE(info, nullptr);
+        if (sFailed.count(info->runtime)) FAIL() << info->runtime << " harness failed: " << sFailed[info->runtime];
+        if (sMissing.count(info->runtime)) {
+            if (std::getenv("FORESIGHT_REQUIRE_ENGINES"))
+                FAIL() << engineName << ": " << sMissing[info->runtime] << " (FORESIGHT_REQUIRE_ENGINES is set)";
+            GTEST_SKIP() << engineName << ": " << sMissing[info->runtime];
+        }
+        double freeWorst = 0.0, freeWorstExact = 0.0, freeWorstStepped = 0.0;
+        int scenes = 0, sameBounce = 0, engineBounced = 0, endWithin = 0;
+        int endWithinExact = 0, endWithinStepped = 0;
+        std::vector<double> endErrors, exactErrors, steppedErrors;
+        for (const Throw& t : sThrows) {
+            if (t.harnessEngine != engineName) continue;
+            auto it = sRuns.find(t.id);
+            ASSERT_NE(it, sRuns.end()) << "no result for " << t.id;
+            const EngineRun& run = it->second;
+            ASSERT_EQ(run.positions.size(), static_cast<std::size_t>(t.steps) + 1) << t.id;
+            const Prediction engine = predict(t, ProjectileMethod::Engine);
+            ASSERT_EQ(engine.positions.size(), run.positions.size()) << t.id;
+            const Prediction exact = predict(t, ProjectileMethod::Exact);
+            const Prediction stepped = predict(t, ProjectileMethod::Stepped);
+            const DVec3 last = run.positions.back();
+            if (!t.scene) {
+                for (std::size_t k = 0; k < run.positions.size(); ++k)
+                    freeWorst = std::max(freeWorst, glm::length(engine.positions[k] - run.positions[k]));
+                freeWorstExact = std::max(freeWorstExact, glm::length(exact.end - last));
+                freeWorstStepped = std::max(freeWorstStepped, glm::length(stepped.end - last));
+                continue;
+            }
+            ++scenes;
+            const EngineProfile profile = engineProfile(t.engine);
+            const int engineFirst = firstContactStep(run.velocities, profile, t);
+            const int predictedFirst = firstContactStep(engine.velocities, profile, t);
+            if (engineFirst >= 0) ++engineBounced;
+            if (engineFirst == predictedFirst) ++sameBounce;
+            const double error = glm::length(engine.end - last);
+            endErrors.push_back(error);
+            exactErrors.push_back(glm::length(exact.end - last));
+            steppedErrors.push_back(glm::length(stepped.end - last));
+            if (error <= kEndTolerance) ++endWithin;
+            if (exactErrors.back() <= kEndTolerance) ++endWithinExact;
+            if (steppedErrors.back() <= kEndTolerance) ++endWithinStepped;
+            if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))
+                std::cout << t.id << " first " << engineFirst << "/" << predictedFirst << " end error " << error
+                          << "\n";
+        }
+        auto median = [](std::vector<double> v) {
+            if (v.empty()) return 0.0;
+            std::sort(v.begin(), v.end());
+            return v[v.size() / 2];
+        };
+        const double bounceShare = scenes ? static_cast<double>(sameBounce) / scenes : 1.0;
+        const double endShare = scenes ? static_cast<double>(endWithin) / scenes : 1.0;
+        std::printf("| %s | %.2e | %.3f / %.3f | %d/%d | %d/%d (%d/%d, %d/%d) | %.4f (%.3f, %.3f) |\n", engineName,
+                    freeWorst, freeWorstExact, freeWorstStepped, sameBounce, scenes, endWithin, scenes,
+                    endWithinExact, scenes, endWithinStepped, scenes, median(endErrors), median(exactErrors),
+                    median(steppedErrors));
+        std::fflush(stdout);
+        EXPECT_LE(freeWorst, kFreeFlightTolerance) << "free flight";
+        EXPECT_GE(bounceShare, kShareTarget) << "first bounce on the engine's step";
+        EXPECT_GE(endShare, kShareTarget) << "end within 2 cm";
+        EXPECT_GT(engineBounced, scenes / 2) << "the scenes must make the engine bounce";
+    }
+
+    static inline std::vector<Throw> sThrows;
+    static inline std::map<std::string, EngineRun> sRuns;
+    static inline std::map<std::string, std::string> sMissing, sFailed, sVersions;
+};
+
+}  // namespace
+
+TEST_F(EngineOracle, Jolt) { check("jolt"); }
+TEST_F(EngineOracle, PhysX) { check("physx"); }
+TEST_F(EngineOracle, Rapier) { check("rapier"); }
+TEST_F(EngineOracle, BulletWasm) { check("ammo"); }
+TEST_F(EngineOracle, BulletNative) { check("bullet"); }
+TEST_F(EngineOracle, Godot3) { check("godot3"); }
+TEST_F(EngineOracle, Godot3Bullet) { check("godot3-bullet"); }
+TEST_F(EngineOracle, Box2D) { check("box2d"); }
