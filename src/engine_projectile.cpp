@@ -109,6 +109,11 @@ private:
             freeMotion = mRec.a * dt * v0 + mRec.cg * dt * dt * mGravity;
         }
         mAngular *= mAngularFactor;
+        if (mProfile.engine == PhysicsEngine::Jolt) {
+            // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
+            const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
+            if (spin > maxSpin) mAngular *= maxSpin / spin;
+        }
         const double speed = glm::length(v);
         if (speed > mProfile.maxLinearSpeed) {
             v *= mProfile.maxLinearSpeed / speed;
@@ -419,22 +424,32 @@ private:
 
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
     void frictionRow(Surface& s, DVec3& v, double tangentialMass, double relaxation) {
-        const DVec3 arm = -mRadius * s.normal;
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * s.normal;
+        if (mRotates) tangentialMass = 1.0 / (1.0 + (mProfile.planar ? 2.0 : 2.5) * (radius * radius) / (mRadius * mRadius));
         DVec3 slip = v + glm::cross(mAngular, arm);
         slip -= glm::dot(slip, s.normal) * s.normal;
         DVec3 total = s.frictionImpulse - slip * (tangentialMass * relaxation);
         const double limit = s.mu * s.normalImpulse;
         const double size = glm::length(total);
         if (size > limit) total *= size > 0.0 ? limit / size : 0.0;
-        applyTangential(total - s.frictionImpulse, s.normal, v);
+        applyTangential(total - s.frictionImpulse, s.normal, radius, v);
         s.frictionImpulse = total;
     }
 
-    void applyTangential(const DVec3& impulse, const DVec3& normal, DVec3& v) {
+    // The lever arm of the contact point from the centre: the sphere's surface, except in Jolt,
+    // whose contact point is midway between the two surfaces (half the gap further out).
+    double contactArm(const Surface& s) const {
+        if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
+        return mRadius;
+    }
+
+    void applyTangential(const DVec3& impulse, const DVec3& normal, double arm, DVec3& v) {
         v += impulse;
         if (mRotates) {
-            const double inverse = mProfile.planar ? 2.0 : 2.5;  // r^2 / I per unit mass
-            mAngular += -(inverse / mRadius) * glm::cross(normal, impulse);
+            // dw = I^-1 (r x P) with r = -arm n and I = k m R^2 (k = 2/5 sphere, 1/2 disk).
+            const double inverseK = mProfile.planar ? 2.0 : 2.5;
+            mAngular += -(inverseK * arm / (mRadius * mRadius)) * glm::cross(normal, impulse);
         }
     }
 

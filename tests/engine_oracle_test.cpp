@@ -14,6 +14,7 @@
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
 
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -136,6 +137,12 @@ std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCo
                     b.half = DVec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1.0, 4.0));
                     b.yaw = random.uniform(0.0, M_PI);
                 }
+                // Keep the start well clear of the wall (an engine pushes out a sphere that starts
+                // in a wall at once: not a throw).
+                const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(yawQuat(b.yaw, planar)));
+                const DVec3 local = glm::transpose(rotation) * (t.position - b.center);
+                const DVec3 outside = glm::max(glm::abs(local) - b.half, DVec3(0.0));
+                if (glm::length(outside) < t.radius + 0.5) continue;
                 t.boxes.push_back(b);
             }
         }
@@ -364,6 +371,14 @@ protected:
             if (error <= kEndTolerance) ++endWithin;
             if (exactErrors.back() <= kEndTolerance) ++endWithinExact;
             if (steppedErrors.back() <= kEndTolerance) ++endWithinStepped;
+            if (const char* dump = std::getenv("FORESIGHT_ENGINE_DUMP"); dump && t.id == dump) {
+                for (std::size_t k = 0; k < run.positions.size(); ++k) {
+                    const DVec3 a = run.positions[k], b = engine.positions[k];
+                    const DVec3 va = run.velocities[k], vb = engine.velocities[k];
+                    std::printf("%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f\n",
+                                k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+                }
+            }
             if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))
                 std::cout << t.id << " first " << engineFirst << "/" << predictedFirst << " end error " << error
                           << "\n";
