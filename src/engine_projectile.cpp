@@ -34,6 +34,8 @@ namespace {
 constexpr int kMaxSurfaces = 6;
 // Velocity iterations of the contact solver (several contacts converge; one is exact at once).
 constexpr int kSolverIterations = 10;
+// PhysX position iterations that carry no friction (measured against the Cocos build).
+constexpr int kPhysXFrictionSkip = 0;
 
 struct Surface {
     DVec3 normal{0.0};  // unit, towards the sphere
@@ -340,7 +342,7 @@ private:
                 const double accumulated = std::max(0.0, s.normalImpulse + (biased[i] - vn));
                 v += (accumulated - s.normalImpulse) * s.normal;
                 s.normalImpulse = accumulated;
-                if (iteration > 0) frictionRow(s, v, tangentialMass, 0.8);
+                if (iteration > kPhysXFrictionSkip) frictionRow(s, v, tangentialMass, 0.8);
             }
         }
         const DVec3 positionVelocity = v;

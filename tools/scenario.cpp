@@ -258,6 +258,110 @@ void checkProjectileSetting(Fields& fields, const char* key, Set&& set) {
     }
 }
 
+/// Reads a name among `names` (JSON strings) into `out`; an unknown one is reported with the list.
+template <class Enum, std::size_t N>
+void readEnumName(Fields& f, const char* key, const std::pair<const char*, Enum> (&names)[N], Enum& out) {
+    std::string name;
+    if (!f.string(key, false, name)) return;
+    std::string expected;
+    for (const auto& [text, value] : names) {
+        if (name == text) {
+            out = value;
+            return;
+        }
+        expected += std::string(expected.empty() ? "" : ", ") + "\"" + text + "\"";
+    }
+    f.diagnostics().error(f.at(key), "unknown value " + jsonQuoted(name) + " (expected one of " + expected + ")");
+}
+
+/// `engine`: a named profile (or "custom") and overrides of its fields (docs/scenario-format.md).
+void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
+    const Json* object = parent.get("engine", true);
+    if (object == nullptr) return;
+    if (!object->is_object()) {
+        parent.diagnostics().error(parent.at("engine"), "expected an object, got " + typeName(*object));
+        return;
+    }
+    Fields f(*object, parent.at("engine"), parent.diagnostics());
+    using foresight::PhysicsEngine;
+    static const std::pair<const char*, PhysicsEngine> profiles[] = {
+        {"jolt", PhysicsEngine::Jolt},     {"physx", PhysicsEngine::PhysX},
+        {"rapier", PhysicsEngine::Rapier}, {"bullet", PhysicsEngine::Bullet},
+        {"godot3", PhysicsEngine::Godot3}, {"godot3-bullet", PhysicsEngine::Godot3Bullet},
+        {"box2d", PhysicsEngine::Box2D},   {"custom", PhysicsEngine::Custom}};
+    PhysicsEngine engine = PhysicsEngine::Custom;
+    std::string name;
+    if (!f.string("profile", true, name)) {
+        f.finish();
+        return;
+    }
+    bool known = false;
+    for (const auto& [text, value] : profiles)
+        if (name == text) {
+            engine = value;
+            known = true;
+        }
+    if (!known) {
+        f.diagnostics().error(f.at("profile"), "unknown profile " + jsonQuoted(name) +
+                                                   " (expected \"jolt\", \"physx\", \"rapier\", \"bullet\", \"godot3\", "
+                                                   "\"godot3-bullet\", \"box2d\" or \"custom\")");
+    }
+    foresight::EngineProfile profile = foresight::engineProfile(engine);
+    f.positive("timestep", false, true, profile.timestep);
+    f.positive("linear_damping", false, false, profile.linearDamping);
+    f.positive("added_linear_damping", false, false, profile.addedLinearDamping);
+    f.positive("angular_damping", false, false, profile.angularDamping);
+    f.integer("substeps", false, 1u, 64u, profile.substeps);
+    using foresight::CombineRule;
+    static const std::pair<const char*, foresight::DampingOrder> orders[] = {
+        {"gravity_then_damping", foresight::DampingOrder::GravityThenDamping},
+        {"damping_then_gravity", foresight::DampingOrder::DampingThenGravity}};
+    readEnumName(f, "order", orders, profile.order);
+    static const std::pair<const char*, foresight::DampingLaw> laws[] = {
+        {"none", foresight::DampingLaw::None},
+        {"linear_clamped", foresight::DampingLaw::LinearClamped},
+        {"rational", foresight::DampingLaw::Rational},
+        {"power", foresight::DampingLaw::Power}};
+    readEnumName(f, "damping", laws, profile.damping);
+    static const std::pair<const char*, foresight::FirstStepRule> firsts[] = {
+        {"normal", foresight::FirstStepRule::Normal},
+        {"no_gravity", foresight::FirstStepRule::NoGravity},
+        {"damping_only", foresight::FirstStepRule::DampingOnly}};
+    readEnumName(f, "first_step", firsts, profile.firstStep);
+    f.positive("restitution_threshold", false, false, profile.restitutionThreshold);
+    static const std::pair<const char*, foresight::RestitutionBase> bases[] = {
+        {"step_start", foresight::RestitutionBase::StepStart},
+        {"after_gravity", foresight::RestitutionBase::AfterGravity}};
+    readEnumName(f, "restitution_base", bases, profile.restitutionBase);
+    static const std::pair<const char*, CombineRule> rules[] = {
+        {"average", CombineRule::Average},   {"min", CombineRule::Min},
+        {"max", CombineRule::Max},           {"multiply", CombineRule::Multiply},
+        {"geometric_mean", CombineRule::GeometricMean}, {"sum_clamped", CombineRule::SumClamped}};
+    readEnumName(f, "restitution_combine", rules, profile.restitutionCombine);
+    readEnumName(f, "friction_combine", rules, profile.frictionCombine);
+    static const std::pair<const char*, foresight::ContactMethod> contacts[] = {
+        {"speculative", foresight::ContactMethod::Speculative},
+        {"penetration", foresight::ContactMethod::Penetration}};
+    readEnumName(f, "contact", contacts, profile.contact);
+    f.positive("contact_distance", false, false, profile.contactDistance);
+    f.positive("penetration_slop", false, false, profile.penetrationSlop);
+    if (f.positive("position_correction", false, false, profile.positionCorrection) &&
+        profile.positionCorrection > 1.0f) {
+        f.diagnostics().error(f.at("position_correction"),
+                              "must be in [0, 1] (got " + shortNumber(profile.positionCorrection) + ")");
+    }
+    f.boolean("correction_is_velocity", false, profile.correctionIsVelocity);
+    f.positive("max_linear_speed", false, true, profile.maxLinearSpeed);
+    f.positive("max_step_distance", false, true, profile.maxStepDistance);
+    f.boolean("planar", false, profile.planar);
+    f.boolean("rotates", false, profile.rotates);
+    f.finish();
+    if (profile.timestep > 1.0f || profile.timestep < 1e-5f) {
+        f.diagnostics().error(f.at("timestep"), "must be in [1e-05, 1] s (got " + shortNumber(profile.timestep) + ")");
+    }
+    settings.engine = profile;
+}
+
 void readProjectile(Fields& f, Prediction& p, const foresight::Vec3& gravity) {
     auto& settings = p.projectile;
     settings.gravity = gravity;
@@ -271,9 +375,12 @@ void readProjectile(Fields& f, Prediction& p, const foresight::Vec3& gravity) {
             settings.method = foresight::ProjectileMethod::Exact;
         } else if (method == "stepped") {
             settings.method = foresight::ProjectileMethod::Stepped;
+        } else if (method == "engine") {
+            settings.method = foresight::ProjectileMethod::Engine;
+            readEngine(f, settings);
         } else {
             f.diagnostics().error(f.at("method"), "unknown method " + jsonQuoted(method) +
-                                                      " for a projectile (expected \"exact\" or \"stepped\")");
+                                                      " for a projectile (expected \"exact\", \"stepped\" or \"engine\")");
         }
     }
     const bool okStep = f.floatNumber("step", false, settings.step);
@@ -299,10 +406,11 @@ void readProjectile(Fields& f, Prediction& p, const foresight::Vec3& gravity) {
     f.boolean("trajectory", false, p.trajectory);
 
     // The work cap, checked before anything is allocated for the trajectory.
-    if (okTime && (okStep || f.get("step", false) == nullptr) && settings.step > 0.0f && std::isfinite(settings.step)) {
-        const double quotient = static_cast<double>(p.time) / static_cast<double>(settings.step);
+    const float step = foresight::settingsStep(settings);
+    if (okTime && (okStep || f.get("step", false) == nullptr) && step > 0.0f && std::isfinite(step)) {
+        const double quotient = static_cast<double>(p.time) / static_cast<double>(step);
         const bool tooMany = quotient > 2.0 * static_cast<double>(settings.maxSteps) ||
-                             foresight::steppedStepCount(p.time, settings.step) > settings.maxSteps;
+                             foresight::steppedStepCount(p.time, step) > settings.maxSteps;
         if (tooMany) {
             f.diagnostics().error(p.path, std::string(foresight::statusMessage(Status::TooManySteps)) +
                                               ": time / step = " + shortNumber(quotient) + " steps, the cap is " +
@@ -598,7 +706,9 @@ Json resultJson(const Prediction& p, const PredictionResult& result) {
     case Model::Orientation: out["orientation"] = jsonQuaternion(result.orientation); break;
     case Model::Projectile: {
         const auto& r = result.projectile;
-        out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped" : "exact";
+        out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped"
+                        : p.projectile.method == foresight::ProjectileMethod::Engine  ? "engine"
+                                                                                       : "exact";
         out["position"] = jsonPosition(r.position);
         out["velocity"] = jsonVector(r.velocity);
         out["time"] = jsonFloat(r.time);
