@@ -649,4 +649,32 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     return Status::Ok;
 }
 
+RVec3 renderedPosition(std::span<const TrajectoryPoint> trajectory, float step, float renderTime,
+                       RenderSmoothing smoothing) {
+    if (trajectory.empty()) return RVec3(0);
+    const double dt = decimalValue(step);
+    if (!(dt > 0.0) || !std::isfinite(dt) || !std::isfinite(renderTime) || renderTime <= 0.0f)
+        return trajectory.front().position;
+    const double steps = static_cast<double>(renderTime) / dt;
+    const std::size_t last = trajectory.size() - 1;
+    std::size_t k = steps >= static_cast<double>(last) ? last : static_cast<std::size_t>(std::floor(steps));
+    // A quotient within rounding of an integer is that step (0.1 s at 0.02 s is step 5).
+    if (k < last && std::abs(steps - std::round(steps)) < 1e-9 * std::max(1.0, steps))
+        k = static_cast<std::size_t>(std::round(steps));
+    const double alpha = std::max(0.0, steps - static_cast<double>(k));
+    const TrajectoryPoint& point = trajectory[k];
+    switch (smoothing) {
+    case RenderSmoothing::None: return point.position;
+    case RenderSmoothing::Interpolate: {
+        if (k == 0) return point.position;
+        if (k == last && alpha > 0.0) return point.position;  // past the end: the last step
+        const DVec3 previous = toD(trajectory[k - 1].position);
+        return toR(previous + std::min(alpha, 1.0) * (toD(point.position) - previous));
+    }
+    case RenderSmoothing::Extrapolate:
+        return toR(toD(point.position) + toD(point.velocity) * (alpha * dt));
+    }
+    return point.position;
+}
+
 FORESIGHT_NAMESPACE_END

@@ -230,3 +230,26 @@ TEST(EngineProjectile, RestsOnAFloorAndBouncesAboveTheThreshold) {
     EXPECT_NEAR(result.velocity.y, 0.0f, 0.2f);
     EXPECT_GT(result.velocity.x, 0.7f);
 }
+
+TEST(EngineProjectile, RenderedPositionBetweenSteps) {
+    // A body moving along x at 1 m/s, stepped at 0.1 s: p[k] = (0.1 k, 0, 0).
+    std::vector<TrajectoryPoint> points(4);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        points[k].time = 0.1f * static_cast<float>(k);
+        points[k].position = RVec3(0.1f * static_cast<float>(k), 0, 0);
+        points[k].velocity = Vec3(1, 0, 0);
+    }
+    // 0.25 s: 2 steps done, a half step into the third. Float positions: 1e-7 m.
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 0.25f, RenderSmoothing::None).x, 0.2f, 1e-7f);
+    // Interpolation shows the state one step behind: halfway between p[1] and p[2].
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 0.25f, RenderSmoothing::Interpolate).x, 0.15f, 1e-7f);
+    // Extrapolation runs p[2] on with its velocity: the true position of this motion.
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 0.25f, RenderSmoothing::Extrapolate).x, 0.25f, 1e-7f);
+    // On a step time exactly, interpolation shows the previous step, the others that step.
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 0.2f, RenderSmoothing::Interpolate).x, 0.1f, 1e-7f);
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 0.2f, RenderSmoothing::None).x, 0.2f, 1e-7f);
+    // Before the start and past the end.
+    EXPECT_EQ(renderedPosition(points, 0.1f, -1.0f, RenderSmoothing::Extrapolate).x, 0.0f);
+    EXPECT_NEAR(renderedPosition(points, 0.1f, 5.0f, RenderSmoothing::Interpolate).x, 0.3f, 1e-7f);
+    EXPECT_EQ(renderedPosition({}, 0.1f, 1.0f, RenderSmoothing::None).x, 0.0f);
+}

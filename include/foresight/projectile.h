@@ -145,4 +145,24 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
                          const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
                          ProjectileResult& out);
 
+/// How a game shows a body between its fixed physics steps.
+enum class RenderSmoothing : std::uint8_t {
+    None,        ///< the state of the last completed step (no smoothing).
+    Interpolate, ///< between the last two completed steps, one step behind (Unity's Rigidbody
+                 ///< interpolation, Godot 4's physics interpolation).
+    Extrapolate, ///< the last completed step moved on with its velocity (Unity's extrapolation).
+};
+
+/// The position a game will draw at `renderTime` for a fixed-step trajectory (Engine or Stepped:
+/// Start, then one point per step of `step` seconds, as predictProjectile writes it). With
+/// k = floor(renderTime / step) steps completed and alpha = renderTime / step - k:
+/// None gives p[k]; Interpolate p[k-1] + alpha (p[k] - p[k-1]) (p[0] before the first step);
+/// Extrapolate p[k] + v[k] alpha step. Times before 0 give the start; times past the last step
+/// give the last point (extrapolated by its velocity for Extrapolate).
+/// @param trajectory  the points (at least one); an empty span gives the origin.
+/// @param step        the trajectory's step [Units: s] [Limit: > 0].
+/// @param renderTime  the frame's time since the start [Units: s].
+RVec3 renderedPosition(std::span<const TrajectoryPoint> trajectory, float step, float renderTime,
+                       RenderSmoothing smoothing);
+
 FORESIGHT_NAMESPACE_END
