@@ -1,4 +1,4 @@
-/// bench_replication.cpp: what replicating many entities costs per frame (issue 6). A
+/// bench_replication.cpp: what replicating many entities costs per frame. A
 /// benchmark, not a test.
 ///
 /// 100 000 entities with mixed DIS models as games use them: 45% FPW, 40% RVW, 8% RPB, 7% RVB

@@ -1,4 +1,4 @@
-/// bench_worlds.cpp: the collision worlds' speed (issue 3, item 5). A benchmark, not a test:
+/// bench_worlds.cpp: the collision worlds' speed. A benchmark, not a test:
 /// compare ratios measured in one run (scripts/bench.sh --worlds prints them).
 ///
 /// 1. Segment casts on a mesh of about one million triangles (makeBigMesh):

@@ -1,5 +1,5 @@
 // The `foresight` command-line tool, run as a user runs it: a child process with standard input,
-// output and error captured. Checks the scenario format's contract (/work/shared/spec/
+// output and error captured. Checks the scenario format's contract (docs/
 // scenario-format.md): results, number printing, every error rule, exit codes, determinism.
 //
 // Reference values come from closed forms (p + v t, the turning arc, sqrt(2 h / g)), never
@@ -1246,7 +1246,7 @@ TEST_F(cli, PlanNowhereNearPrintsNull) {
 } // namespace
 
 // ---------------------------------------------------------------------------------------------
-// aim: firing solutions (/work/shared/spec/aim-format.md). Each solution is checked with the
+// aim: firing solutions (docs/aim-format.md). Each solution is checked with the
 // closed-form flight from + v t + g t^2 / 2 against the target's p + v t + a t^2 / 2.
 
 namespace {

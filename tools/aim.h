@@ -1,6 +1,6 @@
 #pragma once
 /// @file aim.h
-/// `foresight aim FILE|-`: firing solutions (contract: /work/shared/spec/aim-format.md).
+/// `foresight aim FILE|-`: firing solutions (contract: docs/aim-format.md).
 /// JSON shots in, JSON solutions out, through foresight::aimProjectile. Errors follow the
 /// scenario format's rules: one `path: message` line per problem, exit status 2, nothing on
 /// standard output.

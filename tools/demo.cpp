@@ -153,7 +153,7 @@ bool addDemoLevel(Scenario& scenario, std::string& error) {
 }
 
 
-// --- The AI uses (issue 5): one firing solution, one planned throw, one danger answer of each
+// --- The AI uses: one firing solution, one planned throw, one danger answer of each
 // kind. They are computed when the demo runs (aim.h, throw_planner.h, danger.h), and the
 // predictions they imply (the shot, its target, the planned throw, the pedestrian) are appended
 // to the scenario, so that the scenario file reproduces them with `foresight predict`.

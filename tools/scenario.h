@@ -1,6 +1,6 @@
 #pragma once
 /// @file scenario.h
-/// The scenario format of `foresight predict` (docs: /work/shared/spec/scenario-format.md):
+/// The scenario format of `foresight predict` (docs: docs/scenario-format.md):
 /// JSON text -> validated library inputs -> library calls -> JSON result.
 ///
 /// Every problem is reported as one line `path: message` (path as in `predictions[3].velocity`)
