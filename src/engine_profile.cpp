@@ -261,8 +261,6 @@ void geometricSums(double d, double oneMinusD, std::uint64_t k, double& g, doubl
 
 }  // namespace detail
 
-double engineDampingFactor(const EngineProfile& profile) { return engineRecurrence(profile).d; }
-
 EngineFlightState engineFreeFlight(const EngineProfile& profile, RVec3 position, Vec3 velocity, Vec3 gravity,
                                    std::uint64_t steps) {
     const EngineRecurrence r = engineRecurrence(profile);

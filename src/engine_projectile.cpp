@@ -85,9 +85,11 @@ public:
                 return Status::Ok;
             }
             if (!isFinite(mPosition) || !isFinite(mVelocity)) return Status::NonFiniteResult;
-            TrajectoryEvent event = bounced ? TrajectoryEvent::Bounce : TrajectoryEvent::Step;
+            // A step in which a contact changed the velocity is a bounce point, with the normal
+            // of the contact that pushed hardest (resting and rolling steps too).
+            TrajectoryEvent event = mTouching ? TrajectoryEvent::Bounce : TrajectoryEvent::Step;
             if (k == steps) event = TrajectoryEvent::End;
-            mRecorder.add(t, event, mPosition, mVelocity, bounced ? mLastNormal : DVec3(0.0));
+            mRecorder.add(t, event, mPosition, mVelocity, mTouching ? mContactNormal : DVec3(0.0));
         }
         mResult.position = toR(mPosition);
         mResult.velocity = toF(mVelocity);
@@ -98,7 +100,8 @@ public:
     }
 
 private:
-    // One engine step; returns true when a contact stopped or reversed a real approach.
+    // One engine step; returns true when a contact stopped or reversed a real approach (an
+    // impact: counted in `bounces`, and what maxBounces stops at).
     bool step(bool first) {
         const double dt = mRec.dt;
         const DVec3 v0 = mVelocity;
@@ -122,7 +125,7 @@ private:
             freeMotion = v * dt;
         }
 
-        findSurfaces(freeMotion, v);
+        findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
         mVelocity = v;
 
@@ -140,11 +143,16 @@ private:
 
         bool bounced = false;
         mTouching = false;
+        double strongest = 0.0;
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.carried = s.acting && s.normalImpulse > 0.0;
             if (!s.acting || s.normalImpulse <= 0.0) continue;
             mTouching = true;
+            if (s.normalImpulse > strongest) {
+                strongest = s.normalImpulse;
+                mContactNormal = s.normal;
+            }
             // A real impact, not resting contact: faster than twice what gravity adds in a step.
             const double resting = 2.0 * std::abs(glm::dot(mGravity, s.normal)) * dt + 1e-3;
             if (s.approach > resting) {
@@ -157,7 +165,7 @@ private:
     }
 
     // Probes the surfaces already known, and casts the step's free motion for new ones.
-    void findSurfaces(const DVec3& freeMotion, const DVec3& velocity) {
+    void findSurfaces(const DVec3& freeMotion) {
         const double reach = contactReach();
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
@@ -180,9 +188,8 @@ private:
         mCount = kept;
 
         const double length = glm::length(freeMotion);
-        const DVec3 direction = length > 0.0 ? freeMotion / length : glm::normalize(velocity + DVec3(0, 0, 0));
         if (length > 0.0) {
-            const DVec3 to = mPosition + direction * (length + reach);
+            const DVec3 to = mPosition + freeMotion * ((length + reach) / length);
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
         }
@@ -303,16 +310,12 @@ private:
                 break;
             }
         }
-        const double tangentialMass = tangentialEffectiveMass();
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                frictionRow(s, v, tangentialMass, 1.0);
-                const double vn = glm::dot(v, s.normal);
-                const double accumulated = std::max(0.0, s.normalImpulse + (s.target - vn));
-                v += (accumulated - s.normalImpulse) * s.normal;
-                s.normalImpulse = accumulated;
+                frictionRow(s, v, 1.0);
+                normalRow(s, v, s.target);
             }
         }
     }
@@ -333,27 +336,20 @@ private:
             biased[i] = target - bias;
             unbiased[i] = s.bounce ? target : target - std::max(bias, 0.0);
         }
-        const double tangentialMass = tangentialEffectiveMass();
         for (int iteration = 0; iteration < 4; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double vn = glm::dot(v, s.normal);
-                const double accumulated = std::max(0.0, s.normalImpulse + (biased[i] - vn));
-                v += (accumulated - s.normalImpulse) * s.normal;
-                s.normalImpulse = accumulated;
-                if (iteration > kPhysXFrictionSkip) frictionRow(s, v, tangentialMass, 0.8);
+                normalRow(s, v, biased[i]);
+                if (iteration > kPhysXFrictionSkip) frictionRow(s, v, 0.8);
             }
         }
         const DVec3 positionVelocity = v;
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
-            const double vn = glm::dot(v, s.normal);
-            const double accumulated = std::max(0.0, s.normalImpulse + (unbiased[i] - vn));
-            v += (accumulated - s.normalImpulse) * s.normal;
-            s.normalImpulse = accumulated;
-            frictionRow(s, v, tangentialMass, 0.8);
+            normalRow(s, v, unbiased[i]);
+            frictionRow(s, v, 0.8);
         }
         mPushVelocity = positionVelocity - v;
     }
@@ -370,7 +366,6 @@ private:
         const double erp = h * erpInvDt;
         const double cfmCoefficient = (1.0 / erp - 1.0) * (1.0 / erp - 1.0) / ((1.0 / erp) * 4.0 * zeta * zeta);
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
-        const double tangentialMass = tangentialEffectiveMass();
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
         const DVec3 start = mPosition;
         DVec3 x = mPosition;
@@ -395,17 +390,14 @@ private:
                 const double accumulated = std::max(0.0, cf * (s.normalImpulse - (vn + rhs)));
                 vel += (accumulated - s.normalImpulse) * s.normal;
                 s.normalImpulse = accumulated;
-                frictionRow(s, vel, tangentialMass, 1.0);
+                frictionRow(s, vel, 1.0);
             }
             x += vel * h;
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 const double dist = s.gap + glm::dot(x - start, s.normal);
-                const double vn = glm::dot(vel, s.normal);
-                const double accumulated = std::max(0.0, s.normalImpulse - (vn + std::max(dist, 0.0) / h));
-                vel += (accumulated - s.normalImpulse) * s.normal;
-                s.normalImpulse = accumulated;
+                normalRow(s, vel, -std::max(dist, 0.0) / h);
             }
         }
         for (int i = 0; i < mCount; ++i) {
@@ -418,17 +410,15 @@ private:
         v = vel * mRec.d;
     }
 
-    double tangentialEffectiveMass() const {
-        if (!mRotates) return 1.0;
-        // Solid sphere I = 2/5 m r^2: K_t = 1/m + r^2/I = 3.5/m; Box2D's disk (I = m r^2 / 2): 3/m.
-        return mProfile.planar ? 1.0 / 3.0 : 1.0 / 3.5;
-    }
-
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
-    void frictionRow(Surface& s, DVec3& v, double tangentialMass, double relaxation) {
+    // The tangential effective mass per unit mass is 1 / (1 + arm^2 / (k R^2)) for a body of
+    // inertia k m R^2 (solid sphere k = 2/5: 1 / 3.5 at the surface; Box2D's disk k = 1/2: 1 / 3),
+    // 1 without rotation.
+    void frictionRow(Surface& s, DVec3& v, double relaxation) {
         const double radius = contactArm(s);
         const DVec3 arm = -radius * s.normal;
-        if (mRotates) tangentialMass = 1.0 / (1.0 + (mProfile.planar ? 2.0 : 2.5) * (radius * radius) / (mRadius * mRadius));
+        const double tangentialMass =
+            mRotates ? 1.0 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 1.0;
         DVec3 slip = v + glm::cross(mAngular, arm);
         slip -= glm::dot(slip, s.normal) * s.normal;
         DVec3 total = s.frictionImpulse - slip * (tangentialMass * relaxation);
@@ -450,9 +440,19 @@ private:
         v += impulse;
         if (mRotates) {
             // dw = I^-1 (r x P) with r = -arm n and I = k m R^2 (k = 2/5 sphere, 1/2 disk).
-            const double inverseK = mProfile.planar ? 2.0 : 2.5;
-            mAngular += -(inverseK * arm / (mRadius * mRadius)) * glm::cross(normal, impulse);
+            mAngular += -(inverseInertiaFactor() * arm / (mRadius * mRadius)) * glm::cross(normal, impulse);
         }
+    }
+
+    // 1 / k for the body's inertia k m R^2: a solid sphere (k = 2/5), Box2D's disk (k = 1/2).
+    double inverseInertiaFactor() const { return mProfile.planar ? 2.0 : 2.5; }
+
+    // One normal row with accumulated clamping: the sphere leaves the surface at `target` or
+    // faster, and the total impulse never pulls.
+    static void normalRow(Surface& s, DVec3& v, double target) {
+        const double accumulated = std::max(0.0, s.normalImpulse + (target - glm::dot(v, s.normal)));
+        v += (accumulated - s.normalImpulse) * s.normal;
+        s.normalImpulse = accumulated;
     }
 
     // Position-based correction after the move (Jolt: 2 iterations of 0.2 beyond the 0.02 slop,
@@ -498,7 +498,8 @@ private:
     DVec3 mSubstepPosition{0.0}; // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
-    DVec3 mLastNormal{0.0};
+    DVec3 mLastNormal{0.0};     // the last real impact's normal
+    DVec3 mContactNormal{0.0};  // this step's strongest contact's normal
 };
 
 }  // namespace

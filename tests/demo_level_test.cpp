@@ -7,6 +7,7 @@
 // volumes computed here from the vertices, and StaticWorld's brute force for the hits.
 
 #include "demo_level.h"
+#include "test_util.h"
 
 #include <foresight/foresight.h>
 #ifdef FORESIGHT_TEST_WITH_EMBREE
@@ -53,21 +54,7 @@ constexpr double kOuter = 15.5;      // outer wall bounds
 constexpr double kWallHeight = 4.0;
 constexpr double kDoorHalfWidth = 1.0, kDoorHeight = 2.5;  // doorway x in [-1, 1], y < 2.5 in the south wall
 
-/// A small deterministic generator (splitmix64): no <random> distributions (CONTRIBUTING).
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : mState(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (mState += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-private:
-    std::uint64_t mState;
-};
+using Random = ftest::Random;
 
 std::string readBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);

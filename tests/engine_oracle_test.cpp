@@ -14,6 +14,8 @@
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
 
+#include "test_util.h"
+
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -41,19 +43,7 @@ constexpr double kFreeFlightTolerance = 2e-3;  // [m]
 constexpr double kEndTolerance = 0.02;         // [m]
 constexpr double kShareTarget = 0.9;
 
-// SplitMix64: a small generator whose sequence is the same on every platform (the standard
-// distributions are not).
-struct Random {
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-};
+using Random = ftest::Random;
 
 struct Box {
     DVec3 center{0.0}, half{0.5};
@@ -106,7 +96,7 @@ Quat yawQuat(double yaw, bool aboutZ) {
 }
 
 std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCount) {
-    Random random{0x5EEDull + static_cast<std::uint64_t>(info.engine) * 1000 + std::string(info.name).size()};
+    Random random(0x5EEDull + static_cast<std::uint64_t>(info.engine) * 1000 + std::string(info.name).size());
     const bool planar = info.engine == PhysicsEngine::Box2D;
     const int rates[] = {30, 60, 90, 120};
     std::vector<Throw> throws;

@@ -21,6 +21,26 @@
 
 namespace ftest {
 
+/// A small deterministic generator (splitmix64): the same sequence on every platform, where the
+/// standard library's distributions are not (CONTRIBUTING).
+class Random {
+public:
+    explicit Random(std::uint64_t seed) : mState(seed) {}
+    std::uint64_t next() {
+        std::uint64_t z = (mState += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    /// Uniform in [lo, hi).
+    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    /// Uniform in [0, n) for n > 0.
+    int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+
+private:
+    std::uint64_t mState;
+};
+
 using DVec3 = glm::dvec3;
 using DQuat = glm::dquat;
 

@@ -145,9 +145,6 @@ Status validateEngineProfile(const EngineProfile& profile);
 /// shape's restitution).
 float combineMaterial(CombineRule rule, float a, float b);
 
-/// The damping factor `d` the profile applies to the linear velocity once per step [Limit: 0 .. 1].
-double engineDampingFactor(const EngineProfile& profile);
-
 /// A free-flying body's state after a whole number of engine steps.
 struct EngineFlightState {
     RVec3 position{0}; ///< [Units: m]

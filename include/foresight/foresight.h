@@ -7,6 +7,7 @@
 #include <foresight/config.h>
 #include <foresight/danger.h>
 #include <foresight/dead_reckoning.h>
+#include <foresight/engine_profile.h>
 #include <foresight/orientation.h>
 #include <foresight/projectile.h>
 #include <foresight/replication.h>
