@@ -51,7 +51,8 @@ enum class ProjectileMethod : std::uint8_t {
 enum class TrajectoryEvent : std::uint8_t {
     Start,  ///< the initial state (t = 0).
     Step,   ///< the state at a step boundary (Exact: a multiple of `step`).
-    Bounce, ///< an impact (Exact: at its exact time; Stepped, Engine: the step that hit). Has a normal.
+    Bounce, ///< an impact (Exact: at its exact time; Stepped: the step that hit; Engine: a step in
+            ///< which a contact changed the velocity, rolling included). Has a normal.
     Rest,   ///< the projectile came to rest (Exact only); it stays there until the end.
     Hit,    ///< the prediction stopped at this impact (maxBounces reached). Has a normal.
     End,    ///< the final state at the prediction time.
