@@ -32,6 +32,8 @@ namespace {
 
 // Surfaces followed at once (a sphere in a corner touches three).
 constexpr int kMaxSurfaces = 6;
+// Free-flight steps cleared by one world query at most (EngineRun::coast).
+constexpr std::uint64_t kMaxCoastSteps = 64;
 // Velocity iterations of the contact solver (several contacts converge; one is exact at once).
 constexpr int kSolverIterations = 10;
 // PhysX position iterations that carry no friction (measured against the Cocos build).
@@ -72,6 +74,11 @@ public:
         if (mProfile.planar) mVelocity.z = 0.0;
         mRecorder.add(0.0, TrajectoryEvent::Start, mPosition, mVelocity);
         for (std::uint64_t k = 1; k <= steps; ++k) {
+            if (const std::uint64_t taken = coast(k, steps); taken > 0) {
+                k += taken - 1;
+                if (!isFinite(mPosition) || !isFinite(mVelocity)) return Status::NonFiniteResult;
+                continue;
+            }
             const bool bounced = step(k == 1);
             const double t = static_cast<double>(k) * mRec.dt;
             if (bounced && mResult.bounces > mSettings.maxBounces) {
@@ -102,10 +109,10 @@ public:
 private:
     // One engine step; returns true when a contact stopped or reversed a real approach (an
     // impact: counted in `bounces`, and what maxBounces stops at).
-    bool step(bool first) {
+    // The step's velocity and free motion before contacts (the profile's recurrence or its
+    // first-step rule, then the speed limit).
+    void freeStep(bool first, const DVec3& v0, DVec3& v, DVec3& freeMotion) const {
         const double dt = mRec.dt;
-        const DVec3 v0 = mVelocity;
-        DVec3 v, freeMotion;
         if (first && mProfile.firstStep != FirstStepRule::Normal) {
             v = mProfile.firstStep == FirstStepRule::DampingOnly ? v0 * mRec.d : v0;
             freeMotion = v * dt;
@@ -113,17 +120,88 @@ private:
             v = mRec.d * v0 + mRec.b * dt * mGravity;
             freeMotion = mRec.a * dt * v0 + mRec.cg * dt * dt * mGravity;
         }
+        const double speed = glm::length(v);
+        if (speed > mProfile.maxLinearSpeed) {
+            v *= mProfile.maxLinearSpeed / speed;
+            freeMotion = v * dt;
+        }
+    }
+
+    // Angular damping of one step, and Jolt's cap on the spin.
+    void spinDown() {
         mAngular *= mAngularFactor;
         if (mProfile.engine == PhysicsEngine::Jolt) {
             // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
-        const double speed = glm::length(v);
-        if (speed > mProfile.maxLinearSpeed) {
-            v *= mProfile.maxLinearSpeed / speed;
-            freeMotion = v * dt;
+    }
+
+    // Free flight over several steps with one world query. While no surface is known, step k's
+    // only query is a cast of the sphere along its free motion, lengthened by the contact reach.
+    // The next n positions (computed exactly as step() computes them) lie within `bend` of the
+    // chord from the first to the last, so every one of those casts stays inside the capsule of
+    // radius r + reach + bend around the chord: when the world says nothing touches that capsule,
+    // the n steps are free flight, taken here without casts, with the same arithmetic and so the
+    // same numbers as step by step. Returns the steps taken from step k on (0: step k must be
+    // stepped). The horizon doubles after a clear capsule and halves after a touched one.
+    std::uint64_t coast(std::uint64_t k, std::uint64_t steps) {
+        if (mCount > 0 || (k == 1 && mProfile.firstStep != FirstStepRule::Normal)) return 0;
+        if (mCoastWait > 0) {
+            --mCoastWait;
+            return 0;
         }
+        const std::uint64_t n = std::min<std::uint64_t>(mCoastSteps, steps - k + 1);
+        if (n < 2) return 0;
+        const double dt = mRec.dt;
+        DVec3 position = mPosition, velocity = mVelocity;
+        mCoastPositions[0] = position;
+        for (std::uint64_t j = 1; j <= n; ++j) {
+            DVec3 v, freeMotion;
+            freeStep(false, velocity, v, freeMotion);
+            if (glm::length(v) * dt > mProfile.maxStepDistance) return 0;  // Box2D's limit acts
+            velocity = v;
+            position += freeMotion;
+            if (mProfile.planar) position.z = mPosition.z;
+            mCoastPositions[j] = position;
+            mCoastVelocities[j] = velocity;
+        }
+        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[n] - a;
+        const double chordSquared = glm::dot(chord, chord);
+        double bend = 0.0;
+        for (std::uint64_t j = 1; j < n; ++j) {
+            const DVec3 offset = mCoastPositions[j] - a;
+            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
+            bend = std::max(bend, glm::length(offset - chord * t));
+        }
+        SegmentCast capsule;
+        capsule.origin = toR(a);
+        capsule.displacement = toF(mCoastPositions[n] - toD(capsule.origin));
+        // The casts' own margins: the float rounding of origin and displacement, 1 mm besides.
+        capsule.radius = static_cast<float>((mRadius + contactReach() + bend + 1e-3) * (1.0 + 1e-5));
+        if (mWorld.mayTouch(capsule)) {
+            mCoastSteps = std::max<std::uint64_t>(mCoastSteps / 2, 2);
+            if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
+            return 0;
+        }
+        for (std::uint64_t j = 1; j <= n; ++j) {
+            spinDown();
+            mPosition = mCoastPositions[j];
+            mVelocity = mCoastVelocities[j];
+            const double t = static_cast<double>(k + j - 1) * dt;
+            mRecorder.add(t, k + j - 1 == steps ? TrajectoryEvent::End : TrajectoryEvent::Step, mPosition, mVelocity);
+        }
+        mTouching = false;
+        mCoastSteps = std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps);
+        return n;
+    }
+
+    bool step(bool first) {
+        const double dt = mRec.dt;
+        const DVec3 v0 = mVelocity;
+        DVec3 v, freeMotion;
+        freeStep(first, v0, v, freeMotion);
+        spinDown();
 
         findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
@@ -498,6 +576,9 @@ private:
     DVec3 mSubstepPosition{0.0}; // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
+    std::uint64_t mCoastSteps = 8;  // the next coast's horizon [steps]
+    int mCoastWait = 0;             // steps to take one at a time before coasting again
+    std::array<DVec3, kMaxCoastSteps + 1> mCoastPositions{}, mCoastVelocities{};
     DVec3 mLastNormal{0.0};     // the last real impact's normal
     DVec3 mContactNormal{0.0};  // this step's strongest contact's normal
 };

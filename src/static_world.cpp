@@ -5,6 +5,7 @@
 #include "internal.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -357,6 +358,95 @@ bool ClosestHitCaster::result(CastHit& hit) const {
 #else
 #define FORESIGHT_FLATTEN
 #endif
+
+namespace {
+
+// A capsule in double precision, with the margin that covers the float inputs' rounding and the
+// casts' surface tolerance (a conservative answer may only err towards true).
+struct Capsule {
+    glm::dvec3 a{0.0}, b{0.0};
+    double radius = 0.0;
+    bool valid = false;
+};
+
+Capsule prepareCapsule(const SegmentCast& capsule) {
+    Capsule c;
+    c.a = glm::dvec3(capsule.origin);
+    c.b = c.a + glm::dvec3(capsule.displacement);
+    const double magnitude = std::max({std::abs(c.a.x), std::abs(c.a.y), std::abs(c.a.z), std::abs(c.b.x),
+                                       std::abs(c.b.y), std::abs(c.b.z)});
+    c.radius = std::max(0.0, static_cast<double>(capsule.radius)) + 1e-4 + 1e-6 * magnitude;
+    c.valid = std::isfinite(magnitude) && std::isfinite(c.radius);
+    return c;
+}
+
+// Whether the boxes [lo, hi] and the capsule's bounds overlap.
+bool boundsMeet(const Capsule& c, const glm::dvec3& lo, const glm::dvec3& hi) {
+    const glm::dvec3 clo = glm::min(c.a, c.b) - c.radius, chi = glm::max(c.a, c.b) + c.radius;
+    return clo.x <= hi.x && clo.y <= hi.y && clo.z <= hi.z && lo.x <= chi.x && lo.y <= chi.y && lo.z <= chi.z;
+}
+
+}  // namespace
+
+bool mayTouch(const SegmentCast& capsule, const Plane& plane) {
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dvec3 n(plane.normal);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) return true;
+    const double d = static_cast<double>(plane.distance);
+    const double sa = (glm::dot(n, c.a) - d) / length, sb = (glm::dot(n, c.b) - d) / length;
+    return !((sa > c.radius && sb > c.radius) || (sa < -c.radius && sb < -c.radius));
+}
+
+bool mayTouch(const SegmentCast& capsule, const Sphere& sphere) {
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dvec3 centre(sphere.center), ab = c.b - c.a;
+    const double lengthSquared = glm::dot(ab, ab);
+    const double t = lengthSquared > 0.0 ? std::clamp(glm::dot(centre - c.a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
+    const double reach = c.radius + static_cast<double>(sphere.radius) * (1.0 + 1e-6);
+    const glm::dvec3 offset = c.a + ab * t - centre;
+    return !(glm::dot(offset, offset) > reach * reach);
+}
+
+bool mayTouch(const SegmentCast& capsule, const OrientedBox& box) {
+    Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dquat q(box.orientation);
+    const double norm = glm::length(q);
+    if (!(norm > 0.0)) return true;
+    const glm::dquat inverse = glm::conjugate(q / norm);
+    const glm::dvec3 centre(box.center);
+    c.a = inverse * (c.a - centre);
+    c.b = inverse * (c.b - centre);
+    const glm::dvec3 half = glm::dvec3(box.halfExtents) * (1.0 + 1e-6);
+    return boundsMeet(c, -half, half);
+}
+
+bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dvec3 p(triangle.a), q(triangle.b), r(triangle.c);
+    if (!boundsMeet(c, glm::min(p, glm::min(q, r)), glm::max(p, glm::max(q, r)))) return false;
+    const glm::dvec3 n = glm::cross(q - p, r - p);
+    const double area2 = glm::length(n);
+    if (!(area2 > 0.0)) return true;
+    const double sa = glm::dot(n, c.a - p) / area2, sb = glm::dot(n, c.b - p) / area2;
+    return !((sa > c.radius && sb > c.radius) || (sa < -c.radius && sb < -c.radius));
+}
+
+bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
+    for (const Plane& p : mPlanes)
+        if (foresight::mayTouch(capsule, p)) return true;
+    for (const Sphere& s : mSpheres)
+        if (foresight::mayTouch(capsule, s)) return true;
+    for (const OrientedBox& b : mBoxes)
+        if (foresight::mayTouch(capsule, b)) return true;
+    for (const Triangle& t : mTriangles)
+        if (foresight::mayTouch(capsule, t)) return true;
+    return false;
+}
 
 FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     ClosestHitCaster caster(cast, mSettings.surfaceTolerance);

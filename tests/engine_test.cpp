@@ -7,6 +7,8 @@
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -252,4 +254,136 @@ TEST(EngineProjectile, RenderedPositionBetweenSteps) {
     EXPECT_EQ(renderedPosition(points, 0.1f, -1.0f, RenderSmoothing::Extrapolate).x, 0.0f);
     EXPECT_NEAR(renderedPosition(points, 0.1f, 5.0f, RenderSmoothing::Interpolate).x, 0.3f, 1e-7f);
     EXPECT_EQ(renderedPosition({}, 0.1f, 1.0f, RenderSmoothing::None).x, 0.0f);
+}
+
+namespace {
+
+// Forwards to a StaticWorld and counts the queries; with `answerTouch` false it leaves mayTouch
+// at CollisionWorld's default (always true), so the Engine method casts every step.
+class CountingWorld final : public CollisionWorld {
+public:
+    CountingWorld(const StaticWorld& world, bool answerTouch) : mWorld(world), mAnswerTouch(answerTouch) {}
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
+        ++casts;
+        return mWorld.castSegment(cast, hit);
+    }
+    bool mayTouch(const SegmentCast& capsule) const override {
+        ++touches;
+        return mAnswerTouch ? mWorld.mayTouch(capsule) : true;
+    }
+    mutable std::size_t casts = 0, touches = 0;
+
+private:
+    const StaticWorld& mWorld;
+    bool mAnswerTouch;
+};
+
+StaticWorld randomScene(ftest::Random& random) {
+    StaticWorld world;
+    EXPECT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    for (int i = 0; i < 3; ++i) {
+        OrientedBox box;
+        const double around = random.uniform(0, 2 * M_PI), distance = random.uniform(3, 9);
+        box.center = RVec3(distance * std::cos(around), random.uniform(0.5, 2), distance * std::sin(around));
+        box.halfExtents = Vec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1, 4));
+        box.orientation = glm::angleAxis(static_cast<float>(random.uniform(0, M_PI)), Vec3(0, 1, 0));
+        EXPECT_EQ(world.add(box), Status::Ok);
+    }
+    const double x = random.uniform(-6, 6), z = random.uniform(-6, 6);
+    EXPECT_EQ(world.add(Sphere{RVec3(x, random.uniform(0, 3), z), static_cast<float>(random.uniform(0.3, 1.0))}),
+              Status::Ok);
+    // A slanted roof triangle overhead: a parallel ceiling must stop coasting too.
+    EXPECT_EQ(world.add(Triangle{RVec3(-8, 5.5, -8), RVec3(8, 6.5, -8), RVec3(0, 6, 8)}), Status::Ok);
+    return world;
+}
+
+}  // namespace
+
+// Coasting (one mayTouch query for many free-flight steps) must give exactly the steps of casting
+// every step: the same arithmetic, only the queries are skipped. Random scenes, every profile.
+TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
+    ftest::Random random(2026);
+    std::size_t castsEveryStep = 0, castsCoasting = 0;
+    for (int round = 0; round < 40; ++round) {
+        const StaticWorld world = randomScene(random);
+        for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
+                                     PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
+                                     PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
+            ProjectileSettings settings;
+            settings.method = ProjectileMethod::Engine;
+            settings.engine = engineProfile(engine);
+            settings.engine.timestep = static_cast<float>(1.0 / (30 + 30 * random.below(4)));
+            settings.step = settings.engine.timestep;
+            settings.radius = static_cast<float>(random.uniform(0.05, 0.3));
+            settings.restitution = static_cast<float>(random.uniform(0.2, 0.8));
+            settings.friction = static_cast<float>(random.uniform(0, 0.6));
+            const RVec3 start(random.uniform(-1, 1), random.uniform(0.5, 2), random.uniform(-1, 1));
+            const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(3, 15);
+            const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(1, 9)),
+                                static_cast<float>(speed * std::sin(heading)));
+            const float time = 3.0f;
+            CountingWorld plain(world, false), coasting(world, true);
+            std::vector<TrajectoryPoint> a(400), b(400);
+            ProjectileResult ra, rb;
+            ASSERT_EQ(predictProjectile(start, velocity, time, settings, &plain, a, ra), Status::Ok);
+            ASSERT_EQ(predictProjectile(start, velocity, time, settings, &coasting, b, rb), Status::Ok);
+            ASSERT_EQ(ra.trajectorySize, rb.trajectorySize);
+            for (std::size_t i = 0; i < ra.trajectorySize; ++i) {
+                // Bitwise: both runs do the same floating-point operations.
+                ASSERT_EQ(a[i].position, b[i].position) << engineName(engine) << " round " << round << " point " << i;
+                ASSERT_EQ(a[i].velocity, b[i].velocity) << engineName(engine) << " round " << round << " point " << i;
+                ASSERT_EQ(a[i].event, b[i].event) << engineName(engine) << " round " << round << " point " << i;
+            }
+            EXPECT_EQ(ra.bounces, rb.bounces);
+            EXPECT_EQ(ra.position, rb.position);
+            castsEveryStep += plain.casts;
+            castsCoasting += coasting.casts + coasting.touches;
+        }
+    }
+    // About half the steps of these throws are free flight away from every surface (the rest
+    // bounce, roll or pass near walls): coasting must save at least 30 % of the queries (it
+    // saves 43 % today).
+    EXPECT_LT(static_cast<double>(castsCoasting), 0.7 * static_cast<double>(castsEveryStep))
+        << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
+}
+
+// mayTouch's promise, checked against the casts: when it says no surface comes within the
+// capsule, no sphere cast inside the capsule (along it, across it, back) hits anything.
+TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
+    ftest::Random random(77);
+    int clear = 0, touched = 0;
+    for (int round = 0; round < 200; ++round) {
+        const StaticWorld world = randomScene(random);
+        for (int i = 0; i < 50; ++i) {
+            SegmentCast capsule;
+            capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));
+            capsule.displacement = Vec3(static_cast<float>(random.uniform(-3, 3)), static_cast<float>(random.uniform(-3, 3)),
+                                        static_cast<float>(random.uniform(-3, 3)));
+            capsule.radius = static_cast<float>(random.uniform(0, 0.8));
+            if (world.mayTouch(capsule)) {
+                ++touched;
+                continue;
+            }
+            ++clear;
+            const ftest::DVec3 a = ftest::toD(capsule.origin), d = ftest::toD(capsule.displacement);
+            for (int k = 0; k < 8; ++k) {
+                // A smaller sphere between two points of the capsule's axis, pushed sideways by
+                // what the radius difference leaves.
+                const double r = capsule.radius * random.uniform(0, 0.9);
+                const double slack = (capsule.radius - r) * 0.9;
+                const ftest::DVec3 side = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
+                                   random.uniform(0, slack);
+                const ftest::DVec3 from = a + d * random.uniform(0, 1) + side, to = a + d * random.uniform(0, 1) + side;
+                SegmentCast cast;
+                cast.origin = RVec3(from);
+                cast.displacement = Vec3(to - from);
+                cast.radius = static_cast<float>(r);
+                CastHit hit;
+                EXPECT_FALSE(world.castSegment(cast, hit)) << "round " << round << " capsule " << i << " cast " << k;
+            }
+        }
+    }
+    // Both answers occur (the test exercises both sides).
+    EXPECT_GT(clear, 1000);
+    EXPECT_GT(touched, 1000);
 }

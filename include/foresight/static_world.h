@@ -114,6 +114,18 @@ private:
     glm::dvec3 mDisplacement{0.0};
 };
 
+/// Conservative capsule tests, for CollisionWorld::mayTouch of worlds that find their candidate
+/// shapes themselves: false only when the shape is certainly farther than `capsule.radius` from
+/// the segment (with a margin for rounding); true may be a false alarm. Unvalidated shapes give
+/// unspecified answers but never undefined behaviour. No allocation.
+bool mayTouch(const SegmentCast& capsule, const Plane& plane);
+/// See mayTouch(const SegmentCast&, const Plane&). Exact: the segment's distance to the centre.
+bool mayTouch(const SegmentCast& capsule, const Sphere& sphere);
+/// See mayTouch(const SegmentCast&, const Plane&). The segment's bounds in the box's frame.
+bool mayTouch(const SegmentCast& capsule, const OrientedBox& box);
+/// See mayTouch(const SegmentCast&, const Plane&). The bounds, then the triangle's plane.
+bool mayTouch(const SegmentCast& capsule, const Triangle& triangle);
+
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
     /// A cast that starts this close behind a one-sided surface and moves into it still hits
@@ -145,6 +157,9 @@ public:
     std::size_t shapeCount() const;
 
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override;
+
+    /// Every shape through the conservative mayTouch tests above (a linear scan).
+    bool mayTouch(const SegmentCast& capsule) const override;
 
     /// The shapes as added (normalised).
     std::span<const Plane> planes() const { return mPlanes; }

@@ -44,6 +44,19 @@ public:
 
     /// Finds the first hit along `cast`. Returns false (and leaves `hit` undefined) if none.
     virtual bool castSegment(const SegmentCast& cast, CastHit& hit) const = 0;
+
+    /// Whether any surface may lie within `capsule.radius` of the segment from `capsule.origin`
+    /// to `capsule.origin + capsule.displacement` (a capsule; every surface counts, from either
+    /// side and whatever the segment's direction). False is a promise: a castSegment whose
+    /// swept sphere stays inside the capsule hits nothing. True may be a false alarm; it only
+    /// costs speed. ProjectileMethod::Engine asks it to clear many steps of free flight with one
+    /// query instead of one cast per step. The default answers true (the world cannot tell:
+    /// callers then cast step by step), so a world that implements only castSegment stays
+    /// correct.
+    virtual bool mayTouch(const SegmentCast& capsule) const {
+        (void)capsule;
+        return true;
+    }
 };
 
 /// Signature of a user ray cast: return true and fill `hit` on a hit.

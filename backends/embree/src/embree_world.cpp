@@ -599,4 +599,53 @@ bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     return caster.result(hit);
 }
 
+namespace {
+
+struct TouchQuery {
+    const Triangle* triangles = nullptr;
+    SegmentCast capsule;
+    bool touched = false;
+};
+
+bool touchCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<TouchQuery*>(args->userPtr);
+    if (q->touched || !mayTouch(q->capsule, q->triangles[args->primID])) return false;
+    q->touched = true;
+    args->query->radius = 0.0f;  // found one: the traversal may stop
+    return true;
+}
+
+}  // namespace
+
+bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
+    if (mPrimitives.mayTouch(capsule)) return true;
+    const Impl* impl = mImpl.get();
+    if (!impl || impl->triangles.empty()) return false;
+    if (!impl->committed || !impl->scene) {
+        for (const Triangle& t : impl->triangles)
+            if (foresight::mayTouch(capsule, t)) return true;
+        return false;
+    }
+    const DVec3 a = toD(capsule.origin), d(capsule.displacement);
+    const DVec3 centre = a + 0.5 * d;
+    if (!std::isfinite(centre.x + centre.y + centre.z)) return true;
+    TouchQuery q;
+    q.triangles = impl->triangles.data();
+    q.capsule = capsule;
+    RTCPointQuery query;
+    query.x = static_cast<float>(centre.x);
+    query.y = static_cast<float>(centre.y);
+    query.z = static_cast<float>(centre.z);
+    query.time = 0.0f;
+    // A sphere holding the capsule, grown by the centre's rounding to float and a margin.
+    const double rounding = glm::length(DVec3(query.x, query.y, query.z) - centre);
+    const double magnitude = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    query.radius = floatUp((0.5 * glm::length(d) + std::max(0.0, static_cast<double>(capsule.radius)) + rounding +
+                            1e-4 + 1e-6 * magnitude) * (1.0 + 1e-6));
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(impl->scene, &query, &context, touchCallback, &q);
+    return q.touched;
+}
+
 FORESIGHT_NAMESPACE_END

@@ -146,6 +146,9 @@ public:
     const StaticWorld& primitives() const { return mPrimitives; }
 
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override;
+    /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
+    /// capsule) whose candidates go through mayTouch(capsule, triangle); it stops at the first.
+    bool mayTouch(const SegmentCast& capsule) const override;
 
 private:
     struct Impl;
