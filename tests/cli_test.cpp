@@ -1064,6 +1064,23 @@ TEST_F(cli, PredictSvgDrawsEveryPathInBothViewsAndKeepsTheJson) {
     EXPECT_EQ(text.find("inf"), std::string::npos);
 }
 
+TEST_F(cli, PredictSvgDrawsEngineMatchedFlightsInTheirOwnStyle) {
+    const std::string scenario = scenarioWith(
+        R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2},
+           {"id": "lob_physx", "model": "projectile", "method": "engine", "engine": {"profile": "physx"},
+            "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2, "radius": 0.1})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})");
+    const fs::path svg = mDir / "out.svg";
+    const CliRun run = runCli({"predict", write("s.json", scenario).string(), "--svg", svg.string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    const std::string text = readFile(svg);
+    EXPECT_EQ(countOf(text, "<polyline"), 4u);
+    // The engine's line: the first green shade, thicker, named with its engine in the legend.
+    EXPECT_EQ(countOf(text, "<polyline fill=\"none\" stroke=\"#27ae60\" stroke-width=\"3\""), 2u);
+    EXPECT_NE(text.find(">lob_physx (as physx steps it)<"), std::string::npos);
+    EXPECT_NE(text.find(">lob (exact)<"), std::string::npos);
+}
+
 TEST_F(cli, PicturesThatCannotBeWrittenExitTwoNamingTheFile) {
     const fs::path file = write("s.json", projectile(""));
     const std::string target = (mDir / "no" / "such" / "dir" / "out.svg").string();
@@ -1120,7 +1137,18 @@ TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
         ASSERT_FALSE(prediction.at("path").empty()) << prediction.at("id");
         for (const auto& point : prediction["path"]) bounces += point.at("event") == "bounce" ? 1 : 0;
     }
-    EXPECT_EQ(document["predictions"].size(), 12u);  // the article's 8, the AI's 4
+    EXPECT_EQ(document["predictions"].size(), 13u);  // the article's 8, the engine-matched one, the AI's 4
+    // The engine-matched flight is its own variant, named with its engine, one point per 60 Hz step.
+    bool engineDrawn = false;
+    for (const auto& prediction : document.at("predictions")) {
+        if (prediction.at("id") != "courtyard_jolt") continue;
+        engineDrawn = true;
+        EXPECT_EQ(prediction.at("variant"), "engine");
+        EXPECT_EQ(prediction.at("method"), "engine");
+        EXPECT_EQ(prediction.at("engine"), "jolt");
+        EXPECT_EQ(prediction.at("path").size(), 181u);  // the start and 180 steps
+    }
+    EXPECT_TRUE(engineDrawn);
     EXPECT_GT(bounces, 5u);
     EXPECT_EQ(document.at("world").at("meshes").size(), 1u);  // the demo level
     // The planned grenade's blast (5 m) where the throw ends at its fuse.

@@ -48,20 +48,29 @@ const char* methodName(const Prediction& p) {
     case Model::Linear: return "linear";
     case Model::Accelerated: return "accelerated";
     case Model::Orientation: return "orientation";
-    case Model::Projectile: return p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped" : "exact";
+    case Model::Projectile:
+        switch (p.projectile.method) {
+        case foresight::ProjectileMethod::Stepped: return "stepped";
+        case foresight::ProjectileMethod::Exact: return "exact";
+        case foresight::ProjectileMethod::Engine: return "engine";
+        }
+        return "exact";
     case Model::Vehicle: return p.vehicleIterative ? "iterative" : "exact";
     case Model::DeadReckoning: return foresight::deadReckoningAlgorithmName(p.deadReckoning);
     }
     return "";
 }
 
-/// "faithful": the reference article's method; "exact": the exact one (docs/viewer-format.md).
+/// "faithful": the reference article's method; "exact": the exact one; "engine": the flight as a
+/// physics engine steps it (docs/viewer-format.md).
 const char* variantName(const Prediction& p) {
     switch (p.model) {
     case Model::Linear: return "faithful";
     case Model::Accelerated: return "exact";
     case Model::Orientation: return "exact";
-    case Model::Projectile: return p.projectile.method == foresight::ProjectileMethod::Stepped ? "faithful" : "exact";
+    case Model::Projectile:
+        if (p.projectile.method == foresight::ProjectileMethod::Engine) return "engine";
+        return p.projectile.method == foresight::ProjectileMethod::Stepped ? "faithful" : "exact";
     case Model::Vehicle: return p.vehicleIterative ? "faithful" : "exact";
     case Model::DeadReckoning: return "exact";
     }
@@ -206,6 +215,10 @@ Json pictureDocument(const Scenario& scenario, const std::vector<PredictionResul
         entry["variant"] = variantName(p);
         entry["time"] = jsonFloat(p.time);
         if (p.model == Model::Projectile) {
+            if (p.projectile.method == foresight::ProjectileMethod::Engine) {
+                entry["engine"] = foresight::engineName(p.projectile.engine.engine);
+                entry["timestep"] = jsonFloat(p.projectile.engine.timestep);
+            }
             entry["radius"] = jsonFloat(p.projectile.radius);
             entry["path"] = projectilePath(results[i], bounds);
         } else {

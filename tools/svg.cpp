@@ -22,6 +22,7 @@ constexpr double kLegendLine = 18;      // px per legend entry
 
 const char* const kFaithfulColours[] = {"#e67e22", "#c0392b", "#b9770e", "#d35400"};
 const char* const kExactColours[] = {"#1f6fd1", "#16a085", "#6c3483", "#117a65"};
+const char* const kEngineColours[] = {"#27ae60", "#7d9d0a", "#1e8449", "#58a618"};
 
 std::string number(double value) {
     char buffer[32];
@@ -197,6 +198,7 @@ std::string axes(const Panel& panel) {
 struct Style {
     std::string colour;
     bool faithful = false;
+    bool engine = false;  // an engine-matched flight: a thicker solid line, green shades
 };
 
 std::string world(const Panel& panel, const Json& document) {
@@ -274,7 +276,8 @@ std::string predictions(const Panel& panel, const Json& document, const std::vec
                                    "\" stroke=\"" + style.colour + "\" stroke-width=\"1\"");
             }
         }
-        std::string line = "<polyline fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"2\"" +
+        std::string line = "<polyline fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"" +
+                           (style.engine ? "3" : "2") + "\"" +
                            (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + " points=\"";
         for (const auto& point : path) line += panel.point(vec3(member(point, "position"))) + " ";
         out += line + "\"/>\n";
@@ -326,11 +329,14 @@ std::string picture(const Json& document) {
     side.top = top.top + top.height() + 80;
 
     std::vector<Style> styles;
-    std::size_t faithfulCount = 0, exactCount = 0;
+    std::size_t faithfulCount = 0, exactCount = 0, engineCount = 0;
     for (const auto& prediction : member(document, "predictions")) {
         Style style;
         style.faithful = member(prediction, "variant") == "faithful";
-        style.colour = style.faithful ? kFaithfulColours[faithfulCount++ % 4] : kExactColours[exactCount++ % 4];
+        style.engine = member(prediction, "variant") == "engine";
+        style.colour = style.faithful ? kFaithfulColours[faithfulCount++ % 4]
+                       : style.engine ? kEngineColours[engineCount++ % 4]
+                                      : kExactColours[exactCount++ % 4];
         styles.push_back(style);
     }
     const double legendTop = side.top + side.height() + 60;
@@ -361,9 +367,11 @@ std::string picture(const Json& document) {
         const Style& style = styles[index++];
         const std::string id = member(prediction, "id").is_string() ? member(prediction, "id").get<std::string>()
                                                                     : member(prediction, "id").dump();
-        const std::string method = member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
+        std::string method = member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
+        if (style.engine && member(prediction, "engine").is_string())
+            method = "as " + member(prediction, "engine").get<std::string>() + " steps it";
         out += "<line x1=\"" + number(kMargin) + "\" y1=\"" + number(y) + "\" x2=\"" + number(kMargin + 36) + "\" y2=\"" +
-               number(y) + "\" stroke=\"" + style.colour + "\" stroke-width=\"2\"" +
+               number(y) + "\" stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") + "\"" +
                (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + "/>\n";
         out += "<text x=\"" + number(kMargin + 44) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">" + escape(id) + " (" +
                escape(method) + (style.faithful ? ": the article's method" : "") + ")</text>\n";

@@ -3,7 +3,7 @@
 
 const MAX_PROBLEMS = 12;
 const DRAWN_MODELS = new Set(['projectile', 'vehicle', 'linear', 'accelerated']);
-const VARIANTS = new Set(['faithful', 'exact']);
+const VARIANTS = new Set(['faithful', 'exact', 'engine']);
 
 export function readPictureDocument(page) {
     const element = page.getElementById('foresight-data');
@@ -150,7 +150,9 @@ function checkPrediction(prediction, i, problems) {
         expect(DRAWN_MODELS.has(prediction.model), problems, `${where}.model`,
             `expected one of projectile, vehicle, linear, accelerated, orientation; found ${JSON.stringify(prediction.model)}`),
         expect(VARIANTS.has(prediction.variant), problems, `${where}.variant`,
-            `expected "faithful" or "exact"; found ${JSON.stringify(prediction.variant)}`),
+            `expected "faithful", "exact" or "engine"; found ${JSON.stringify(prediction.variant)}`),
+        prediction.engine === undefined || expect(typeof prediction.engine === 'string', problems, `${where}.engine`,
+            'expected a string (the engine name)'),
         prediction.time === undefined || number(prediction, 'time', problems, where, (t) => t >= 0, 'a time >= 0'),
         prediction.radius === undefined || number(prediction, 'radius', problems, where, (r) => r >= 0, 'a radius >= 0'),
         prediction.half_extents === undefined || (vec3(prediction, 'half_extents', problems, where)
@@ -180,6 +182,7 @@ function checkPrediction(prediction, i, problems) {
     return {
         id, model: prediction.model, method: String(prediction.method ?? prediction.model),
         variant: prediction.variant,
+        engine: prediction.engine,
         time: prediction.time ?? path[path.length - 1].t,
         radius: prediction.radius ?? 0,
         halfExtents: prediction.half_extents ?? [0.9, 0.7, 2.2],

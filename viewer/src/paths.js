@@ -21,8 +21,9 @@ export function buildPath(prediction, color, frame) {
         // Screen-space widths: visible at any zoom. The faithful path is dashed as well as
         // warm-coloured and drawn thinner on top of the exact one, so that where the two
         // coincide both still show.
+        const engine = prediction.variant === 'engine';
         const material = new LineMaterial({
-            color, linewidth: faithful ? 2 : 4, dashed: faithful,
+            color, linewidth: faithful ? 2 : engine ? 3 : 4, dashed: faithful,
             dashSize: frame.marker * 4, gapSize: frame.marker * 2.5, worldUnits: false,
         });
         const line = new Line2(geometry, material);

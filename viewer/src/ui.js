@@ -8,7 +8,7 @@ function element(tag, className, parent, text) {
     return node;
 }
 
-const VARIANT_NAMES = { faithful: 'faithful (article)', exact: 'exact' };
+const VARIANT_NAMES = { faithful: 'faithful (article)', exact: 'exact', engine: 'engine-matched' };
 const hex = (color) => `#${color.toString(16).padStart(6, '0')}`;
 
 /** entries: [{prediction, color}]; onToggle(index, visible) when a row is clicked. */
@@ -22,9 +22,10 @@ export function buildLegend(root, title, entries, keys, onToggle) {
         swatch.style.background = prediction.variant === 'faithful'
             ? `repeating-linear-gradient(90deg, ${color} 0 5px, transparent 5px 8px)` : color;
         element('span', 'fv-id', row, prediction.id);
+        const method = prediction.engine ? `as ${prediction.engine} steps it` : prediction.method;
         element('span', 'fv-variant', row,
             `${VARIANT_NAMES[prediction.variant]} · ${prediction.model}${
-                prediction.method !== prediction.model ? ` ${prediction.method}` : ''}`);
+                method !== prediction.model ? ` ${method}` : ''}`);
         let visible = true;
         row.addEventListener('click', () => {
             visible = !visible;
