@@ -1008,6 +1008,75 @@ TEST_F(cli, CompareRefusesBadUsageWithStatusTwo) {
     }
 }
 
+TEST_F(cli, CompareEngineRefusesWhatTheHarnessesCannotBuild) {
+    const std::string box = R"({"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 0.9659258, "x": 0.2588190, "y": 0, "z": 0}})";
+    const std::string throwJson = R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 3, "radius": 0.1})";
+    struct Case {
+        std::vector<std::string> args;
+        const char* message;
+    };
+    const fs::path good = write("good.json", scenarioWith(throwJson, R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    const Case cases[] = {
+        {{"compare", good.string(), "--engine", "havok"}, "unknown --engine \"havok\"; expected one of jolt, physx"},
+        {{"compare", "--builtin", "--engine", "jolt"}, "--engine compares a scenario FILE"},
+        {{"compare", "--engine", "jolt"}, "expected a scenario FILE"},
+        {{"compare", write("sphere.json", scenarioWith(throwJson, R"({"spheres": [{"center": [0, 0, 5], "radius": 1}]})")).string(),
+          "--engine", "jolt"},
+         "world.spheres: compare --engine sends planes and boxes"},
+        {{"compare", write("tri.json", scenarioWith(throwJson, R"({"triangles": [[[0, 0, 0], [1, 0, 0], [0, 0, 1]]]})")).string(),
+          "--engine", "physx"},
+         "world.triangles: compare --engine sends planes and boxes"},
+        {{"compare", write("tilted.json", scenarioWith(throwJson, R"({"boxes": [)" + box + "]}")).string(), "--engine", "box2d"},
+         "world.boxes[0].orientation: box2d runs in the x-y plane"},
+        {{"compare", write("long.json", scenarioWith(R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 4000})")).string(),
+          "--engine", "jolt"},
+         "predictions[0].time: the engine would take"},
+        {{"compare", good.string(), "--engine", "jolt", "--harness-dir", (mDir / "nowhere").string()}, "cannot run Jolt"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = runCli(c.args);
+        EXPECT_EQ(run.status, 2) << c.args.back();
+        EXPECT_TRUE(run.out.empty()) << run.out;
+        EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
+    }
+}
+
+// The real Bullet (the native harness the tests build) against the predictions: a lob onto a
+// floor towards a wall. The Bullet profile follows Bullet's steps (mm after 3 s: the oracle test
+// measures it on many throws); the exact parabola ends metres away.
+TEST_F(cli, CompareEngineRunsTheRealEngineBesideThePredictions) {
+#ifndef FORESIGHT_TEST_NATIVE_HARNESS
+    GTEST_SKIP() << "foresight_engine_harness is not built";
+#else
+    const std::string scenario = scenarioWith(
+        R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": [1, 6, 5],
+            "time": 3, "radius": 0.1, "restitution": 0.5, "friction": 0.3})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}],
+            "boxes": [{"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}]})");
+    const fs::path file = write("lob.json", scenario);
+    const CliRun run = runCli({"compare", file.string(), "--engine", "bullet", "--json", "-"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    const Json out = Json::parse(run.out);
+    EXPECT_EQ(out.at("engine"), "bullet");
+    const Json& lob = out.at("projectiles").at(0);
+    EXPECT_EQ(lob.at("id"), "lob");
+    EXPECT_EQ(lob.at("steps"), 180);
+    EXPECT_EQ(lob.at("engine_positions").size(), 181u);
+    EXPECT_EQ(lob.at("predicted_positions").size(), 181u);
+    // The same first contact step, free flight to float rounding (Bullet steps in float).
+    EXPECT_EQ(lob.at("first_contact_step").at("engine"), lob.at("first_contact_step").at("predicted"));
+    EXPECT_GT(lob.at("first_contact_step").at("engine").get<int>(), 10);
+    EXPECT_LT(lob.at("free_flight_worst").get<double>(), 2e-3);
+    EXPECT_LT(lob.at("end_distance").at("engine").get<double>(), 0.02);
+    EXPECT_GT(lob.at("end_distance").at("exact").get<double>(), 0.5);
+    // The table names the projectile and the engine.
+    const CliRun table = runCli({"compare", file.string(), "--engine", "bullet"});
+    ASSERT_EQ(table.status, 0) << table.err;
+    EXPECT_NE(table.out.find("predictions against Bullet"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("\nlob "), std::string::npos) << table.out;
+#endif
+}
+
 #ifdef NDEBUG  // 576 Bullet simulations: seconds in a release build, too slow under sanitizers
 TEST_F(cli, CompareBuiltinPrintsTheReadmeTable) {
     if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";

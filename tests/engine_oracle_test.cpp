@@ -88,7 +88,7 @@ const EngineInfo kEngines[] = {
     {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.6},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
-    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.9, 0.15},
+    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.75, 0.15},
     {"box2d", PhysicsEngine::Box2D, "native", 0.2, 0.2},
 };
 
@@ -265,6 +265,9 @@ int firstContactStep(const std::vector<DVec3>& velocities, const EngineProfile& 
     EngineProfile p = profile;
     p.linearDamping = static_cast<float>(c - profile.addedLinearDamping);
     p.timestep = static_cast<float>(dt);
+    // One step from the state after step k - 1: a normal step (the first-step rule, Godot's, is
+    // for a body's first step only; step 1 itself is skipped below).
+    p.firstStep = FirstStepRule::Normal;
     for (std::size_t k = 1; k < velocities.size(); ++k) {
         const EngineFlightState f = engineFreeFlight(p, RVec3(0.0f), Vec3(velocities[k - 1]), Vec3(0, -9.81f, 0), 1);
         if (k == 1 && profile.firstStep != FirstStepRule::Normal) continue;

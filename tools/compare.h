@@ -29,7 +29,24 @@ struct CompareOptions {
     bool spin = false;         ///< let the simulated sphere rotate (default: locked, like a point mass).
     bool builtin = false;      ///< the built-in scenes instead of a file; prints the README's table.
     std::string jsonFile;      ///< also write the full comparison as JSON here ("-": standard output).
+    /// With a name (jolt, physx, rapier, ammo, bullet, godot3, godot3-bullet, box2d): run the
+    /// scenario's projectiles in that real engine instead of Bullet (compareEngineCommand).
+    std::string engine;
+    /// The engine harnesses' folder (tests/engines/ of the source tree by default).
+    std::string harnessDir;
 };
+
+/// `foresight compare FILE --engine NAME`: every projectile of the scenario is run in the real
+/// engine through its harness (tests/engines/README.md: Node.js for jolt, physx, rapier and ammo;
+/// godot3-server for godot3 and godot3-bullet; foresight_engine_harness for bullet and box2d),
+/// beside the engine-matched prediction (ProjectileMethod::Engine with that engine's profile; a
+/// prediction that already has the method and the engine keeps its own profile, damping
+/// included), and the exact and stepped ones. The world may hold planes (sent as boxes 2 m thick
+/// and 2 km wide) and boxes; spheres, triangles and meshes are refused. Prints a table per
+/// projectile: the first contact step on each side, the largest distance before it, and the
+/// distances from the engine's end to the three predictions'. Returns 0, 2 for bad input or a
+/// runtime that is not installed (the message says which), 1 when the harness fails.
+int compareEngineCommand(const std::string& file, const CompareOptions& options);
 
 /// `foresight compare FILE` (or --builtin). Returns the exit status: 0, 2 for invalid input or
 /// usage (and when foresight was built without Bullet), 1 for an internal error.

@@ -78,6 +78,14 @@ int run(int argc, char** argv) {
     compare->add_flag("--spin", compareOptions.spin, "let the simulated sphere rotate (default: no spin, as a point mass)");
     compare->add_option("--json", compareOptions.jsonFile, "also write every detail as JSON to FILE (- for stdout)")
         ->type_name("FILE");
+    compare->add_option("--engine", compareOptions.engine,
+                        "run the projectiles in a real engine instead (jolt, physx, rapier, ammo, bullet, godot3, "
+                        "godot3-bullet, box2d; its runtime must be installed) beside the engine-matched predictions")
+        ->type_name("NAME");
+    compare->add_option("--harness-dir", compareOptions.harnessDir,
+                        "the engine harnesses' folder (default: tests/engines of the source tree, or "
+                        "$FORESIGHT_ENGINE_HARNESSES)")
+        ->type_name("DIR");
 
     CLI::App* accuracy = app.add_subcommand(
         "accuracy", "Measure how far the article's methods are from the exact ones (Markdown tables)");
@@ -134,7 +142,9 @@ int run(int argc, char** argv) {
         }
         return foresight_cli::demoCommand(jsonFile, demoScenarioFile, demoPictures, !demoNoHtml);
     }
-    if (compare->parsed()) return foresight_cli::compareCommand(compareFile, compareOptions);
+    if (compare->parsed())
+        return compareOptions.engine.empty() ? foresight_cli::compareCommand(compareFile, compareOptions)
+                                             : foresight_cli::compareEngineCommand(compareFile, compareOptions);
     if (accuracy->parsed()) return foresight_cli::accuracyCommand();
     if (level->parsed()) return foresight_cli::levelCommand(levelOptions);
     if (danger->parsed()) return foresight_cli::dangerCommand(dangerFile, dangerPictures);
