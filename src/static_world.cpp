@@ -237,6 +237,13 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
 
 }  // namespace
 
+// Negative values are "none"; NaN and infinities are refused.
+Status validateMaterial(const SurfaceMaterial& m) {
+    if (!isFinite(m.restitution) || !isFinite(m.friction)) return Status::NonFiniteInput;
+    if (m.restitution > 1.0f) return Status::InvalidRestitution;
+    return Status::Ok;
+}
+
 Status validatePlane(const Plane& plane) {
     if (!isFinite(plane.normal) || !isFinite(static_cast<double>(plane.distance)))
         return Status::NonFiniteInput;
@@ -271,33 +278,46 @@ Status validateTriangle(const Triangle& triangle) {
     return Status::Ok;
 }
 
-Status StaticWorld::add(const Plane& plane) {
+Status StaticWorld::add(const Plane& plane) { return add(plane, SurfaceMaterial{}); }
+Status StaticWorld::add(const Sphere& sphere) { return add(sphere, SurfaceMaterial{}); }
+Status StaticWorld::add(const OrientedBox& box) { return add(box, SurfaceMaterial{}); }
+Status StaticWorld::add(const Triangle& triangle) { return add(triangle, SurfaceMaterial{}); }
+
+Status StaticWorld::add(const Plane& plane, const SurfaceMaterial& material) {
     if (Status s = validatePlane(plane); s != Status::Ok) return s;
+    if (Status s = validateMaterial(material); s != Status::Ok) return s;
     const double length = glm::length(toD(plane.normal));
     Plane p;
     p.normal = toF(toD(plane.normal) / length);
     p.distance = static_cast<Real>(static_cast<double>(plane.distance) / length);
     mPlanes.push_back(p);
+    mPlaneMaterials.push_back(material);
     return Status::Ok;
 }
 
-Status StaticWorld::add(const Sphere& sphere) {
+Status StaticWorld::add(const Sphere& sphere, const SurfaceMaterial& material) {
     if (Status s = validateSphere(sphere); s != Status::Ok) return s;
+    if (Status s = validateMaterial(material); s != Status::Ok) return s;
     mSpheres.push_back(sphere);
+    mSphereMaterials.push_back(material);
     return Status::Ok;
 }
 
-Status StaticWorld::add(const OrientedBox& box) {
+Status StaticWorld::add(const OrientedBox& box, const SurfaceMaterial& material) {
     if (Status s = validateBox(box); s != Status::Ok) return s;
+    if (Status s = validateMaterial(material); s != Status::Ok) return s;
     OrientedBox b = box;
     normalizeQuaternion(box.orientation, b.orientation);
     mBoxes.push_back(b);
+    mBoxMaterials.push_back(material);
     return Status::Ok;
 }
 
-Status StaticWorld::add(const Triangle& triangle) {
+Status StaticWorld::add(const Triangle& triangle, const SurfaceMaterial& material) {
     if (Status s = validateTriangle(triangle); s != Status::Ok) return s;
+    if (Status s = validateMaterial(material); s != Status::Ok) return s;
     mTriangles.push_back(triangle);
+    mTriangleMaterials.push_back(material);
     return Status::Ok;
 }
 
@@ -306,6 +326,10 @@ void StaticWorld::clear() {
     mSpheres.clear();
     mBoxes.clear();
     mTriangles.clear();
+    mPlaneMaterials.clear();
+    mSphereMaterials.clear();
+    mBoxMaterials.clear();
+    mTriangleMaterials.clear();
 }
 
 std::size_t StaticWorld::shapeCount() const {
@@ -325,17 +349,30 @@ ClosestHitCaster::ClosestHitCaster(const SegmentCast& cast, float surfaceToleran
     mRay.radius = std::max(0.0, static_cast<double>(cast.radius));
 }
 
-void ClosestHitCaster::test(const Plane& plane) {
-    if (valid()) castPlane(mRay, mRay.radius, plane, mBest);
+// Each test keeps the material of the shape that moved the closest hit.
+void ClosestHitCaster::test(const Plane& plane, const SurfaceMaterial& material) {
+    if (!valid()) return;
+    const double before = mBest.distance;
+    castPlane(mRay, mRay.radius, plane, mBest);
+    if (mBest.distance < before) mBest.material = material;
 }
-void ClosestHitCaster::test(const Sphere& sphere) {
-    if (valid()) castSphere(mRay, mRay.radius, sphere, mBest);
+void ClosestHitCaster::test(const Sphere& sphere, const SurfaceMaterial& material) {
+    if (!valid()) return;
+    const double before = mBest.distance;
+    castSphere(mRay, mRay.radius, sphere, mBest);
+    if (mBest.distance < before) mBest.material = material;
 }
-void ClosestHitCaster::test(const OrientedBox& box) {
-    if (valid()) castBox(mRay, mRay.radius, box, mBest);
+void ClosestHitCaster::test(const OrientedBox& box, const SurfaceMaterial& material) {
+    if (!valid()) return;
+    const double before = mBest.distance;
+    castBox(mRay, mRay.radius, box, mBest);
+    if (mBest.distance < before) mBest.material = material;
 }
-void ClosestHitCaster::test(const Triangle& triangle) {
-    if (valid()) castTriangle(mRay, mRay.radius, triangle, mBest);
+void ClosestHitCaster::test(const Triangle& triangle, const SurfaceMaterial& material) {
+    if (!valid()) return;
+    const double before = mBest.distance;
+    castTriangle(mRay, mRay.radius, triangle, mBest);
+    if (mBest.distance < before) mBest.material = material;
 }
 
 double ClosestHitCaster::closestFraction() const {
@@ -348,6 +385,8 @@ bool ClosestHitCaster::result(CastHit& hit) const {
     hit.fraction = static_cast<float>(fraction);
     hit.position = toR(mRay.origin + mDisplacement * fraction);
     hit.normal = toF(mBest.normal);
+    hit.restitution = mBest.material.restitution;
+    hit.friction = mBest.material.friction;
     return true;
 }
 
@@ -454,10 +493,32 @@ FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit
     // Local copies: the compiler keeps them in registers across the loops.
     const Ray ray = caster.mRay;
     Candidate best;
-    for (const Plane& p : mPlanes) castPlane(ray, ray.radius, p, best);
-    for (const Sphere& s : mSpheres) castSphere(ray, ray.radius, s, best);
-    for (const OrientedBox& b : mBoxes) castBox(ray, ray.radius, b, best);
-    for (const Triangle& t : mTriangles) castTriangle(ray, ray.radius, t, best);
+    // The shape that gave the closest hit, for its material (null: none of them).
+    const SurfaceMaterial* material = nullptr;
+    const auto keep = [&](double before, const SurfaceMaterial& m) {
+        if (best.distance < before) material = &m;
+    };
+    for (std::size_t i = 0; i < mPlanes.size(); ++i) {
+        const double before = best.distance;
+        castPlane(ray, ray.radius, mPlanes[i], best);
+        keep(before, mPlaneMaterials[i]);
+    }
+    for (std::size_t i = 0; i < mSpheres.size(); ++i) {
+        const double before = best.distance;
+        castSphere(ray, ray.radius, mSpheres[i], best);
+        keep(before, mSphereMaterials[i]);
+    }
+    for (std::size_t i = 0; i < mBoxes.size(); ++i) {
+        const double before = best.distance;
+        castBox(ray, ray.radius, mBoxes[i], best);
+        keep(before, mBoxMaterials[i]);
+    }
+    for (std::size_t i = 0; i < mTriangles.size(); ++i) {
+        const double before = best.distance;
+        castTriangle(ray, ray.radius, mTriangles[i], best);
+        keep(before, mTriangleMaterials[i]);
+    }
+    if (material) best.material = *material;
     caster.mBest = best;
     return caster.result(hit);
 }

@@ -1133,6 +1133,37 @@ TEST_F(cli, PredictSvgDrawsEveryPathInBothViewsAndKeepsTheJson) {
     EXPECT_EQ(text.find("inf"), std::string::npos);
 }
 
+// A plane's own material: refused out of range with its path; the engine method combines it
+// with the projectile's (Jolt: the larger restitution), the exact method ignores it.
+TEST_F(cli, ShapeMaterialsReachTheEngineMethodOnly) {
+    const std::string bad = scenarioWith(
+        R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0], "time": 1})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0, "restitution": 1.5}],
+            "boxes": [{"center": [0, 1, 5], "half_extents": [1, 1, 1], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "friction": -1}]})");
+    const CliRun refused = runCli({"predict", write("bad.json", bad).string()});
+    EXPECT_EQ(refused.status, 2);
+    EXPECT_NE(refused.err.find("world.planes[0].restitution: expected a restitution in [0, 1]"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("world.boxes[0].friction: expected a friction >= 0"), std::string::npos) << refused.err;
+
+    const auto drop = [&](const char* world, const char* method) {
+        const std::string scenario = scenarioWith(
+            std::string(R"({"model": "projectile", "method": ")") + method + "\", " +
+                (std::string(method) == "engine" ? R"("engine": {"profile": "jolt", "linear_damping": 0}, )" : "") +
+                R"("position": [0, 2, 0], "velocity": [0, 0, 0], "time": 0.9, "radius": 0.1, "restitution": 0.1, "trajectory": false})",
+            world);
+        const CliRun run = runCli({"predict", write("drop.json", scenario).string()});
+        EXPECT_EQ(run.status, 0) << run.err;
+        return Json::parse(run.out).at("predictions").at(0).at("position").at(1).get<double>();
+    };
+    const char* plain = R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})";
+    const char* lively = R"({"planes": [{"normal": [0, 1, 0], "distance": 0, "restitution": 0.9}]})";
+    // Falling 1.9 m takes 0.62 s; at 0.9 s a bounce of 0.9 (6.1 m/s up) is about 1.3 m up, one
+    // of 0.1 stays below 0.2 m.
+    EXPECT_GT(drop(lively, "engine"), 1.0);
+    EXPECT_LT(drop(plain, "engine"), 0.2);
+    EXPECT_DOUBLE_EQ(drop(lively, "exact"), drop(plain, "exact"));
+}
+
 TEST_F(cli, PredictSvgDrawsEngineMatchedFlightsInTheirOwnStyle) {
     const std::string scenario = scenarioWith(
         R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2},

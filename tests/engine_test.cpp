@@ -387,3 +387,43 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
     EXPECT_GT(clear, 1000);
     EXPECT_GT(touched, 1000);
 }
+
+// A shape's own material reaches the cast that hits it (and only that one), and the engine
+// method combines it with the projectile's by the profile's rule: a floor of restitution 0.9
+// under Jolt's max rule makes a projectile of 0.1 bounce with 0.9.
+TEST(StaticWorldMaterial, CastsReportTheHitShapesMaterial) {
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}, SurfaceMaterial{0.9f, 0.2f}), Status::Ok);
+    ASSERT_EQ(world.add(Sphere{RVec3(0, 0, 5), 1.0f}), Status::Ok);  // no material
+    EXPECT_EQ(world.add(Plane{Vec3(1, 0, 0), 0}, SurfaceMaterial{1.5f, 0.0f}), Status::InvalidRestitution);
+    EXPECT_EQ(world.add(Plane{Vec3(1, 0, 0), 0}, SurfaceMaterial{0.5f, std::nanf("")}), Status::NonFiniteInput);
+    EXPECT_EQ(world.shapeCount(), 2u);
+    CastHit hit;
+    ASSERT_TRUE(world.castSegment(SegmentCast{RVec3(0, 1, -3), Vec3(0, -2, 0), 0.0f}, hit));
+    EXPECT_EQ(hit.restitution, 0.9f);
+    EXPECT_EQ(hit.friction, 0.2f);
+    ASSERT_TRUE(world.castSegment(SegmentCast{RVec3(0, 0.5f, 0), Vec3(0, 0, 6), 0.0f}, hit));  // the sphere
+    EXPECT_LT(hit.restitution, 0.0f);
+    EXPECT_LT(hit.friction, 0.0f);
+
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(PhysicsEngine::Jolt);
+    settings.engine.linearDamping = 0.0f;
+    settings.radius = 0.1f;
+    settings.restitution = 0.1f;
+    std::vector<TrajectoryPoint> points(200);
+    ProjectileResult result;
+    ASSERT_EQ(predictProjectile(RVec3(-3, 2, -3), Vec3(0, -5, 0), 1.0f, settings, &world, points, result), Status::Ok);
+    // The first point after the impact leaves upwards at about 0.9 of the approach (Jolt:
+    // restitution times the approach without that step's gravity).
+    double approach = 0.0, leave = 0.0;
+    for (std::size_t i = 1; i < result.trajectorySize; ++i) {
+        if (points[i].event != TrajectoryEvent::Bounce) continue;
+        approach = -static_cast<double>(points[i - 1].velocity.y);
+        leave = static_cast<double>(points[i].velocity.y);
+        break;
+    }
+    ASSERT_GT(approach, 5.0);
+    EXPECT_NEAR(leave / approach, 0.9, 0.03);  // 0.03: a step of gravity (0.16 m/s) against ~6 m/s
+}

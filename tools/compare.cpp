@@ -391,10 +391,7 @@ bool addMesh(Scenario& scenario, const foresight_level::LevelMesh& mesh, std::st
     for (const auto& v : mesh.vertices) vertices.emplace_back(v);
 #ifdef FORESIGHT_CLI_WITH_EMBREE
     auto world = std::make_unique<foresight::EmbreeWorld>();
-    for (const auto& shape : scenario.world.planes()) world->add(shape);
-    for (const auto& shape : scenario.world.spheres()) world->add(shape);
-    for (const auto& shape : scenario.world.boxes()) world->add(shape);
-    for (const auto& shape : scenario.world.triangles()) world->add(shape);
+    world->addPrimitives(scenario.world);
     foresight::MeshReport report;
     if (world->addMesh(vertices, mesh.indices, &report) != Status::Ok) {
         error = report.error;

@@ -302,6 +302,7 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
     if (planar && scenario.gravity.z != 0.0f)
         diagnostics.error("gravity", "box2d runs in the x-y plane: the z component must be 0");
     Json boxes = Json::array();
+    std::vector<foresight::SurfaceMaterial> boxMaterials;  // each sent box's own material
     for (std::size_t i = 0; i < scenario.world.planes().size(); ++i) {
         const foresight::Plane& plane = scenario.world.planes()[i];
         const glm::dvec3 n = glm::normalize(glm::dvec3(plane.normal));
@@ -315,6 +316,7 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         boxes.push_back(Json{{"center", {centre.x, centre.y, centre.z}},
                              {"half_extents", {kPlaneHalfWidth, kPlaneHalfThickness, kPlaneHalfWidth}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
+        boxMaterials.push_back(scenario.world.planeMaterials()[i]);
     }
     for (std::size_t i = 0; i < scenario.world.boxes().size(); ++i) {
         const foresight::OrientedBox& box = scenario.world.boxes()[i];
@@ -327,6 +329,7 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         boxes.push_back(Json{{"center", {box.center.x, box.center.y, box.center.z}},
                              {"half_extents", {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
+        boxMaterials.push_back(scenario.world.boxMaterials()[i]);
     }
 
     // The projectiles: the engine-matched prediction first (its steps are the engine's).
@@ -376,10 +379,13 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         splitMaterial(c.settings.engine.frictionCombine, p.projectile.friction, bodyFriction, boxFriction);
         body["restitution"] = bodyRestitution;
         body["friction"] = bodyFriction;
+        // A shape with its own material keeps it (the engine combines it with the body's by its
+        // rule, as the prediction does); the others get the split's value.
         Json caseBoxes = boxes;
-        for (Json& b : caseBoxes) {
-            b["restitution"] = boxRestitution;
-            b["friction"] = boxFriction;
+        for (std::size_t j = 0; j < caseBoxes.size(); ++j) {
+            const foresight::SurfaceMaterial& own = boxMaterials[j];
+            caseBoxes[j]["restitution"] = own.restitution >= 0.0f ? static_cast<double>(own.restitution) : boxRestitution;
+            caseBoxes[j]["friction"] = own.friction >= 0.0f ? static_cast<double>(own.friction) : boxFriction;
         }
         cases.push_back(Json{{"id", std::to_string(comparisons.size())},
                              {"engine", engine->name},

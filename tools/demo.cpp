@@ -138,10 +138,7 @@ bool addDemoLevel(Scenario& scenario, std::string& error) {
         error = report.error;
         return false;
     }
-    for (const auto& shape : scenario.world.planes()) world->add(shape);
-    for (const auto& shape : scenario.world.spheres()) world->add(shape);
-    for (const auto& shape : scenario.world.boxes()) world->add(shape);
-    for (const auto& shape : scenario.world.triangles()) world->add(shape);
+    world->addPrimitives(scenario.world);
     if (!world->commit(&error)) return false;
     scenario.meshWorld = std::move(world);
 #else

@@ -53,9 +53,26 @@ const char* eventName(foresight::TrajectoryEvent event) {
 
 namespace {
 
-void addShape(foresight::StaticWorld& world, const auto& shape, const std::string& path, Diagnostics& d) {
-    const Status status = world.add(shape);
+void addShape(foresight::StaticWorld& world, const auto& shape, const foresight::SurfaceMaterial& material,
+              const std::string& path, Diagnostics& d) {
+    const Status status = world.add(shape, material);
     if (status != Status::Ok) d.error(path, foresight::statusMessage(status));
+}
+
+// A shape's own "restitution" (0 to 1) and "friction" (>= 0), both optional: the surface's
+// material, which the engine method combines with the projectile's (docs/scenario-format.md).
+bool readMaterial(Fields& fields, foresight::SurfaceMaterial& material, Diagnostics& d) {
+    bool ok = true;
+    if (fields.floatNumber("restitution", false, material.restitution) &&
+        !(material.restitution >= 0.0f && material.restitution <= 1.0f)) {
+        d.error(fields.at("restitution"), "expected a restitution in [0, 1]");
+        ok = false;
+    }
+    if (fields.floatNumber("friction", false, material.friction) && !(material.friction >= 0.0f)) {
+        d.error(fields.at("friction"), "expected a friction >= 0");
+        ok = false;
+    }
+    return ok;
 }
 
 #ifdef FORESIGHT_CLI_WITH_EMBREE
@@ -82,27 +99,31 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
         if (!expectObject(item, path, d, "{\"normal\", \"distance\"}")) return;
         Fields plane(item, path, d);
         foresight::Plane shape;
+        foresight::SurfaceMaterial material;
         double distance = 0;
         const bool okNormal = plane.vector("normal", true, shape.normal);
         const bool okDistance = plane.number("distance", true, distance);
+        const bool okMaterial = readMaterial(plane, material, d);
         plane.finish();
-        if (!okNormal || !okDistance) return;
+        if (!okNormal || !okDistance || !okMaterial) return;
         shape.distance = static_cast<foresight::Real>(distance);
         const Status status = foresight::validatePlane(shape);
         if (status != Status::Ok) {
             d.error(status == Status::ZeroVector ? plane.at("normal") : path, foresight::statusMessage(status));
             return;
         }
-        addShape(world, shape, path, d);
+        addShape(world, shape, material, path, d);
     });
 
     forEachElement(fields, "boxes", [&](const Json& item, const std::string& path) {
         if (!expectObject(item, path, d, "{\"center\", \"half_extents\", \"orientation\"}")) return;
         Fields box(item, path, d);
         foresight::OrientedBox shape;
+        foresight::SurfaceMaterial material;
         const bool okCenter = box.position("center", true, shape.center);
         const bool okExtents = box.vector("half_extents", true, shape.halfExtents);
         const bool okOrientation = box.quaternion("orientation", true, shape.orientation);
+        const bool okMaterial = readMaterial(box, material, d);
         box.finish();
         if (okExtents) {
             // The half extents alone, so that their problem is named even if others fail.
@@ -115,21 +136,23 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
                 return;
             }
         }
-        if (!okCenter || !okExtents || !okOrientation) return;
+        if (!okCenter || !okExtents || !okOrientation || !okMaterial) return;
         const Status status = foresight::validateBox(shape);
         if (status != Status::Ok) {
             d.error(path, foresight::statusMessage(status));
             return;
         }
-        addShape(world, shape, path, d);
+        addShape(world, shape, material, path, d);
     });
 
     forEachElement(fields, "spheres", [&](const Json& item, const std::string& path) {
         if (!expectObject(item, path, d, "{\"center\", \"radius\"}")) return;
         Fields sphere(item, path, d);
         foresight::Sphere shape;
+        foresight::SurfaceMaterial material;
         const bool okCenter = sphere.position("center", true, shape.center);
         const bool okRadius = sphere.floatNumber("radius", true, shape.radius);
+        const bool okMaterial = readMaterial(sphere, material, d);
         sphere.finish();
         if (okRadius) {
             foresight::Sphere probe;
@@ -140,13 +163,13 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
                 return;
             }
         }
-        if (!okCenter || !okRadius) return;
+        if (!okCenter || !okRadius || !okMaterial) return;
         const Status status = foresight::validateSphere(shape);
         if (status != Status::Ok) {
             d.error(path, foresight::statusMessage(status));
             return;
         }
-        addShape(world, shape, path, d);
+        addShape(world, shape, material, path, d);
     });
 
     forEachElement(fields, "triangles", [&](const Json& item, const std::string& path) {
@@ -164,7 +187,7 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
             d.error(path, foresight::statusMessage(status));
             return;
         }
-        addShape(world, shape, path, d);
+        addShape(world, shape, foresight::SurfaceMaterial{}, path, d);
     });
 
     forEachElement(fields, "meshes", [&](const Json& item, const std::string& path) {
@@ -532,10 +555,7 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
         if (scenario.meshWorld) {
             auto* meshWorld = static_cast<foresight::EmbreeWorld*>(scenario.meshWorld.get());
             // The mesh world answers the casts: it gets the primitives too.
-            for (const auto& shape : scenario.world.planes()) meshWorld->add(shape);
-            for (const auto& shape : scenario.world.spheres()) meshWorld->add(shape);
-            for (const auto& shape : scenario.world.boxes()) meshWorld->add(shape);
-            for (const auto& shape : scenario.world.triangles()) meshWorld->add(shape);
+            meshWorld->addPrimitives(scenario.world);
             std::string reason;
             if (!meshWorld->commit(&reason)) diagnostics.error("world.meshes", reason);
         }

@@ -12,6 +12,15 @@
 
 FORESIGHT_NAMESPACE_BEGIN
 
+/// A surface's own material. Only ProjectileMethod::Engine uses it: it combines these values
+/// with the projectile's by the engine's rule (EngineProfile::restitutionCombine,
+/// frictionCombine), as the engine combines two colliders' materials; the other methods use the
+/// projectile's values. Casts report it in CastHit::restitution and CastHit::friction.
+struct SurfaceMaterial {
+    float restitution = -1.0f; ///< [Limit: 0 .. 1, or negative: none (the projectile's value acts alone)]
+    float friction = -1.0f;    ///< [Limit: >= 0, or negative: none]
+};
+
 /// A one-sided infinite plane: the points x with `dot(normal, x) = distance`. The front side
 /// is where the normal points; behind it is solid (a floor, a wall of an arena).
 struct Plane {
@@ -48,6 +57,9 @@ Status validateBox(const OrientedBox& box);
 /// See validatePlane. A triangle is degenerate when its area is below 1e-12 m^2 or relative
 /// to its edge lengths (a sliver that cannot give a stable normal).
 Status validateTriangle(const Triangle& triangle);
+/// Checks a material as StaticWorld::add would: Ok, NonFiniteInput (NaN or infinite), or
+/// InvalidRestitution (above 1).
+Status validateMaterial(const SurfaceMaterial& material);
 
 namespace detail {
 /// Internal to ClosestHitCaster: a cast prepared for the shape tests (double precision).
@@ -62,6 +74,7 @@ struct PreparedRay {
 struct ClosestCandidate {
     double distance = std::numeric_limits<double>::infinity();
     glm::dvec3 normal{0.0, 1.0, 0.0};
+    SurfaceMaterial material;  // of the shape that gave the closest hit
     void offer(double d, const glm::dvec3& n) {
         if (d < distance) {
             distance = d;
@@ -91,14 +104,15 @@ public:
     bool valid() const { return mRay.length > 0.0; }
 
     /// Tests one shape (validated as StaticWorld::add would; unvalidated shapes give
-    /// unspecified hits but never undefined behaviour).
-    void test(const Plane& plane);
-    /// See test(const Plane&).
-    void test(const Sphere& sphere);
-    /// See test(const Plane&).
-    void test(const OrientedBox& box);
-    /// See test(const Plane&).
-    void test(const Triangle& triangle);
+    /// unspecified hits but never undefined behaviour). `material` is the shape's own, which
+    /// result() reports when this shape gives the closest hit (default: none).
+    void test(const Plane& plane, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Sphere& sphere, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const OrientedBox& box, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Triangle& triangle, const SurfaceMaterial& material = {});
 
     /// The closest hit so far as a fraction of the segment; infinity when none. Shapes whose
     /// bounds start beyond it cannot change the result (an early-out for BVH traversals).
@@ -149,6 +163,14 @@ public:
     Status add(const OrientedBox& box);
     /// See add(const Plane&). Degenerate triangles are refused with DegenerateShape.
     Status add(const Triangle& triangle);
+    /// Adds a shape with its own material (SurfaceMaterial), which casts that hit it report.
+    Status add(const Plane& plane, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const Sphere& sphere, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const OrientedBox& box, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const Triangle& triangle, const SurfaceMaterial& material);
 
     /// Removes every shape.
     void clear();
@@ -169,6 +191,14 @@ public:
     std::span<const OrientedBox> boxes() const { return mBoxes; }
     /// See planes().
     std::span<const Triangle> triangles() const { return mTriangles; }
+    /// The materials of planes() in the same order (none where added without one).
+    std::span<const SurfaceMaterial> planeMaterials() const { return mPlaneMaterials; }
+    /// See planeMaterials().
+    std::span<const SurfaceMaterial> sphereMaterials() const { return mSphereMaterials; }
+    /// See planeMaterials().
+    std::span<const SurfaceMaterial> boxMaterials() const { return mBoxMaterials; }
+    /// See planeMaterials().
+    std::span<const SurfaceMaterial> triangleMaterials() const { return mTriangleMaterials; }
 
 private:
     StaticWorldSettings mSettings;
@@ -176,6 +206,7 @@ private:
     std::vector<Sphere> mSpheres;
     std::vector<OrientedBox> mBoxes;
     std::vector<Triangle> mTriangles;
+    std::vector<SurfaceMaterial> mPlaneMaterials, mSphereMaterials, mBoxMaterials, mTriangleMaterials;
 };
 
 FORESIGHT_NAMESPACE_END

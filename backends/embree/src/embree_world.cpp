@@ -403,6 +403,18 @@ Status EmbreeWorld::add(const Plane& plane) { return mPrimitives.add(plane); }
 Status EmbreeWorld::add(const Sphere& sphere) { return mPrimitives.add(sphere); }
 Status EmbreeWorld::add(const OrientedBox& box) { return mPrimitives.add(box); }
 Status EmbreeWorld::add(const Triangle& triangle) { return mPrimitives.add(triangle); }
+void EmbreeWorld::addPrimitives(const StaticWorld& world) {
+    for (std::size_t i = 0; i < world.planes().size(); ++i) mPrimitives.add(world.planes()[i], world.planeMaterials()[i]);
+    for (std::size_t i = 0; i < world.spheres().size(); ++i) mPrimitives.add(world.spheres()[i], world.sphereMaterials()[i]);
+    for (std::size_t i = 0; i < world.boxes().size(); ++i) mPrimitives.add(world.boxes()[i], world.boxMaterials()[i]);
+    for (std::size_t i = 0; i < world.triangles().size(); ++i)
+        mPrimitives.add(world.triangles()[i], world.triangleMaterials()[i]);
+}
+
+Status EmbreeWorld::add(const Plane& plane, const SurfaceMaterial& m) { return mPrimitives.add(plane, m); }
+Status EmbreeWorld::add(const Sphere& sphere, const SurfaceMaterial& m) { return mPrimitives.add(sphere, m); }
+Status EmbreeWorld::add(const OrientedBox& box, const SurfaceMaterial& m) { return mPrimitives.add(box, m); }
+Status EmbreeWorld::add(const Triangle& triangle, const SurfaceMaterial& m) { return mPrimitives.add(triangle, m); }
 
 std::size_t EmbreeWorld::meshTriangleCount() const { return mImpl ? mImpl->triangles.size() : 0; }
 
@@ -536,10 +548,14 @@ bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     if (!caster.valid()) return false;
     const ClosestHitCaster pristine = caster;
     // The primitives first, in StaticWorld's order.
-    for (const Plane& p : mPrimitives.planes()) caster.test(p);
-    for (const Sphere& s : mPrimitives.spheres()) caster.test(s);
-    for (const OrientedBox& b : mPrimitives.boxes()) caster.test(b);
-    for (const Triangle& t : mPrimitives.triangles()) caster.test(t);
+    for (std::size_t i = 0; i < mPrimitives.planes().size(); ++i)
+        caster.test(mPrimitives.planes()[i], mPrimitives.planeMaterials()[i]);
+    for (std::size_t i = 0; i < mPrimitives.spheres().size(); ++i)
+        caster.test(mPrimitives.spheres()[i], mPrimitives.sphereMaterials()[i]);
+    for (std::size_t i = 0; i < mPrimitives.boxes().size(); ++i)
+        caster.test(mPrimitives.boxes()[i], mPrimitives.boxMaterials()[i]);
+    for (std::size_t i = 0; i < mPrimitives.triangles().size(); ++i)
+        caster.test(mPrimitives.triangles()[i], mPrimitives.triangleMaterials()[i]);
 
     const Impl* impl = mImpl.get();
     if (impl && !impl->triangles.empty()) {

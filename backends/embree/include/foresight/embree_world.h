@@ -118,6 +118,17 @@ public:
     Status add(const OrientedBox& box);
     /// See add(const Plane&).
     Status add(const Triangle& triangle);
+    /// Adds every shape of `world` as a primitive, with its material (as `world` holds them,
+    /// already validated).
+    void addPrimitives(const StaticWorld& world);
+    /// Adds a primitive with its own material (as StaticWorld::add(shape, material)).
+    Status add(const Plane& plane, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const Sphere& sphere, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const OrientedBox& box, const SurfaceMaterial& material);
+    /// See add(const Plane&, const SurfaceMaterial&).
+    Status add(const Triangle& triangle, const SurfaceMaterial& material);
 
     /// Adds an indexed triangle mesh (three indices per triangle). Refuses the whole mesh
     /// (nothing added) with NonFiniteInput for a non-finite vertex, and with DegenerateShape
