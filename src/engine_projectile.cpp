@@ -6,7 +6,8 @@
 //  2. contacts at the start of the step: surfaces the sphere touched or approached before are
 //     probed again along their normal; one cast along the step's free motion (lengthened by the
 //     contact distance) finds new ones. The gap `s` to each (negative: penetration) decides
-//     whether it acts: within contactDistance (speculative) or below 0 (penetration).
+//     whether it acts: within contactDistance (speculative) or below 0 (penetration). Bullet
+//     against a triangle mesh (EngineProfile::triangleMesh) has its own rules: meshContact().
 //  3. velocity solve: sequential impulses with accumulated clamping, as the engines do; for one
 //     contact this is the closed form. Normal target: a bounce (approach faster than the
 //     threshold, and, for a speculative contact, reaching the surface within the step) leaves
@@ -52,6 +53,13 @@ struct Surface {
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
+    // Triangle meshes (Bullet): the manifold point of this surface.
+    bool persists = false;   // acted in the previous step: its point may still be in the manifold
+    bool reversed = false;   // the triangle's back face acts: normal and gap are reversed this step
+    bool fresh = false;      // the narrow phase found the triangle at this step's start
+    double pointGap = 0.0;   // the point's gap when it was found [m]
+    DVec3 pointMotion{0.0};  // how far the sphere's material point moved since [m]
+    double pointDistance = 0.0, pointSlip = 0.0;  // its distance along and across the normal now [m]
 };
 
 class EngineRun {
@@ -66,6 +74,7 @@ public:
         mRadius = settings.radius;
         mRotates = mProfile.rotates && mRadius > 0.0;
         mAngularFactor = dampingFactor(mProfile.damping, mProfile.angularDamping, mRec.dt);
+        mMeshContacts = mProfile.triangleMesh && mProfile.engine == PhysicsEngine::Bullet;
     }
 
     Status run(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps) {
@@ -218,6 +227,7 @@ private:
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
         correctPositions();
+        if (mMeshContacts) followManifoldPoints(mPosition - before);
 
         bool bounced = false;
         mTouching = false;
@@ -248,9 +258,16 @@ private:
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
+            if (s.reversed) {
+                s.normal = -s.normal;
+                s.reversed = false;
+            }
+            s.persists = s.acting;
             // Probe from outside the surface, along its normal.
             const double gapNow = glm::dot(mPosition - s.touch, s.normal);
             if (gapNow > reach + glm::length(freeMotion) + 0.05) continue;  // far: forget it
+            // A triangle whose plane the centre passed long ago: its back face is out of reach.
+            if (mMeshContacts && gapNow < -(2.0 * mRadius + reach + glm::length(freeMotion) + 0.05)) continue;
             const double lift = std::max(0.0, -gapNow) + 0.01;
             const DVec3 from = mPosition + s.normal * lift;
             const DVec3 to = mPosition - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
@@ -274,6 +291,62 @@ private:
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
+            if (mMeshContacts) meshContact(s, reach);
+        }
+    }
+
+    // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
+    // hands each triangle near the sphere to btSphereTriangleCollisionAlgorithm, whose
+    // SphereTriangleDetector::collide differs from a convex shape's contact in two ways.
+    void meshContact(Surface& s, double reach) const {
+        // Triangles are double-sided: collide() measures from the side of the triangle's plane
+        // the centre is on. A centre that has passed the plane (a fast sphere in one step) is
+        // pushed on through the triangle, by its back face, with the gap |distance| - r.
+        if (s.gap < -mRadius) {
+            s.reversed = true;
+            s.normal = -s.normal;
+            s.gap = -s.gap - 2.0 * mRadius;
+            s.acting = s.gap < reach;
+        }
+        // btConvexTriangleCallback::processTriangle tests a triangle only when its bounding box
+        // overlaps the sphere's (centre +- r, grown by the mesh's margin, 0 by default), so the
+        // contact breaking threshold makes a new contact early only where that box reaches the
+        // plane first: not at all on an axis-aligned face, where the sphere must touch. A contact
+        // already in the manifold may stay without that (followManifoldPoints).
+        const double reachOfBox = std::abs(s.normal.x) + std::abs(s.normal.y) + std::abs(s.normal.z) - 1.0;
+        s.fresh = s.acting && s.gap <= mRadius * reachOfBox;
+        if (s.acting && !s.fresh)
+            s.acting = s.persists && s.pointDistance <= reach && s.pointSlip <= reach;
+    }
+
+    // A manifold point stays where it was found on the triangle and on the sphere: the sphere's
+    // material point moves with the body (rotation included). refreshContactPoints drops it once
+    // its distance along the normal, or its slip across it, exceeds the contact breaking
+    // threshold; a new contact found near it replaces it.
+    void followManifoldPoints(const DVec3& moved) {
+        const DVec3 turn = mAngular * mRec.dt;
+        const double angle = glm::length(turn);
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            // The material point at -r n, turned by the step's rotation (Rodrigues).
+            const DVec3 arm = -mRadius * s.normal;
+            DVec3 turned = arm;
+            if (angle > 0.0) {
+                const DVec3 k = turn / angle;
+                turned = arm * std::cos(angle) + glm::cross(k, arm) * std::sin(angle) +
+                         k * (glm::dot(k, arm) * (1.0 - std::cos(angle)));
+            }
+            const DVec3 motion = moved + turned - arm;
+            if (s.fresh) {
+                s.pointGap = s.gap;
+                s.pointMotion = motion;
+            } else {
+                s.pointMotion += motion;
+            }
+            const double along = glm::dot(s.pointMotion, s.normal);
+            s.pointDistance = s.pointGap + along;
+            s.pointSlip = glm::length(s.pointMotion - along * s.normal);
         }
     }
 
@@ -569,6 +642,7 @@ private:
     DVec3 mGravity{0.0};
     double mRadius = 0.0;
     bool mRotates = false;
+    bool mMeshContacts = false;  // Bullet's rules for a triangle mesh (EngineProfile::triangleMesh)
     double mAngularFactor = 1.0;
     DVec3 mPosition{0.0}, mVelocity{0.0}, mAngular{0.0};
     std::array<Surface, kMaxSurfaces> mSurfaces{};

@@ -378,6 +378,7 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
     f.positive("max_step_distance", false, true, profile.maxStepDistance);
     f.boolean("planar", false, profile.planar);
     f.boolean("rotates", false, profile.rotates);
+    f.boolean("triangle_mesh", false, profile.triangleMesh);
     f.finish();
     if (profile.timestep > 1.0f || profile.timestep < 1e-5f) {
         f.diagnostics().error(f.at("timestep"), "must be in [1e-05, 1] s (got " + shortNumber(profile.timestep) + ")");

@@ -125,6 +125,14 @@ struct EngineProfile {
     bool planar = false;
     /// Solid sphere (I = 2/5 m r^2) when true; false: rotation locked (the sphere slides).
     bool rotates = true;
+    /// The world's surfaces are triangles of the engine's triangle-mesh shape, which the engine
+    /// collides triangle by triangle, rather than convex shapes (boxes, spheres, planes). Used by
+    /// the Bullet profile (a btBvhTriangleMeshShape with its default margin 0): a triangle is only
+    /// tested once the sphere's bounding box reaches it (no early contact on an axis-aligned
+    /// face), and triangles are double-sided (a sphere whose centre has passed a triangle's plane
+    /// is pushed on through it). Other profiles ignore it (Godot 3 with Bullet gives its meshes a
+    /// margin and internal-edge information, not modelled).
+    bool triangleMesh = false;
 };
 
 /// The named profile of `engine` with its own defaults: the default damping of a new body, its
