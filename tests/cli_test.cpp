@@ -6,6 +6,8 @@
 // from the tool itself.
 
 #include <gtest/gtest.h>
+
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
 
 #include <poll.h>
@@ -462,7 +464,11 @@ INSTANTIATE_TEST_SUITE_P(
                       MeshCase{"IndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n", "out of range"},
                       MeshCase{"RelativeIndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 -9\n", "out of range"},
                       MeshCase{"ZeroIndex", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n", "malformed"},
-                      MeshCase{"NonFiniteVertex", "v 0 0 0\nv 1 0 0\nv 0 0 1e400\nf 1 2 3\n", "not finite"},
+                      MeshCase{"NonFiniteVertex", "v 0 0 0\nv 1 0 0\nv 0 0 1e400\nf 1 2 3\n", "not a finite"},
+                      MeshCase{"NanVertex", "v 0 0 0\nv 1 0 0\nv 0 0 nan\nf 1 2 3\n", "line 3: vertex value \"nan\""},
+                      MeshCase{"CommaDecimal", "v 0 0 0\nv 1 0 0\nv 0 0 1,5\nf 1 2 3\n", "\"1,5\""},
+                      MeshCase{"TwoCoordinates", "v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n", "a vertex has 2 numbers"},
+                      MeshCase{"FractionalIndex", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3.7\n", "face corner \"3.7\""},
                       MeshCase{"NoFaces", "v 0 0 0\nv 1 0 0\nv 0 0 1\n", "no triangles"},
                       MeshCase{"Empty", "", "no triangles"},
                       MeshCase{"OnlyDegenerate", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "no usable triangles"}),
@@ -674,6 +680,28 @@ TEST_F(cli, UnreadableFilesNameThePathAndTheReason) {
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find("<stdin>"), std::string::npos) << run.err;
+}
+
+TEST_F(cli, DevicesAndPipesAreNeverReadWithoutEnd) {
+    // A mesh must be a regular file: a device would read until memory runs out, a named pipe
+    // would block.
+    const fs::path fifo = mDir / "mesh.fifo";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const std::string& mesh : {std::string("/dev/zero"), fifo.string()}) {
+        const CliRun run = predict(scenarioWith(
+            R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+            R"({"meshes": [{"file": ")" + mesh + R"("}]})"));
+        EXPECT_EQ(run.status, 2) << mesh;
+        EXPECT_NE(run.err.find("not a regular file"), std::string::npos) << run.err;
+    }
+    // The scenario itself may come from a pipe, but not without end: /dev/zero stops at the
+    // input limit, and a named pipe no program writes to reads as empty.
+    CliRun run = runCli({"predict", "/dev/zero"});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("not a regular file or pipe"), std::string::npos) << run.err;
+    run = runCli({"predict", fifo.string()});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
 }
 
 TEST_F(cli, ExtremeButValidInputsNeverPrintNaN) {

@@ -494,6 +494,7 @@ protected:
     }
     fs::path write(const std::string& name, const std::string& bytes) {
         const fs::path path = mDir / name;
+        fs::create_directories(path.parent_path());
         std::ofstream out(path, std::ios::binary);
         out << bytes;
         return path;
@@ -640,9 +641,14 @@ std::vector<BadFile> badFiles() {
     cases.push_back({"MissingGltf", "none.glb", "", true, "No such file"});
     cases.push_back({"MalformedObj", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n", false, "malformed"});
     cases.push_back({"ObjIndexOutOfRange", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n", false, "out of range"});
-    // tinyobjloader reads "nan" as 0: the triangle becomes degenerate (refused all the same).
-    cases.push_back({"ObjNanVertex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 nan\nf 1 2 3\n", false, "no usable triangles"});
-    cases.push_back({"ObjHugeVertex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1e400\nf 1 2 3\n", false, "not finite"});
+    // tinyobjloader alone reads these as 0, 1 or a truncated index: checkObjText refuses them.
+    for (const char* value : {"nan", "inf", "abc", "+", ".", "1e", "0x10", "1,5", "1..2", "1e400", "1e39"})
+        cases.push_back({"ObjLenientNumber", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 ") + value + "\nf 1 2 3\n", false,
+                         "is not a finite decimal number"});
+    cases.push_back({"ObjTwoCoordinates", "bad.obj", "v 0 0 0\nv 1 0 0\nv 1 0\nf 1 2 3\n", false, "a vertex has 2 numbers"});
+    cases.push_back({"ObjFractionalIndex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3.7\n", false, "face corner"});
+    cases.push_back({"ObjWrappingIndex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 4294967299\n", false, "face corner"});
+    cases.push_back({"ObjNulByte", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n\0junk", 36), false, "NUL"});
     cases.push_back({"ObjNoFaces", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\n", false, "no triangles"});
     cases.push_back({"ObjEmpty", "bad.obj", "", false, "no triangles"});
     cases.push_back({"ObjOnlyDegenerate", "bad.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", false, "no usable triangles"});
@@ -654,10 +660,55 @@ std::vector<BadFile> badFiles() {
     cases.push_back({"GlbIndexOutOfRange", "bad.glb", glb(quadGltfJson("", n), rangeBin), false, "out of range"});
     cases.push_back({"GlbIndicesPastTheBuffer", "bad.glb", glb(quadGltfJson("", n, 60), bin), false, ""});
     cases.push_back({"GltfNoMeshes", "bad.gltf", R"({"asset": {"version": "2.0"}})", false, "no triangles"});
+    // Offsets near 2^64 must not wrap the bounds check.
+    const auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+        const std::size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) text.replace(at, from.size(), to);
+        return text;
+    };
+    const std::string json = quadGltfJson("", n);
+    cases.push_back({"GlbAccessorOffsetWraps", "bad.glb",
+                     glb(replaced(json, R"("bufferView": 1, )", R"("bufferView": 1, "byteOffset": 18446744073709551568, )"), bin),
+                     false, "reaches past"});
+    cases.push_back({"GlbViewOffsetWraps", "bad.glb",
+                     glb(replaced(json, R"("byteOffset": 48, "byteLength": 12)", R"("byteOffset": 18446744073709551568, "byteLength": 64)"), bin),
+                     false, ""});
+    cases.push_back({"GlbStrideSmallerThanAnElement", "bad.glb",
+                     glb(replaced(json, R"("byteOffset": 0, "byteLength": 48)", R"("byteOffset": 0, "byteLength": 48, "byteStride": 4)"), bin),
+                     false, "byteStride"});
+    cases.push_back({"GlbSceneOutOfRange", "bad.glb", glb(replaced(json, R"("scene": 0)", R"("scene": 5)"), bin), false,
+                     "scene 5 does not exist"});
+    cases.push_back({"GlbNegativeIndices", "bad.glb", glb(replaced(json, R"("indices": 1)", R"("indices": -5)"), bin), false,
+                     "does not exist"});
+    cases.push_back({"GlbZeroRotation", "bad.glb",
+                     glb(replaced(json, R"("translation": [0, 2, 0])", R"("rotation": [0, 0, 0, 0])"), bin), false,
+                     "unit quaternion"});
+    cases.push_back({"GlbNodeCycle", "bad.glb", glb(replaced(json, R"("translation": [0, 1, 0])", R"("children": [1])"), bin),
+                     false, "node 1"});
+    cases.push_back({"GlbRootWithParent", "bad.glb", glb(replaced(json, R"([{"nodes": [0, 1]}])", R"([{"nodes": [0, 2]}])"), bin),
+                     false, "not a root"});
+    // 40 nodes each listing the next one twice: 2^40 visits if walked as given.
+    std::string chain = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [)";
+    for (int i = 0; i < 40; ++i)
+        chain += "{\"children\": [" + std::to_string(i + 1) + ", " + std::to_string(i + 1) + "]}, ";
+    chain += R"({"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "buffers": [{"byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}]})";
+    cases.push_back({"GlbExponentialNodeGraph", "bad.glb", glb(chain, std::string(36, '\0')), false, "a child twice"});
+    std::string version1 = full;
+    version1[4] = 1;
+    cases.push_back({"GlbVersion1", "bad.glb", version1, false, "GLB version 1"});
+    // Buffer files: inside the glTF's folder, regular files only.
+    cases.push_back({"GltfBufferOutsideItsFolder", "sub/bad.gltf", quadGltfJson("../outside.bin", n), false, "outside the glTF's folder"});
+    cases.push_back({"GltfBufferAbsolutePath", "bad.gltf", quadGltfJson("/etc/hostname", n), false, ""});
+    cases.push_back({"GltfBufferDevice", "bad.gltf", quadGltfJson("/dev/zero", n), false, ""});
+    cases.push_back({"GltfBufferDirectory", "bad.gltf", quadGltfJson(".", n), false, ""});
     return cases;
 }
 
 TEST_F(embree_loader, BadFilesGiveAnErrorNamingTheFile) {
+    write("outside.bin", quadBuffer());  // a real file beside the folder of sub/bad.gltf
     for (const BadFile& c : badFiles()) {
         SCOPED_TRACE(c.name);
         const fs::path path = c.missing ? mDir / c.file : write(c.file, c.bytes);
@@ -669,6 +720,17 @@ TEST_F(embree_loader, BadFilesGiveAnErrorNamingTheFile) {
         EXPECT_NE(result.error.find(c.reason), std::string::npos) << result.error;
         EXPECT_EQ(result.error.find('\n'), std::string::npos) << result.error;
         EXPECT_EQ(world.meshTriangleCount(), 0u);
+    }
+}
+
+TEST_F(embree_loader, OnlyRegularFilesAreRead) {
+    for (const char* device : {"/dev/zero", "/dev/null", "/tmp"}) {
+        SCOPED_TRACE(device);
+        EmbreeWorld world;
+        for (const auto& result : {world.loadObj(device), world.loadGltf(device)}) {
+            EXPECT_FALSE(result.ok);
+            EXPECT_NE(result.error.find("not a regular file"), std::string::npos) << result.error;
+        }
     }
 }
 

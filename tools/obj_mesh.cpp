@@ -2,6 +2,8 @@
 
 #include "text_file.h"
 
+#include <foresight/obj_check.h>
+
 #include <tiny_obj_loader.h>
 
 #include <cmath>
@@ -36,7 +38,13 @@ std::string oneLine(const std::string& text) {
 bool loadObjMesh(const std::filesystem::path& file, ObjMesh& mesh, std::string& reason) {
     mesh = ObjMesh{};
     std::string text;
-    if (!readTextFile(file.string(), text, reason)) return false;
+    if (!readRegularFile(file, foresight::kMaxObjBytes, text, reason)) return false;
+    // tinyobjloader reads numbers and indices leniently ("nan", "1,5", "3.7" and "v 1 0" become
+    // numbers): the lines it reads are checked strictly first.
+    if (!foresight::checkObjText(text, reason)) {
+        reason = "malformed OBJ: " + reason;
+        return false;
+    }
 
     // Triangulated here rather than by tinyobjloader, whose triangulation skips faces with
     // out-of-range indices silently: every index is checked below instead.

@@ -1,54 +1,90 @@
 #include "text_file.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <memory>
-#include <system_error>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace foresight_cli {
 
 namespace {
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
+struct Descriptor {
+    int fd = -1;
+    ~Descriptor() {
+        if (fd >= 0) ::close(fd);
+    }
 };
 
-bool readStream(std::FILE* stream, std::string& text, std::string& reason) {
+std::string sizeText(std::size_t bytes) {
+    return bytes >= (std::size_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB" : std::to_string(bytes) + " bytes";
+}
+
+// Reads `fd` to its end, refusing more than maxBytes.
+bool readDescriptor(int fd, std::size_t maxBytes, std::string& text, std::string& reason) {
     text.clear();
     char buffer[1 << 16];
     for (;;) {
-        const std::size_t count = std::fread(buffer, 1, sizeof buffer, stream);
-        text.append(buffer, count);
-        if (count < sizeof buffer) break;
+        const ssize_t count = ::read(fd, buffer, sizeof buffer);
+        if (count < 0) {
+            if (errno == EINTR) continue;
+            reason = std::strerror(errno);
+            return false;
+        }
+        if (count == 0) return true;
+        if (text.size() + static_cast<std::size_t>(count) > maxBytes) {
+            reason = "larger than " + sizeText(maxBytes) + " (the limit for this input)";
+            return false;
+        }
+        text.append(buffer, static_cast<std::size_t>(count));
     }
-    if (std::ferror(stream)) {
-        const int error = errno;
-        reason = error != 0 ? std::strerror(error) : "read error";
+}
+
+// Opens `file` without blocking on a named pipe, checks its kind, then reads it.
+bool readNamed(const std::string& file, bool allowPipes, std::size_t maxBytes, std::string& text, std::string& reason) {
+    Descriptor d;
+    d.fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (d.fd < 0) {
+        reason = std::strerror(errno != 0 ? errno : ENOENT);
         return false;
     }
-    return true;
+    struct stat info {};
+    if (::fstat(d.fd, &info) != 0) {
+        reason = std::strerror(errno);
+        return false;
+    }
+    if (S_ISDIR(info.st_mode)) {
+        reason = std::strerror(EISDIR);
+        return false;
+    }
+    const bool pipe = S_ISFIFO(info.st_mode);
+    if (!S_ISREG(info.st_mode) && !(allowPipes && pipe)) {
+        reason = allowPipes ? "not a regular file or pipe (a device?)" : "not a regular file";
+        return false;
+    }
+    if (!pipe && static_cast<std::uint64_t>(info.st_size) > maxBytes) {
+        reason = "larger than " + sizeText(maxBytes) + " (the limit for this input)";
+        return false;
+    }
+    // Blocking reads from here on (a pipe with a writer waits for its data).
+    const int flags = ::fcntl(d.fd, F_GETFL);
+    if (flags >= 0) ::fcntl(d.fd, F_SETFL, flags & ~O_NONBLOCK);
+    return readDescriptor(d.fd, maxBytes, text, reason);
 }
 
 } // namespace
 
-bool readTextFile(const std::string& file, std::string& text, std::string& reason) {
-    if (file == "-") {
-        errno = 0;
-        return readStream(stdin, text, reason);
-    }
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        reason = std::strerror(EISDIR);
-        return false;
-    }
-    errno = 0;
-    std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
-    if (!stream) {
-        reason = std::strerror(errno != 0 ? errno : ENOENT);
-        return false;
-    }
-    return readStream(stream.get(), text, reason);
+bool readTextFile(const std::string& file, std::string& text, std::string& reason, std::size_t maxBytes) {
+    if (file == "-") return readDescriptor(STDIN_FILENO, maxBytes, text, reason);
+    return readNamed(file, true, maxBytes, text, reason);
+}
+
+bool readRegularFile(const std::filesystem::path& file, std::size_t maxBytes, std::string& text, std::string& reason) {
+    return readNamed(file.string(), false, maxBytes, text, reason);
 }
 
 bool writeTextFile(const std::string& file, const std::string& text, std::string& reason) {

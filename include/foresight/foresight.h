@@ -8,6 +8,7 @@
 #include <foresight/danger.h>
 #include <foresight/dead_reckoning.h>
 #include <foresight/engine_profile.h>
+#include <foresight/obj_check.h>
 #include <foresight/orientation.h>
 #include <foresight/projectile.h>
 #include <foresight/replication.h>

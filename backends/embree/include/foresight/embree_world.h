@@ -84,6 +84,14 @@ struct MeshReport {
     std::string error;                       ///< why the mesh was refused; empty on success.
 };
 
+/// Largest glTF or GLB file loadGltf reads, together with every buffer file it names [bytes]:
+/// 2 GiB.
+inline constexpr std::uintmax_t kMaxGltfBytes = std::uintmax_t(2) << 30;
+/// Most vertices one loadGltf call adds, counting each node's instance of a mesh: 2^24.
+inline constexpr std::size_t kMaxLoadedVertices = std::size_t(1) << 24;
+/// Most triangles one loadGltf call adds, counting each node's instance of a mesh: 2^24.
+inline constexpr std::size_t kMaxLoadedTriangles = std::size_t(1) << 24;
+
 /// Result of EmbreeWorld::loadObj / loadGltf.
 struct MeshLoadResult {
     bool ok = false;    ///< true when the file's triangles were added.
@@ -137,11 +145,18 @@ public:
     Status addMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices,
                    MeshReport* report = nullptr);
 
-    /// Loads the faces of a Wavefront OBJ file (polygons fan-triangulated) with addMesh.
+    /// Loads the faces of a Wavefront OBJ file (polygons fan-triangulated) with addMesh. The
+    /// file must be a regular file of at most kMaxObjBytes whose vertex and face lines pass
+    /// checkObjText (obj_check.h): a damaged number or index is refused, never read as 0.
     MeshLoadResult loadObj(const std::filesystem::path& path);
     /// Loads a glTF 2.0 file (.gltf with its buffers, or binary .glb): every primitive with
     /// TRIANGLES mode of every mesh reached from the default scene (all scenes if none is set),
-    /// with the node transforms applied.
+    /// with the node transforms applied. Refused rather than guessed: GLB versions other than 2,
+    /// a scene, node, mesh, accessor or buffer view that does not exist, an accessor reaching past
+    /// its view or buffer, a byteStride outside 4..252 or smaller than an element, node graphs
+    /// that are not trees, rotations that are not unit quaternions, more than
+    /// kMaxLoadedVertices / kMaxLoadedTriangles. Buffer files must be regular files inside the
+    /// glTF's folder (no absolute or `..` paths leading out of it), kMaxGltfBytes in all.
     MeshLoadResult loadGltf(const std::filesystem::path& path);
 
     /// Builds the BVH over the mesh triangles. Returns false (and casts fall back to brute
