@@ -236,6 +236,13 @@ Status validateAim(const AimShot& shot, const AimTarget& target) {
         return Status::NonFiniteInput;
     }
     if (shot.maxTime < 0.0f) return Status::NegativeTime;
+    const auto far = [](const RVec3& p) {
+        const DVec3 d = toDouble(p);
+        return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}) > kMaxCoordinate;
+    };
+    if (far(shot.from) || far(target.position) || std::abs(static_cast<double>(shot.speed)) > kMaxSpeed ||
+        glm::length(DVec3(target.velocity)) > kMaxSpeed)
+        return Status::OutOfRange;
     const bool apex = shot.constraint == AimConstraint::ApexAboveStart || shot.constraint == AimConstraint::ApexAboveTarget;
     if (apex && shot.gravity == Vec3(0.0f)) return Status::ZeroVector;
     return Status::Ok;
@@ -258,8 +265,21 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
     r.c0 = r.targetPosition - from;
     r.c1 = r.targetVelocity;
     r.c2 = 0.5 * (r.targetAcceleration - r.gravity);
-    const double maxTime = static_cast<double>(shot.maxTime);
     const double speed = static_cast<double>(shot.speed);
+    // Hits beyond the precision envelope are not meaningful: the search ends when the target may
+    // leave it (|p| + |v| t + |a| t^2 / 2 <= kMaxCoordinate on every axis). Without this, a
+    // maxTime of 1e28 s scales the polynomials' brackets past what double can resolve.
+    double maxTime = static_cast<double>(shot.maxTime);
+    {
+        const double p = std::max({std::abs(r.targetPosition.x), std::abs(r.targetPosition.y),
+                                   std::abs(r.targetPosition.z)});
+        const double v = glm::length(r.targetVelocity), a = glm::length(r.targetAcceleration);
+        const double room = kMaxCoordinate - p;
+        double limit = std::numeric_limits<double>::infinity();
+        if (a > 0.0) limit = 2.0 * room / (v + std::sqrt(v * v + 2.0 * a * room));  // a t^2 / 2 + v t = room
+        else if (v > 0.0) limit = room / v;
+        maxTime = std::min(maxTime, limit);
+    }
 
     std::array<double, kMaxFiringSolutions> times{};
     int timeCount = 0;

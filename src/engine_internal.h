@@ -2,6 +2,8 @@
 // Private helpers of the engine-matched projectile method (engine_profile.cpp,
 // engine_projectile.cpp).
 
+#include <algorithm>
+#include <cmath>
 #include <foresight/engine_profile.h>
 #include <foresight/projectile.h>
 
@@ -40,10 +42,12 @@ struct TrajectoryRecorder {
     std::span<TrajectoryPoint> storage;
     std::size_t size = 0;
     std::size_t needed = 0;
+    double reach = 0.0;  // the largest |coordinate| of any point added [m] (the precision envelope)
 
     void add(double time, TrajectoryEvent event, const DVec3& position, const DVec3& velocity,
              const DVec3& normal = DVec3(0.0)) {
         ++needed;
+        reach = std::max({reach, std::abs(position.x), std::abs(position.y), std::abs(position.z)});
         if (size >= storage.size()) return;
         TrajectoryPoint& point = storage[size++];
         point.time = static_cast<float>(time);

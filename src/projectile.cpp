@@ -623,6 +623,10 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     if (time < 0.0f) return Status::NegativeTime;
     const std::uint64_t steps = steppedStepCount(time, settingsStep(settings));
     if (steps > settings.maxSteps) return Status::TooManySteps;
+    const DVec3 start = toD(position);
+    if (std::max({std::abs(start.x), std::abs(start.y), std::abs(start.z)}) > kMaxCoordinate ||
+        glm::length(toD(velocity)) > kMaxSpeed)
+        return Status::OutOfRange;
 
     static const EmptyWorld emptyWorld;
     const CollisionWorld& collisionWorld = world ? *world : emptyWorld;
@@ -640,6 +644,9 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     }
     if (status != Status::Ok) return status;
     if (!isFinite(result)) return Status::NonFiniteResult;
+    const DVec3 end = toD(result.position);
+    if (std::max({recorder.reach, std::abs(end.x), std::abs(end.y), std::abs(end.z)}) > kMaxCoordinate)
+        return Status::OutOfRange;
     for (std::size_t i = 0; i < recorder.size; ++i)
         if (!detail::isFinite(trajectory[i].position) || !detail::isFinite(trajectory[i].velocity))
             return Status::NonFiniteResult;

@@ -30,6 +30,11 @@ const char* statusMessage(Status status) {
     case Status::InvalidSetting: return "a settings value is outside its documented range";
     case Status::TimeWentBackwards: return "time is earlier than the previous call's";
     case Status::NoUpdate: return "no update has been accepted yet";
+    case Status::OutOfRange:
+        return kDoublePrecision
+                   ? "beyond the precision envelope (positions within 1e8 m of the origin, speeds up to 1e6 m/s)"
+                   : "beyond the precision envelope (positions within 1e5 m of the origin, speeds up to 1e6 m/s; "
+                     "build with FORESIGHT_DOUBLE_PRECISION for 1e8 m)";
     }
     return "unknown status";
 }

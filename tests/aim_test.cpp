@@ -22,6 +22,7 @@ using foresight::AimConstraint;
 using foresight::AimShot;
 using foresight::AimTarget;
 using foresight::FiringSolution;
+using foresight::Real;
 using foresight::RVec3;
 using foresight::Status;
 using foresight::Vec3;
@@ -408,13 +409,14 @@ TEST(Aim, ZeroAndNegativeSpeed) {
 // A time that rounds to 0 as a float is not reported (the contract: time in (0, maxTime]).
 // Straight line, no gravity: t = distance / speed.
 TEST(Aim, TimesThatRoundToZeroAsAFloatAreDropped) {
-    // 1e-30 m at 3e38 m/s: t = 3.3e-69 s, 0 as a float (the smallest float is 1.4e-45).
-    const Aimed tiny = aim(shotAt(3e38f, Vec3(0.0f)), staticAt(1e-30, 0, 0));
+    // 1e-44 m at 1e6 m/s (the envelope's speed): t = 1e-50 s, 0 as a float (the smallest
+    // float is 1.4e-45).
+    const Aimed tiny = aim(shotAt(1e6f, Vec3(0.0f)), staticAt(1e-44, 0, 0));
     ASSERT_EQ(tiny.status, Status::Ok);
     EXPECT_TRUE(tiny.solutions.empty());
-    // 1e-20 m at 1e10 m/s: t = 1e-30 s, a normal float (> 1.2e-38): kept, and flown.
-    const AimShot fast = shotAt(1e10f, Vec3(0.0f));
-    const AimTarget near = staticAt(1e-20, 0, 0);
+    // 1e-24 m at 1e6 m/s: t = 1e-30 s, a normal float (> 1.2e-38): kept, and flown.
+    const AimShot fast = shotAt(1e6f, Vec3(0.0f));
+    const AimTarget near = staticAt(1e-24, 0, 0);
     const Aimed kept = aim(fast, near);
     ASSERT_EQ(kept.status, Status::Ok);
     ASSERT_EQ(kept.solutions.size(), 1u);
@@ -516,11 +518,12 @@ TEST(Aim, DoesNotAllocate) {
 TEST(Aim, OverflowIsNonFiniteResult) {
     AimShot shot = shotAt(1.0f);
     shot.constraint = AimConstraint::HorizontalSpeed;
-    // 1e-30 m away horizontally, 1e30 m up: t = 1e-30 s, vertical speed 1e60 m/s.
+    // 1e-35 m away horizontally, 1e4 m up (inside the envelope): t = 1e-35 s, vertical speed
+    // 1e39 m/s, beyond float.
     std::array<FiringSolution, 4> storage{};
     std::size_t count = 0;
     const Status status =
-        foresight::aimProjectile(shot, staticAt(1e-30, 1e30, 0), storage, count);
+        foresight::aimProjectile(shot, staticAt(1e-35, 1e4, 0), storage, count);
     EXPECT_TRUE(status == Status::NonFiniteResult || (status == Status::Ok && count == 0)) << int(status);
 }
 
@@ -732,3 +735,44 @@ TEST(AimScan, DISABLED_MillionRandomProblems) {
 }
 
 } // namespace
+
+// The precision envelope: a huge maxTime must not hide a solution (the search ends where the
+// target may leave the envelope), and speeds or positions beyond it are refused.
+TEST(AimEnvelope, AHugeMaxTimeFindsWhatAShortOneFinds) {
+    AimShot shot;
+    shot.speed = 20.0f;
+    AimTarget target;
+    target.position = RVec3(30, 0, 5);
+    target.velocity = Vec3(0, 0, 4);
+    shot.maxTime = 10.0f;
+    const Aimed near = aim(shot, target);
+    ASSERT_EQ(near.status, Status::Ok);
+    ASSERT_EQ(near.solutions.size(), 2u);  // the low and the high arc
+    for (const float huge : {1e12f, 1e28f, 3e38f}) {
+        shot.maxTime = huge;
+        const Aimed far = aim(shot, target);
+        ASSERT_EQ(far.status, Status::Ok) << huge;
+        ASSERT_EQ(far.solutions.size(), near.solutions.size()) << huge;
+        for (std::size_t i = 0; i < near.solutions.size(); ++i)
+            EXPECT_EQ(far.solutions[i].time, near.solutions[i].time) << huge;
+    }
+}
+
+TEST(AimEnvelope, BeyondItIsRefused) {
+    AimTarget target;
+    target.position = RVec3(1000, 0, 0);
+    AimShot shot;
+    shot.speed = 3e38f;  // would meet the target after 3e-36 s
+    EXPECT_EQ(aim(shot, target).status, Status::OutOfRange);
+    shot.speed = 2e6f;
+    EXPECT_EQ(aim(shot, target).status, Status::OutOfRange);
+    shot.speed = 20.0f;
+    target.position = RVec3(Real(2e8), 0, 0);
+    EXPECT_EQ(aim(shot, target).status, Status::OutOfRange);
+    target.position = RVec3(10, 0, 0);
+    shot.from = RVec3(0, Real(-2e8), 0);
+    EXPECT_EQ(aim(shot, target).status, Status::OutOfRange);
+    shot.from = RVec3(0);
+    target.velocity = Vec3(0, 0, 2e6f);
+    EXPECT_EQ(aim(shot, target).status, Status::OutOfRange);
+}

@@ -682,6 +682,19 @@ TEST_F(cli, UnreadableFilesNameThePathAndTheReason) {
     EXPECT_NE(run.err.find("<stdin>"), std::string::npos) << run.err;
 }
 
+TEST_F(cli, BeyondThePrecisionEnvelopeIsRefusedNotWrong) {
+    // At x = 1e16 a throw along +z used to end at z = -52.8 instead of 36.
+    CliRun run = predict(scenarioWith(R"({"model": "projectile", "position": [1e16, 1, 0], "velocity": [0, 5, 12], "time": 3})",
+                                      R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("predictions[0]"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("precision envelope"), std::string::npos) << run.err;
+    run = runCli({"aim", "-"}, R"({"shots": [{"from": [0, 0, 0], "speed": 3e38, "target": {"position": [1000, 0, 0]}}]})");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("precision envelope"), std::string::npos) << run.err;
+}
+
 TEST_F(cli, DevicesAndPipesAreNeverReadWithoutEnd) {
     // A mesh must be a regular file: a device would read until memory runs out, a named pipe
     // would block.
@@ -1497,8 +1510,8 @@ TEST_F(cli, AimOutOfRangeIsAnEmptyListAndExtensionsWork) {
 // float, so no solution is printed (not "time": 0); 1e-20 m at 1e10 m/s (1e-30 s) is printed.
 TEST_F(cli, AimNeverPrintsTimeZero) {
     const CliRun run = runCli({"aim", "-"}, R"({"shots": [
-        {"from": [0, 0, 0], "speed": 3e38, "gravity": [0, 0, 0], "target": {"position": [1e-30, 0, 0]}},
-        {"from": [0, 0, 0], "speed": 1e10, "gravity": [0, 0, 0], "target": {"position": [1e-20, 0, 0]}}]})");
+        {"from": [0, 0, 0], "speed": 1e6, "gravity": [0, 0, 0], "target": {"position": [1e-44, 0, 0]}},
+        {"from": [0, 0, 0], "speed": 1e6, "gravity": [0, 0, 0], "target": {"position": [1e-24, 0, 0]}}]})");
     const Json out = parseOutput(run);
     EXPECT_EQ(run.err, "");
     ASSERT_EQ(out.at("shots").size(), 2u);

@@ -743,6 +743,35 @@ TEST_F(embree_loader, DegenerateTrianglesAreSkippedAndCounted) {
     EXPECT_EQ(result.report.firstDegenerateTriangle, 2u);
 }
 
+// Embree's float rays assert beyond about 1.8e18 m (a crash in release builds): segments that
+// reach that far are tested against every triangle instead, with StaticWorld's answer.
+TEST(embree_mesh, SegmentsFarBeyondFloatRaysStillGetTheExactAnswer) {
+    const std::vector<RVec3> vertices = {r3(-10, 0, -10), r3(10, 0, -10), r3(10, 0, 10), r3(-10, 0, 10)};
+    const std::vector<std::uint32_t> indices = {0, 3, 2, 0, 2, 1};
+    EmbreeWorld world;
+    ASSERT_EQ(world.addMesh(vertices, indices), Status::Ok);
+    ASSERT_TRUE(world.commit());
+    StaticWorld reference;
+    ASSERT_EQ(reference.add(Triangle{vertices[0], vertices[3], vertices[2]}), Status::Ok);
+    ASSERT_EQ(reference.add(Triangle{vertices[0], vertices[2], vertices[1]}), Status::Ok);
+    const SegmentCast casts[] = {
+        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.0f},       // through the quad, from far above
+        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.5f},       // the same, swept
+        {r3(2e18, 1, 0), Vec3(-4e18f, 0, 0), 0.0f},       // beside it
+        {r3(1e17, 1e17, 0), Vec3(-1e19f, -1e19f, 0), 0.0f},  // 1e17 m/s for 100 s
+    };
+    for (const SegmentCast& cast : casts) {
+        CastHit hit, expected;
+        const bool hits = world.castSegment(cast, hit);
+        ASSERT_EQ(hits, reference.castSegment(cast, expected));
+        if (hits) {
+            EXPECT_EQ(hit.fraction, expected.fraction);
+            EXPECT_EQ(hit.normal, expected.normal);
+            EXPECT_TRUE(world.mayTouch(cast));
+        }
+    }
+}
+
 TEST(embree_mesh, AddMeshRefusesBadInput) {
     EmbreeWorld world;
     const std::vector<RVec3> vertices{r3(0, 0, 0), r3(1, 0, 0), r3(0, 0, 1)};

@@ -64,9 +64,24 @@ using Quat = glm::quat;
 /// True when positions are double precision in this build.
 inline constexpr bool kDoublePrecision = sizeof(Real) == sizeof(double);
 
+/// The precision envelope, distances: predictions whose positions (start, trajectory, end, aim
+/// shooter and target) reach beyond this on any axis are refused with Status::OutOfRange
+/// [Units: m]. Double-precision builds: 1e8 m. Computation is in double and its rounding grows
+/// with the distance from the origin: a bouncing throw ends about 2e-14 |x| from where the same
+/// throw ends at the origin (measured: 2e-6 m at 1e8 m, 0.02 m at 1e12 m, tens of meters at
+/// 1e16 m). Default (float) builds: 1e5 m, where a float position's step is 8 mm; the positions'
+/// own rounding then moves results, and bounces amplify it (measured on a 3 s throw with five
+/// bounces and friction: 9 mm at 1 km, 0.15 m at 16 km, 0.6 m at 65 km): keep float worlds
+/// within a few km of the origin, or build with FORESIGHT_DOUBLE_PRECISION.
+inline constexpr double kMaxCoordinate = kDoublePrecision ? 1.0e8 : 1.0e5;
+
 static_assert(sizeof(Vec3) == 3 * sizeof(float), "GLM must be configured with packed vec3");
 static_assert(sizeof(Quat) == 4 * sizeof(float), "GLM must be configured with packed quat");
 static_assert(sizeof(RVec3) == 3 * sizeof(Real), "GLM must be configured with packed vec3");
+
+/// The precision envelope, speeds: a start velocity or aim speed faster than this is refused
+/// with Status::OutOfRange [Units: m/s] (a rifle bullet flies about 1e3 m/s).
+inline constexpr double kMaxSpeed = 1.0e6;
 
 /// Standard gravity of the reference article, along -Y [Units: m/s^2].
 inline constexpr float kStandardGravity = 9.81f;

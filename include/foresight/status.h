@@ -29,6 +29,8 @@ enum class Status : std::uint8_t {
     InvalidSetting,     ///< A settings field is outside its documented range.
     TimeWentBackwards,  ///< A time is earlier than the one given to the previous call.
     NoUpdate,           ///< A receiver was asked for a pose before it accepted any update.
+    OutOfRange,         ///< Beyond the precision envelope: a position farther than kMaxCoordinate
+                        ///< on an axis or a speed above kMaxSpeed (config.h).
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never null.

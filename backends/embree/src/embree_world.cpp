@@ -12,6 +12,11 @@
 FORESIGHT_NAMESPACE_BEGIN
 
 namespace {
+// How far from the origin segments are handed to Embree [m] (its rays assert beyond ~1.8e18).
+constexpr double kEmbreeReach = 1e15;
+}  // namespace
+
+namespace {
 
 using DVec3 = glm::dvec3;
 
@@ -562,7 +567,9 @@ bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
         const DVec3 origin = toD(cast.origin), displacement(cast.displacement);
         const double length = glm::length(displacement);
         const double originMagnitude = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
-        const bool built = impl->committed && impl->scene;
+        // Embree's float rays are valid only well inside float range (it asserts beyond about
+        // 1.8e18): a segment reaching past 1e15 m is tested against every triangle instead.
+        const bool built = impl->committed && impl->scene && originMagnitude + length < kEmbreeReach;
         double rho = 0.0;
         if (built && cast.radius <= 0.0f) {
             rho = floatReach(impl->largest, originMagnitude, length);
@@ -645,6 +652,8 @@ bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
     const DVec3 a = toD(capsule.origin), d(capsule.displacement);
     const DVec3 centre = a + 0.5 * d;
     if (!std::isfinite(centre.x + centre.y + centre.z)) return true;
+    const double extent = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)}) + glm::length(d);
+    if (!(extent < kEmbreeReach)) return true;  // beyond Embree's float range: "maybe"
     TouchQuery q;
     q.triangles = impl->triangles.data();
     q.capsule = capsule;
