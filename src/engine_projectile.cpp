@@ -49,6 +49,7 @@ struct Surface {
     double target = 0.0;     // the normal velocity the solver aims at [m/s]
     double normalImpulse = 0.0;
     DVec3 frictionImpulse{0.0};
+    DVec3 tangent{0.0};      // PhysX: this step's first friction direction
     double e = 0.0, mu = 0.0;
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
@@ -142,6 +143,10 @@ private:
         if (mProfile.engine == PhysicsEngine::Jolt) {
             // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
+            if (spin > maxSpin) mAngular *= maxSpin / spin;
+        } else if (mProfile.engine == PhysicsEngine::PhysX) {
+            // PxRigidDynamic's default maximum angular velocity in PhysX 4: 100 rad/s.
+            const double spin = glm::length(mAngular), maxSpin = 100.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
     }
@@ -481,6 +486,7 @@ private:
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             const double vn = glm::dot(v, s.normal);
+            choosePhysXTangent(s, v);
             s.bounce = s.e > 0.0 && vn < -mProfile.restitutionThreshold && -vn > s.gap / dt;
             const double target = s.bounce ? -s.e * vn : 0.0;
             const double bias = s.bounce ? 0.0 : mProfile.positionCorrection * s.gap / dt;
@@ -492,7 +498,7 @@ private:
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 normalRow(s, v, biased[i]);
-                if (iteration > kPhysXFrictionSkip) frictionRow(s, v, 0.8);
+                if (iteration > kPhysXFrictionSkip) frictionRowsPhysX(s, v);
             }
         }
         const DVec3 positionVelocity = v;
@@ -500,7 +506,7 @@ private:
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             normalRow(s, v, unbiased[i]);
-            frictionRow(s, v, 0.8);
+            frictionRowsPhysX(s, v);
         }
         mPushVelocity = positionVelocity - v;
     }
@@ -580,10 +586,42 @@ private:
         s.frictionImpulse = total;
     }
 
+    // PhysX 4.1 patch friction (DyContactPrep.cpp): two 1-D rows along orthogonal tangents t0 and
+    // t1 = n x t0 at the friction anchor, each clamped on its own to +- mu times the normal
+    // impulse (a box, not the disk), with the velocity multiplier 0.8 / response. t0 is the
+    // tangential part of the body's linear velocity when the step's contacts are prepared (after
+    // gravity), or, when that is below 0.01 m/s, n x (1, 0, 0) (n x (0, 0, 1) when |n.x| >= 0.7071).
+    void frictionRowsPhysX(Surface& s, DVec3& v) {
+        const DVec3 n = s.normal;
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * n;
+        const double mass = mRotates ? 0.8 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 0.8;
+        const DVec3 tangents[2] = {s.tangent, glm::cross(n, s.tangent)};
+        const double limit = s.mu * s.normalImpulse;
+        for (int row = 0; row < 2; ++row) {
+            const DVec3& t = tangents[row];
+            const double applied = glm::dot(s.frictionImpulse, t);
+            const double slip = glm::dot(v + glm::cross(mAngular, arm), t);
+            const double total = std::clamp(applied - mass * slip, -limit, limit);
+            applyTangential((total - applied) * t, n, radius, v);
+            s.frictionImpulse += (total - applied) * t;
+        }
+    }
+
+    // PhysX sets the friction directions up again in every step's contact preparation.
+    static void choosePhysXTangent(Surface& s, const DVec3& v) {
+        const DVec3 n = s.normal;
+        const DVec3 fallback = std::abs(n.x) < 0.70710678 ? DVec3(0.0, -n.z, n.y) : DVec3(-n.y, n.x, 0.0);
+        const DVec3 t0 = v - glm::dot(n, v) * n;
+        s.tangent = glm::normalize(glm::dot(t0, t0) > 1e-4 ? t0 : fallback);
+    }
+
     // The lever arm of the contact point from the centre: the sphere's surface, except in Jolt,
-    // whose contact point is midway between the two surfaces (half the gap further out).
+    // whose contact point is midway between the two surfaces (half the gap further out), and in
+    // PhysX, whose contact point (the friction anchor) lies on the static shape's surface.
     double contactArm(const Surface& s) const {
         if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
+        if (mProfile.engine == PhysicsEngine::PhysX) return std::max(0.0, mRadius + s.gap);
         return mRadius;
     }
 
