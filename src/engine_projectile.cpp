@@ -293,11 +293,29 @@ private:
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
         }
+        if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+    }
+
+    // PhysX makes a contact with every shape within the contact distance at the step's start,
+    // whatever the motion. A sphere that slides or rolls on a surface casts into that surface
+    // first, so a second cast follows the motion without its part into the surfaces touched:
+    // it finds the walls ahead.
+    void slideCast(const DVec3& freeMotion, double reach) {
+        DVec3 motion = freeMotion;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            const double into = glm::dot(motion, s.normal);
+            if (s.gap < reach && into < 0.0) motion -= into * s.normal;
+        }
+        const double length = glm::length(motion);
+        if (length <= 0.0 || glm::length(motion - freeMotion) <= 0.0) return;
+        CastHit hit;
+        if (cast(mPosition, mPosition + motion * ((length + reach) / length), hit)) addSurface(hit);
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
@@ -621,7 +639,7 @@ private:
     // PhysX, whose contact point (the friction anchor) lies on the static shape's surface.
     double contactArm(const Surface& s) const {
         if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
-        if (mProfile.engine == PhysicsEngine::PhysX) return std::max(0.0, mRadius + s.gap);
+        if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
         return mRadius;
     }
 
