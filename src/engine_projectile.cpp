@@ -278,8 +278,20 @@ private:
             const DVec3 to = mPosition - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) continue;
-            s.normal = glm::normalize(toD(hit.normal));
-            s.touch = toD(hit.position);
+            DVec3 normal = glm::normalize(toD(hit.normal)), off(0.0);
+            if (glm::dot(normal, s.normal) < 0.05) {
+                // The probe grazed another surface the sphere touches (a wall beside the floor:
+                // the probe runs along it and its rounding enters it at the start). Probe again
+                // 1 mm off that surface.
+                off = normal * 1e-3;
+                if (!cast(from + off, to + off, hit)) continue;
+                normal = glm::normalize(toD(hit.normal));
+                if (glm::dot(normal, s.normal) < 0.05) continue;
+            }
+            const DVec3 touch = toD(hit.position) - off;
+            if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
+            s.normal = normal;
+            s.touch = touch;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
@@ -382,13 +394,19 @@ private:
         return distance;
     }
 
+    // Whether one of the first `count` surfaces is the plane through `touch` with normal `n`.
+    bool isKnown(const DVec3& n, const DVec3& touch, int count) const {
+        for (int i = 0; i < count; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4) return true;
+        }
+        return false;
+    }
+
     void addSurface(const CastHit& hit) {
         const DVec3 n = glm::normalize(toD(hit.normal));
         const DVec3 touch = toD(hit.position);
-        for (int i = 0; i < mCount; ++i) {
-            Surface& s = mSurfaces[i];
-            if (glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4) return;
-        }
+        if (isKnown(n, touch, mCount)) return;
         if (mCount == kMaxSurfaces) return;
         Surface& s = mSurfaces[mCount++];
         s = Surface{};
