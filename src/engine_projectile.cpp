@@ -315,19 +315,27 @@ private:
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
     // whatever the motion. A sphere that slides or rolls on a surface casts into that surface
-    // first, so a second cast follows the motion without its part into the surfaces touched:
-    // it finds the walls ahead.
+    // first (or grazes it), so a second cast follows the motion without its part into the
+    // surfaces touched, from 1 mm off them: it finds the walls ahead, and the floor below a ball
+    // that slides down a wall.
     void slideCast(const DVec3& freeMotion, double reach) {
-        DVec3 motion = freeMotion;
+        DVec3 motion = freeMotion, off(0.0);
+        bool touching = false;
         for (int i = 0; i < mCount; ++i) {
             const Surface& s = mSurfaces[i];
+            if (s.gap >= reach) continue;
+            touching = true;
             const double into = glm::dot(motion, s.normal);
-            if (s.gap < reach && into < 0.0) motion -= into * s.normal;
+            if (into < 0.0) motion -= into * s.normal;
+            off += s.normal * 1e-3;
         }
         const double length = glm::length(motion);
-        if (length <= 0.0 || glm::length(motion - freeMotion) <= 0.0) return;
+        if (!touching || length <= 0.0) return;
         CastHit hit;
-        if (cast(mPosition, mPosition + motion * ((length + reach) / length), hit)) addSurface(hit);
+        if (cast(mPosition + off, mPosition + off + motion * ((length + reach) / length), hit)) {
+            hit.position = toR(toD(hit.position) - off);
+            addSurface(hit);
+        }
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
