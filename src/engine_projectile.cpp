@@ -288,7 +288,8 @@ private:
                 normal = glm::normalize(toD(hit.normal));
                 if (glm::dot(normal, s.normal) < 0.05) continue;
             }
-            const DVec3 touch = toD(hit.position) - off;
+            DVec3 touch = toD(hit.position) - off;
+            if (mProfile.engine == PhysicsEngine::PhysX) nearestOnEdge(normal, touch);
             if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
             s.normal = normal;
             s.touch = touch;
@@ -402,6 +403,21 @@ private:
         return distance;
     }
 
+    // A probe along a box edge's normal touches the edge at the point nearest to the centre (the
+    // probe moves across the edge), but reports the normal where it touched: the contact that
+    // PhysX makes (sphere against box: the closest point) has the normal from that point to the
+    // centre. A face keeps its normal.
+    void nearestOnEdge(DVec3& normal, DVec3& touch) const {
+        const DVec3 point = touch - normal * mRadius;  // on the box
+        const DVec3 towards = mPosition - point;
+        const double distance = glm::length(towards);
+        if (glm::dot(towards, normal) < 0.5 * mRadius) return;  // deep: the face's normal
+        const DVec3 n = towards / distance;
+        if (glm::dot(n, normal) > 1.0 - 1e-6) return;
+        normal = n;
+        touch = point + n * mRadius;
+    }
+
     // Whether one of the first `count` surfaces is the plane through `touch` with normal `n`.
     bool isKnown(const DVec3& n, const DVec3& touch, int count) const {
         for (int i = 0; i < count; ++i) {
@@ -411,9 +427,26 @@ private:
         return false;
     }
 
-    void addSurface(const CastHit& hit) {
-        const DVec3 n = glm::normalize(toD(hit.normal));
-        const DVec3 touch = toD(hit.position);
+    void addSurface(CastHit hit) {
+        DVec3 n = glm::normalize(toD(hit.normal));
+        DVec3 touch = toD(hit.position);
+        if (mProfile.engine == PhysicsEngine::PhysX) {
+            // PhysX's contact is the closest point at the step's start, not where the motion
+            // first touches: probe along the hit's normal from where the sphere is.
+            const double gap = glm::dot(mPosition - touch, n);
+            CastHit probe;
+            if (gap > -mRadius &&
+                cast(mPosition + n * 0.01, mPosition - n * (std::max(gap, 0.0) + contactReach() + 0.01), probe)) {
+                const DVec3 probeNormal = glm::normalize(toD(probe.normal));
+                if (glm::dot(probeNormal, n) > 0.5) {
+                    n = probeNormal;
+                    touch = toD(probe.position);
+                    nearestOnEdge(n, touch);
+                    hit.restitution = probe.restitution;
+                    hit.friction = probe.friction;
+                }
+            }
+        }
         if (isKnown(n, touch, mCount)) return;
         if (mCount == kMaxSurfaces) return;
         Surface& s = mSurfaces[mCount++];
