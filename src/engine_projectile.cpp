@@ -667,7 +667,7 @@ private:
     // t1 = n x t0 at the friction anchor, each clamped on its own to +- mu times the normal
     // impulse (a box, not the disk), with the velocity multiplier 0.8 / response. t0 is the
     // tangential part of the body's linear velocity when the step's contacts are prepared (after
-    // gravity), or, when that is below 0.01 m/s, n x (1, 0, 0) (n x (0, 0, 1) when |n.x| >= 0.7071).
+    // gravity), or, when that is below 0.01 m/s, (1, 0, 0) x n ((0, 0, 1) x n when |n.x| >= 0.7071).
     void frictionRowsPhysX(Surface& s, DVec3& v) {
         const DVec3 n = s.normal;
         const double radius = contactArm(s);
