@@ -49,6 +49,7 @@ struct Surface {
     double target = 0.0;     // the normal velocity the solver aims at [m/s]
     double normalImpulse = 0.0;
     DVec3 frictionImpulse{0.0};
+    DVec3 tangent{0.0};      // PhysX: this step's first friction direction
     double e = 0.0, mu = 0.0;
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
@@ -142,6 +143,10 @@ private:
         if (mProfile.engine == PhysicsEngine::Jolt) {
             // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
+            if (spin > maxSpin) mAngular *= maxSpin / spin;
+        } else if (mProfile.engine == PhysicsEngine::PhysX) {
+            // PxRigidDynamic's default maximum angular velocity in PhysX 4: 100 rad/s.
+            const double spin = glm::length(mAngular), maxSpin = 100.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
     }
@@ -273,8 +278,21 @@ private:
             const DVec3 to = mPosition - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) continue;
-            s.normal = glm::normalize(toD(hit.normal));
-            s.touch = toD(hit.position);
+            DVec3 normal = glm::normalize(toD(hit.normal)), off(0.0);
+            if (glm::dot(normal, s.normal) < 0.05) {
+                // The probe grazed another surface the sphere touches (a wall beside the floor:
+                // the probe runs along it and its rounding enters it at the start). Probe again
+                // 1 mm off that surface.
+                off = normal * 1e-3;
+                if (!cast(from + off, to + off, hit)) continue;
+                normal = glm::normalize(toD(hit.normal));
+                if (glm::dot(normal, s.normal) < 0.05) continue;
+            }
+            DVec3 touch = toD(hit.position) - off;
+            if (mProfile.engine == PhysicsEngine::PhysX) nearestOnEdge(normal, touch);
+            if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
+            s.normal = normal;
+            s.touch = touch;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
@@ -288,10 +306,36 @@ private:
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
         }
+        if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
+        }
+    }
+
+    // PhysX makes a contact with every shape within the contact distance at the step's start,
+    // whatever the motion. A sphere that slides or rolls on a surface casts into that surface
+    // first (or grazes it), so a second cast follows the motion without its part into the
+    // surfaces touched, from 1 mm off them: it finds the walls ahead, and the floor below a ball
+    // that slides down a wall.
+    void slideCast(const DVec3& freeMotion, double reach) {
+        DVec3 motion = freeMotion, off(0.0);
+        bool touching = false;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (s.gap >= reach) continue;
+            touching = true;
+            const double into = glm::dot(motion, s.normal);
+            if (into < 0.0) motion -= into * s.normal;
+            off += s.normal * 1e-3;
+        }
+        const double length = glm::length(motion);
+        if (!touching || length <= 0.0) return;
+        CastHit hit;
+        if (cast(mPosition + off, mPosition + off + motion * ((length + reach) / length), hit)) {
+            hit.position = toR(toD(hit.position) - off);
+            addSurface(hit);
         }
     }
 
@@ -359,13 +403,51 @@ private:
         return distance;
     }
 
-    void addSurface(const CastHit& hit) {
-        const DVec3 n = glm::normalize(toD(hit.normal));
-        const DVec3 touch = toD(hit.position);
-        for (int i = 0; i < mCount; ++i) {
-            Surface& s = mSurfaces[i];
-            if (glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4) return;
+    // A probe along a box edge's normal touches the edge at the point nearest to the centre (the
+    // probe moves across the edge), but reports the normal where it touched: the contact that
+    // PhysX makes (sphere against box: the closest point) has the normal from that point to the
+    // centre. A face keeps its normal.
+    void nearestOnEdge(DVec3& normal, DVec3& touch) const {
+        const DVec3 point = touch - normal * mRadius;  // on the box
+        const DVec3 towards = mPosition - point;
+        const double distance = glm::length(towards);
+        if (glm::dot(towards, normal) < 0.5 * mRadius) return;  // deep: the face's normal
+        const DVec3 n = towards / distance;
+        if (glm::dot(n, normal) > 1.0 - 1e-6) return;
+        normal = n;
+        touch = point + n * mRadius;
+    }
+
+    // Whether one of the first `count` surfaces is the plane through `touch` with normal `n`.
+    bool isKnown(const DVec3& n, const DVec3& touch, int count) const {
+        for (int i = 0; i < count; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4) return true;
         }
+        return false;
+    }
+
+    void addSurface(CastHit hit) {
+        DVec3 n = glm::normalize(toD(hit.normal));
+        DVec3 touch = toD(hit.position);
+        if (mProfile.engine == PhysicsEngine::PhysX) {
+            // PhysX's contact is the closest point at the step's start, not where the motion
+            // first touches: probe along the hit's normal from where the sphere is.
+            const double gap = glm::dot(mPosition - touch, n);
+            CastHit probe;
+            if (gap > -mRadius &&
+                cast(mPosition + n * 0.01, mPosition - n * (std::max(gap, 0.0) + contactReach() + 0.01), probe)) {
+                const DVec3 probeNormal = glm::normalize(toD(probe.normal));
+                if (glm::dot(probeNormal, n) > 0.5) {
+                    n = probeNormal;
+                    touch = toD(probe.position);
+                    nearestOnEdge(n, touch);
+                    hit.restitution = probe.restitution;
+                    hit.friction = probe.friction;
+                }
+            }
+        }
+        if (isKnown(n, touch, mCount)) return;
         if (mCount == kMaxSurfaces) return;
         Surface& s = mSurfaces[mCount++];
         s = Surface{};
@@ -481,6 +563,7 @@ private:
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             const double vn = glm::dot(v, s.normal);
+            choosePhysXTangent(s, v);
             s.bounce = s.e > 0.0 && vn < -mProfile.restitutionThreshold && -vn > s.gap / dt;
             const double target = s.bounce ? -s.e * vn : 0.0;
             const double bias = s.bounce ? 0.0 : mProfile.positionCorrection * s.gap / dt;
@@ -492,7 +575,7 @@ private:
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 normalRow(s, v, biased[i]);
-                if (iteration > kPhysXFrictionSkip) frictionRow(s, v, 0.8);
+                if (iteration > kPhysXFrictionSkip) frictionRowsPhysX(s, v);
             }
         }
         const DVec3 positionVelocity = v;
@@ -500,7 +583,7 @@ private:
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             normalRow(s, v, unbiased[i]);
-            frictionRow(s, v, 0.8);
+            frictionRowsPhysX(s, v);
         }
         mPushVelocity = positionVelocity - v;
     }
@@ -580,10 +663,42 @@ private:
         s.frictionImpulse = total;
     }
 
+    // PhysX 4.1 patch friction (DyContactPrep.cpp): two 1-D rows along orthogonal tangents t0 and
+    // t1 = n x t0 at the friction anchor, each clamped on its own to +- mu times the normal
+    // impulse (a box, not the disk), with the velocity multiplier 0.8 / response. t0 is the
+    // tangential part of the body's linear velocity when the step's contacts are prepared (after
+    // gravity), or, when that is below 0.01 m/s, (1, 0, 0) x n ((0, 0, 1) x n when |n.x| >= 0.7071).
+    void frictionRowsPhysX(Surface& s, DVec3& v) {
+        const DVec3 n = s.normal;
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * n;
+        const double mass = mRotates ? 0.8 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 0.8;
+        const DVec3 tangents[2] = {s.tangent, glm::cross(n, s.tangent)};
+        const double limit = s.mu * s.normalImpulse;
+        for (int row = 0; row < 2; ++row) {
+            const DVec3& t = tangents[row];
+            const double applied = glm::dot(s.frictionImpulse, t);
+            const double slip = glm::dot(v + glm::cross(mAngular, arm), t);
+            const double total = std::clamp(applied - mass * slip, -limit, limit);
+            applyTangential((total - applied) * t, n, radius, v);
+            s.frictionImpulse += (total - applied) * t;
+        }
+    }
+
+    // PhysX sets the friction directions up again in every step's contact preparation.
+    static void choosePhysXTangent(Surface& s, const DVec3& v) {
+        const DVec3 n = s.normal;
+        const DVec3 fallback = std::abs(n.x) < 0.70710678 ? DVec3(0.0, -n.z, n.y) : DVec3(-n.y, n.x, 0.0);
+        const DVec3 t0 = v - glm::dot(n, v) * n;
+        s.tangent = glm::normalize(glm::dot(t0, t0) > 1e-4 ? t0 : fallback);
+    }
+
     // The lever arm of the contact point from the centre: the sphere's surface, except in Jolt,
-    // whose contact point is midway between the two surfaces (half the gap further out).
+    // whose contact point is midway between the two surfaces (half the gap further out), and in
+    // PhysX, whose contact point (the friction anchor) lies on the static shape's surface.
     double contactArm(const Surface& s) const {
         if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
+        if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
         return mRadius;
     }
 
