@@ -53,6 +53,8 @@ struct Surface {
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
+    double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
+    DVec3 warmFriction{0.0};
     // Triangle meshes (Bullet): the manifold point of this surface.
     bool persists = false;   // acted in the previous step: its point may still be in the manifold
     bool reversed = false;   // the triangle's back face acts: normal and gap are reversed this step
@@ -143,6 +145,10 @@ private:
             // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
+        } else if (mProfile.engine == PhysicsEngine::Rapier) {
+            // Rapier caps the spin in every sub-step at 45 degrees per step.
+            const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI / mRec.dt;
+            if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
     }
 
@@ -226,6 +232,7 @@ private:
         if (acted && mProfile.engine == PhysicsEngine::Rapier) mPosition = mSubstepPosition;
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
+        if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
         correctPositions();
         if (mMeshContacts) followManifoldPoints(mPosition - before);
 
@@ -235,6 +242,10 @@ private:
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.carried = s.acting && s.normalImpulse > 0.0;
+            if (!s.acting) {
+                s.warmNormal = 0.0;
+                s.warmFriction = DVec3(0.0);
+            }
             if (!s.acting || s.normalImpulse <= 0.0) continue;
             mTouching = true;
             if (s.normalImpulse > strongest) {
@@ -505,60 +516,154 @@ private:
         mPushVelocity = positionVelocity - v;
     }
 
-    // Rapier: the contacts of the step start, solved in each of the sub-steps with soft push-out
-    // and an unbiased pass; a new contact bounces at the end of the step with e times the
-    // start-of-step approach. Damping comes last, as in free flight.
+    // Rapier 0.21 (rapier.js; the Rust solver's TGS-soft): the contacts of the step start,
+    // solved in each of its `substeps` sub-steps h = dt / n. A sub-step adds gravity, re-applies
+    // the impulses of the previous sub-step (warm start), solves the normal rows with soft
+    // push-out (no friction in this biased pass), moves the body, then solves once more without
+    // bias: normal rows, then friction (two tangent rows at the contact point, clamped to the
+    // disk of mu times this sub-step's normal impulse). The contact point is frozen on both
+    // bodies at the step start (midway between the surfaces); the sphere's anchor turns with
+    // it, so a rolling sphere's separation grows within the step. After the sub-steps a contact
+    // that is new (no impulse in the previous step) and pushed in this one bounces: its normal
+    // velocity becomes e times the approach at the step start. Damping comes last.
     void solveRapier(const DVec3& v0, DVec3& v) {
         const double dt = mRec.dt;
         const int n = static_cast<int>(mProfile.substeps);
         const double h = dt / n;
-        const double omega = 2.0 * M_PI * 60.0, zeta = 10.0;  // static contacts: 60 Hz, damping ratio 10
+        // Contacts against fixed bodies (IntegrationParameters::static_contact_softness): a
+        // 60 Hz spring with damping ratio 10, evaluated for the sub-step.
+        const double omega = 2.0 * M_PI * 60.0, zeta = 10.0;
         const double erpInvDt = omega / (h * omega + 2.0 * zeta);
         const double erp = h * erpInvDt;
         const double cfmCoefficient = (1.0 / erp - 1.0) * (1.0 / erp - 1.0) / ((1.0 / erp) * 4.0 * zeta * zeta);
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
+        const double maxCorrective = 3.0;  // normalized_max_corrective_velocity [m/s]
+        const double maxSpin = 0.25 * M_PI / dt;  // at most 45 degrees of rotation per step
+        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
         const DVec3 start = mPosition;
         DVec3 x = mPosition;
-        double seed[kMaxSurfaces] = {};
+        double lambda[kMaxSurfaces] = {}, total[kMaxSurfaces] = {}, seed[kMaxSurfaces] = {}, arm[kMaxSurfaces] = {};
+        DVec3 anchor[kMaxSurfaces] = {};  // the sphere's contact point from its centre, turning with it
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             const double vn0 = glm::dot(v0, s.normal);
             s.bounce = (!s.carried || s.e >= 1.0) && s.e > 0.0 && vn0 < 0.0;
             seed[i] = s.bounce ? s.e * vn0 : 0.0;
+            arm[i] = mRotates ? std::max(0.0, mRadius + 0.5 * s.gap) : 0.0;
+            anchor[i] = -arm[i] * s.normal;
+            lambda[i] = s.warmNormal;
+            s.warmFriction -= glm::dot(s.warmFriction, s.normal) * s.normal;
         }
         for (int sub = 0; sub < n; ++sub) {
             vel += mGravity * h;
+            // Warm start: the previous sub-step's impulses once more.
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal);
-                const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -3.0, 0.0);
+                vel += lambda[i] * s.normal;
+                applyRapierFriction(s.warmFriction, anchor0(s, arm[i]), invInertia, vel);
+            }
+            // Biased pass: normal rows only.
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -maxCorrective, 0.0);
                 const double cf = dist <= 0.0 ? cfmFactor : 1.0;
-                const double vn = glm::dot(vel, s.normal);
-                // Warm-started: the accumulated impulse so far stays applied.
-                const double accumulated = std::max(0.0, cf * (s.normalImpulse - (vn + rhs)));
-                vel += (accumulated - s.normalImpulse) * s.normal;
-                s.normalImpulse = accumulated;
-                frictionRow(s, vel, 1.0);
+                const double next = cf * std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + rhs));
+                vel += (next - lambda[i]) * s.normal;
+                lambda[i] = next;
+            }
+            if (mRotates) {
+                const double spin = glm::length(mAngular);
+                if (spin > maxSpin) mAngular *= maxSpin / spin;
             }
             x += vel * h;
+            if (mRotates) turnAnchors(anchor, h);
+            // Unbiased pass: normal rows, then friction.
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal);
-                normalRow(s, vel, -std::max(dist, 0.0) / h);
+                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double next = std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + std::max(dist, 0.0) / h));
+                vel += (next - lambda[i]) * s.normal;
+                lambda[i] = next;
+                const DVec3 r = anchor0(s, arm[i]);
+                DVec3 slip = vel + glm::cross(mAngular, r);
+                slip -= glm::dot(slip, s.normal) * s.normal;
+                const double k = 1.0 + (mRotates ? invInertia * arm[i] * arm[i] : 0.0);
+                DVec3 impulse = s.warmFriction - slip / k;
+                const double limit = s.mu * lambda[i], size = glm::length(impulse);
+                if (size > limit) impulse *= size > 0.0 ? limit / size : 0.0;
+                applyRapierFriction(impulse - s.warmFriction, r, invInertia, vel);
+                s.warmFriction = impulse;
+                total[i] += lambda[i];
             }
         }
+        // Restitution, once after the sub-steps.
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
-            if (!s.acting || seed[i] >= 0.0 || s.normalImpulse <= 0.0) continue;
-            const double vn = glm::dot(vel, s.normal);
-            if (vn < -seed[i]) vel += (-seed[i] - vn) * s.normal;
+            if (!s.acting) continue;
+            if (seed[i] < 0.0 && total[i] > 0.0) {
+                const double next = std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + seed[i]));
+                vel += (next - lambda[i]) * s.normal;
+                total[i] += next - lambda[i];
+                lambda[i] = next;
+            }
+            s.warmNormal = lambda[i];
+            s.normalImpulse = total[i];
+            s.frictionImpulse = s.warmFriction;
         }
         mSubstepPosition = x;
         v = vel * mRec.d;
+    }
+
+    // The sphere's contact point on surface s at the step start, from the centre.
+    static DVec3 anchor0(const Surface& s, double arm) { return -arm * s.normal; }
+
+    // The contact anchors turn with the sphere: a sub-step's rotation, linearised as Rapier
+    // integrates it (the quaternion (w h / 2, 1), normalised).
+    void turnAnchors(DVec3* anchor, double h) const {
+        const double spin = glm::length(mAngular);
+        if (spin <= 0.0) return;
+        const double angle = 2.0 * std::atan(0.5 * spin * h);
+        const DVec3 k = mAngular / spin;
+        const double c = std::cos(angle), sn = std::sin(angle);
+        for (int i = 0; i < mCount; ++i) {
+            if (!mSurfaces[i].acting) continue;
+            const DVec3 a = anchor[i];
+            anchor[i] = a * c + glm::cross(k, a) * sn + k * (glm::dot(k, a) * (1.0 - c));
+        }
+    }
+
+    // A friction impulse (per unit mass) at the contact point r from the centre.
+    void applyRapierFriction(const DVec3& impulse, const DVec3& r, double invInertia, DVec3& v) {
+        v += impulse;
+        if (mRotates) mAngular += invInertia * glm::cross(r, impulse);
+    }
+
+    // Rapier's continuous collision detection (CCDSolver::solve_continuous): a body that moved
+    // more than half its radius in the step (its centre, plus the rotation at its surface) is
+    // swept from the step's start to its end against the static shapes; at the first pose where
+    // it penetrates one by the allowed linear error it stops. The velocity is left alone: the
+    // contact found at the next step's start deals with it.
+    void rapierSweep(const DVec3& before) {
+        const DVec3 motion = mPosition - before;
+        const double turn = 2.0 * std::atan(0.5 * glm::length(mAngular) * mRec.dt / mProfile.substeps) *
+                            mProfile.substeps * mRadius;
+        if (glm::length(motion) + (mRotates ? turn : 0.0) <= 0.5 * mRadius) return;
+        const double slop = mProfile.penetrationSlop;
+        if (mRadius <= slop) return;
+        SegmentCast c;
+        c.origin = toR(before);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(mRadius - slop);
+        CastHit hit;
+        if (!mWorld.castSegment(c, hit)) return;
+        if (hit.fraction <= 0.0f || hit.fraction >= 1.0f) return;
+        mPosition = toD(hit.position);
     }
 
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
