@@ -646,24 +646,32 @@ private:
 
     // Rapier's continuous collision detection (CCDSolver::solve_continuous): a body that moved
     // more than half its radius in the step (its centre, plus the rotation at its surface) is
-    // swept from the step's start to its end against the static shapes; at the first pose where
-    // it penetrates one by the allowed linear error it stops. The velocity is left alone: the
-    // contact found at the next step's start deals with it.
+    // swept from the step's start to its end against the static shapes (parry's time of impact,
+    // Box2D's conservative advancement): the target is a penetration of the allowed linear
+    // error, within a quarter of it. A sweep that starts within that tolerance of the target
+    // finds the impact at once and is ignored; one that ends within it finds none. Otherwise the
+    // body stops at the target. The velocity is left alone: the contact found at the next step's
+    // start deals with it.
     void rapierSweep(const DVec3& before) {
         const DVec3 motion = mPosition - before;
         const double turn = 2.0 * std::atan(0.5 * glm::length(mAngular) * mRec.dt / mProfile.substeps) *
                             mProfile.substeps * mRadius;
         if (glm::length(motion) + (mRotates ? turn : 0.0) <= 0.5 * mRadius) return;
-        const double slop = mProfile.penetrationSlop;
-        if (mRadius <= slop) return;
+        const double slop = mProfile.penetrationSlop, tolerance = 0.25 * slop;
+        if (mRadius <= 2.0 * slop) return;
         SegmentCast c;
         c.origin = toR(before);
         c.displacement = toF(motion);
-        c.radius = static_cast<float>(mRadius - slop);
+        c.radius = static_cast<float>(mRadius - slop - tolerance);
         CastHit hit;
-        if (!mWorld.castSegment(c, hit)) return;
-        if (hit.fraction <= 0.0f || hit.fraction >= 1.0f) return;
-        mPosition = toD(hit.position);
+        if (!mWorld.castSegment(c, hit) || hit.fraction <= 0.0f) return;
+        // Separations along the hit surface's normal, from where the cast touched it.
+        const DVec3 n = glm::normalize(toD(hit.normal)), at = toD(hit.position);
+        const double start = glm::dot(before - at, n), end = glm::dot(mPosition - at, n);
+        if (start < 2.0 * tolerance || start <= end) return;
+        const double fraction = (start - tolerance) / (start - end);
+        if (fraction <= 0.0 || fraction >= 1.0) return;
+        mPosition = before + motion * fraction;
     }
 
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
