@@ -298,12 +298,43 @@ private:
             const DVec3 to = mPosition + freeMotion * ((length + reach) / length);
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
+            if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
         }
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+    }
+
+    // Rapier's narrow phase keeps a contact with every shape within its prediction distance of
+    // the sphere, wherever the sphere is heading: an edge it passes by, a face it already
+    // penetrates. A sphere grown by that distance, cast from behind the sphere up to it, meets
+    // such a shape; a probe along the hit's normal then measures the sphere's own gap to it.
+    void findNearby(const DVec3& direction, double reach) {
+        const double back = mRadius + reach + 0.05;
+        SegmentCast grown;
+        grown.origin = toR(mPosition - direction * back);
+        grown.displacement = toF(mPosition + direction * 1e-3 - toD(grown.origin));
+        grown.radius = static_cast<float>(mRadius + reach);
+        CastHit hit;
+        if (!mWorld.castSegment(grown, hit)) return;
+        // Along the closest direction the probe meets the shape at the gap; an edge or corner
+        // gives that direction after a few probes.
+        DVec3 n = glm::normalize(toD(hit.normal));
+        const double lift = 0.05;
+        CastHit probe;
+        bool found = false;
+        for (int iteration = 0; iteration < 4; ++iteration) {
+            CastHit next;
+            if (!cast(mPosition + n * lift, mPosition - n * (reach + 0.01), next)) break;
+            probe = next;
+            found = true;
+            const DVec3 m = glm::normalize(toD(next.normal));
+            if (glm::dot(m, n) > 1.0 - 1e-9) break;
+            n = m;
+        }
+        if (found) addSurface(probe);
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
