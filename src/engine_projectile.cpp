@@ -54,6 +54,7 @@ struct Surface {
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
     double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
+    int color = -1;            // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
     // Triangle meshes (Bullet): the manifold point of this surface.
     bool persists = false;   // acted in the previous step: its point may still be in the manifold
@@ -245,6 +246,7 @@ private:
             if (!s.acting) {
                 s.warmNormal = 0.0;
                 s.warmFriction = DVec3(0.0);
+                s.color = -1;
             }
             if (!s.acting || s.normalImpulse <= 0.0) continue;
             mTouching = true;
@@ -576,6 +578,26 @@ private:
         DVec3 x = mPosition;
         double lambda[kMaxSurfaces] = {}, total[kMaxSurfaces] = {}, seed[kMaxSurfaces] = {}, arm[kMaxSurfaces] = {};
         DVec3 anchor[kMaxSurfaces] = {};  // the sphere's contact point from its centre, turning with it
+        // The solver's order: a contact with a static body takes the highest colour its body
+        // has free when it appears (narrow_phase::assign_pair_solver_color) and keeps it while
+        // it lasts; colours are solved in increasing order, so the newest contact comes first.
+        int order[kMaxSurfaces] = {};
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            order[i] = i;
+            if (!s.acting || s.color >= 0) continue;
+            int color = 127;
+            for (bool taken = true; taken && color > 0;) {
+                taken = false;
+                for (int j = 0; j < mCount; ++j)
+                    if (j != i && mSurfaces[j].color == color) taken = true;
+                if (taken) --color;
+            }
+            s.color = color;
+        }
+        for (int i = 1; i < mCount; ++i)
+            for (int j = i; j > 0 && mSurfaces[order[j - 1]].color > mSurfaces[order[j]].color; --j)
+                std::swap(order[j - 1], order[j]);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
@@ -590,14 +612,16 @@ private:
         for (int sub = 0; sub < n; ++sub) {
             vel += mGravity * h;
             // Warm start: the previous sub-step's impulses once more.
-            for (int i = 0; i < mCount; ++i) {
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 vel += lambda[i] * s.normal;
                 applyRapierFriction(s.warmFriction, anchor0(s, arm[i]), invInertia, vel);
             }
             // Biased pass: normal rows only.
-            for (int i = 0; i < mCount; ++i) {
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
@@ -614,7 +638,8 @@ private:
             x += vel * h;
             if (mRotates) turnAnchors(anchor, h);
             // Unbiased pass: normal rows, then friction.
-            for (int i = 0; i < mCount; ++i) {
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
@@ -634,7 +659,8 @@ private:
             }
         }
         // Restitution, once after the sub-steps.
-        for (int i = 0; i < mCount; ++i) {
+        for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             if (seed[i] < 0.0 && total[i] > 0.0) {
