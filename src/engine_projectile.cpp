@@ -703,11 +703,14 @@ private:
 
     // Rapier's continuous collision detection (CCDSolver::solve_continuous): a body that moved
     // more than half its radius in the step (its centre, plus the rotation at its surface) is
-    // swept from the step's start to its end against the static shapes (parry's time of impact,
-    // Box2D's conservative advancement): the target is a penetration of the allowed linear
-    // error, within a quarter of it. A sweep that starts within that tolerance of the target
-    // finds the impact at once and is ignored; one that ends within it finds none. Otherwise the
-    // body stops at the target. The velocity is left alone: the contact found at the next step's
+    // swept from the step's start to its end against the static shapes, and stops at the first
+    // pose where it penetrates one by the allowed linear error. The time of impact is parry's
+    // (Box2D's conservative advancement): from the closest points at the time reached so far,
+    // the motion advances until the separation along that axis reaches the target, until the
+    // distance is within a quarter of the allowed error above the target (on a face exactly the
+    // target; past an edge up to that much less deep). A sweep that starts within that tolerance
+    // finds the impact at once and is ignored, as is one whose end does not reach below the
+    // target by the tolerance. The velocity is left alone: the contact found at the next step's
     // start deals with it.
     void rapierSweep(const DVec3& before) {
         const DVec3 motion = mPosition - before;
@@ -722,13 +725,49 @@ private:
         c.radius = static_cast<float>(mRadius - slop - tolerance);
         CastHit hit;
         if (!mWorld.castSegment(c, hit) || hit.fraction <= 0.0f) return;
-        // Separations along the hit surface's normal, from where the cast touched it.
-        const DVec3 n = glm::normalize(toD(hit.normal)), at = toD(hit.position);
-        const double start = glm::dot(before - at, n), end = glm::dot(mPosition - at, n);
-        if (start < 2.0 * tolerance || start <= end) return;
-        const double fraction = (start - tolerance) / (start - end);
-        if (fraction <= 0.0 || fraction >= 1.0) return;
-        mPosition = before + motion * fraction;
+        const double target = mRadius - slop;
+        DVec3 axis = glm::normalize(toD(hit.normal));
+        double t = 0.0, distance = 0.0;
+        const double range = mRadius + glm::length(motion) + 0.05;
+        if (!closestDistance(before, range, axis, distance)) return;
+        for (int iteration = 0; iteration < 20; ++iteration) {
+            if (distance < target + tolerance) {
+                if (t > 0.0 && t < 1.0) mPosition = before + motion * t;
+                return;
+            }
+            // The separation along the axis is linear in time: where does it reach the target?
+            const DVec3 at = before + motion * t;
+            const double end = distance + glm::dot(mPosition - at, axis);
+            if (end > target - tolerance) return;
+            t += (1.0 - t) * (distance - target) / (distance - end);
+            if (!closestDistance(before + motion * t, range, axis, distance)) return;
+        }
+    }
+
+    // The distance from centre `c` to the nearest surface near direction -`axis`, within `range`
+    // (`axis` becomes
+    // the direction from that surface's closest point to c): a few probes along it converge on
+    // an edge or corner. False when a probe finds nothing.
+    bool closestDistance(const DVec3& c, double range, DVec3& axis, double& distance) const {
+        // Each probe's distance is a lower bound (the contact's tangent plane supports the
+        // shape); a probe sphere just smaller than the distance touches at the closest point.
+        double probe = 0.5 * mRadius;
+        const double lift = 0.05;
+        for (int iteration = 0; iteration < 6; ++iteration) {
+            SegmentCast cast;
+            cast.origin = toR(c + axis * lift);
+            cast.displacement = toF(c - axis * range - toD(cast.origin));
+            cast.radius = static_cast<float>(probe);
+            CastHit hit;
+            if (!mWorld.castSegment(cast, hit)) return false;
+            const DVec3 n = glm::normalize(toD(hit.normal));
+            const bool settled = glm::dot(n, axis) > 1.0 - 1e-10;
+            axis = n;
+            distance = glm::dot(c - toD(hit.position), n) + probe;
+            if (settled && iteration > 0) break;
+            probe = std::max(0.1 * mRadius, distance - 1e-3);
+        }
+        return true;
     }
 
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.
