@@ -302,11 +302,34 @@ private:
             if (cast(mPosition, to, hit)) addSurface(hit);
             if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
         }
+        if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+    }
+
+    // Rapier's contacts have the closest points' normal and distance (an edge's too): each
+    // surface found is measured again along the direction that converges on its closest point.
+    // Two surfaces that turn out to be the same one are merged.
+    void closestPoints(double reach) {
+        int kept = 0;
+        for (int i = 0; i < mCount; ++i) {
+            Surface s = mSurfaces[i];
+            DVec3 axis = s.normal;
+            double distance = 0.0;
+            if (closestDistance(mPosition, mRadius + reach + 0.1, axis, distance)) {
+                s.normal = axis;
+                s.gap = distance - mRadius;
+                s.touch = mPosition - axis * s.gap;
+            }
+            bool same = false;
+            for (int j = 0; j < kept; ++j)
+                if (glm::dot(mSurfaces[j].normal, s.normal) > 0.999 && std::abs(mSurfaces[j].gap - s.gap) < 1e-4) same = true;
+            if (!same) mSurfaces[kept++] = s;
+        }
+        mCount = kept;
     }
 
     // Rapier's narrow phase keeps a contact with every shape within its prediction distance of
