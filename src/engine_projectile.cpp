@@ -17,7 +17,7 @@
 //     the friction cone of the normal impulse.
 //  4. position: the step's free motion when nothing acted (the profile's recurrence, sub-steps
 //     included); otherwise `p += v dt`. A position correction then moves the sphere out by
-//     `fraction * (depth - slop)`.
+//     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
 #include "engine_internal.h"
 
@@ -683,7 +683,7 @@ private:
         }
         // Restitution, once after the sub-steps.
         for (int q = 0; q < mCount; ++q) {
-                const int i = order[q];
+            const int i = order[q];
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             if (seed[i] < 0.0 && total[i] > 0.0) {
@@ -767,10 +767,9 @@ private:
         }
     }
 
-    // The distance from centre `c` to the nearest surface near direction -`axis`, within `range`
-    // (`axis` becomes
-    // the direction from that surface's closest point to c): a few probes along it converge on
-    // an edge or corner. False when a probe finds nothing.
+    // The distance from centre `c` to the nearest surface near direction -`axis`, within `range`;
+    // `axis` becomes the direction from that surface's closest point to c (a few probes converge
+    // on an edge or corner). False when a probe finds nothing.
     bool closestDistance(const DVec3& c, double range, DVec3& axis, double& distance) const {
         // Each probe's distance is a lower bound (the contact's tangent plane supports the
         // shape); a probe sphere just smaller than the distance touches at the closest point.
