@@ -66,7 +66,7 @@ EngineProfile engineProfile(PhysicsEngine engine) {
         p.frictionCombine = CombineRule::Average;
         p.contact = ContactMethod::Speculative;
         p.contactDistance = 0.02f;
-        p.penetrationSlop = 0.001f;
+        p.penetrationSlop = 0.005f;  // normalized_allowed_linear_error: the CCD stops this deep
         p.positionCorrection = 0.2f;
         p.correctionIsVelocity = false;
         break;

@@ -17,7 +17,7 @@
 //     the friction cone of the normal impulse.
 //  4. position: the step's free motion when nothing acted (the profile's recurrence, sub-steps
 //     included); otherwise `p += v dt`. A position correction then moves the sphere out by
-//     `fraction * (depth - slop)`.
+//     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
 #include "engine_internal.h"
 
@@ -54,6 +54,9 @@ struct Surface {
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
+    double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
+    int color = -1;            // Rapier: the solver colour of the contact (solved lowest first)
+    DVec3 warmFriction{0.0};
     // Triangle meshes (Bullet): the manifold point of this surface.
     bool persists = false;   // acted in the previous step: its point may still be in the manifold
     bool reversed = false;   // the triangle's back face acts: normal and gap are reversed this step
@@ -148,6 +151,10 @@ private:
             // PxRigidDynamic's default maximum angular velocity in PhysX 4: 100 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 100.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
+        } else if (mProfile.engine == PhysicsEngine::Rapier) {
+            // Rapier caps the spin in every sub-step at 45 degrees per step.
+            const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI / mRec.dt;
+            if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
     }
 
@@ -231,6 +238,7 @@ private:
         if (acted && mProfile.engine == PhysicsEngine::Rapier) mPosition = mSubstepPosition;
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
+        if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
         correctPositions();
         if (mMeshContacts) followManifoldPoints(mPosition - before);
 
@@ -240,6 +248,11 @@ private:
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.carried = s.acting && s.normalImpulse > 0.0;
+            if (!s.acting) {
+                s.warmNormal = 0.0;
+                s.warmFriction = DVec3(0.0);
+                s.color = -1;
+            }
             if (!s.acting || s.normalImpulse <= 0.0) continue;
             mTouching = true;
             if (s.normalImpulse > strongest) {
@@ -305,8 +318,10 @@ private:
             const DVec3 to = mPosition + freeMotion * ((length + reach) / length);
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
+            if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
         }
         if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
+        if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
@@ -337,6 +352,58 @@ private:
             hit.position = toR(toD(hit.position) - off);
             addSurface(hit);
         }
+    }
+
+    // Rapier's contacts have the closest points' normal and distance (an edge's too): each
+    // surface found is measured again along the direction that converges on its closest point.
+    // Two surfaces that turn out to be the same one are merged.
+    void closestPoints(double reach) {
+        int kept = 0;
+        for (int i = 0; i < mCount; ++i) {
+            Surface s = mSurfaces[i];
+            DVec3 axis = s.normal;
+            double distance = 0.0;
+            if (closestDistance(mPosition, mRadius + reach + 0.1, axis, distance)) {
+                s.normal = axis;
+                s.gap = distance - mRadius;
+                s.touch = mPosition - axis * s.gap;
+            }
+            bool same = false;
+            for (int j = 0; j < kept; ++j)
+                if (glm::dot(mSurfaces[j].normal, s.normal) > 0.999 && std::abs(mSurfaces[j].gap - s.gap) < 1e-4) same = true;
+            if (!same) mSurfaces[kept++] = s;
+        }
+        mCount = kept;
+    }
+
+    // Rapier's narrow phase keeps a contact with every shape within its prediction distance of
+    // the sphere, wherever the sphere is heading: an edge it passes by, a face it already
+    // penetrates. A sphere grown by that distance, cast from behind the sphere up to it, meets
+    // such a shape; a probe along the hit's normal then measures the sphere's own gap to it.
+    void findNearby(const DVec3& direction, double reach) {
+        const double back = mRadius + reach + 0.05;
+        SegmentCast grown;
+        grown.origin = toR(mPosition - direction * back);
+        grown.displacement = toF(mPosition + direction * 1e-3 - toD(grown.origin));
+        grown.radius = static_cast<float>(mRadius + reach);
+        CastHit hit;
+        if (!mWorld.castSegment(grown, hit)) return;
+        // Along the closest direction the probe meets the shape at the gap; an edge or corner
+        // gives that direction after a few probes.
+        DVec3 n = glm::normalize(toD(hit.normal));
+        const double lift = 0.05;
+        CastHit probe;
+        bool found = false;
+        for (int iteration = 0; iteration < 4; ++iteration) {
+            CastHit next;
+            if (!cast(mPosition + n * lift, mPosition - n * (reach + 0.01), next)) break;
+            probe = next;
+            found = true;
+            const DVec3 m = glm::normalize(toD(next.normal));
+            if (glm::dot(m, n) > 1.0 - 1e-9) break;
+            n = m;
+        }
+        if (found) addSurface(probe);
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
@@ -588,60 +655,224 @@ private:
         mPushVelocity = positionVelocity - v;
     }
 
-    // Rapier: the contacts of the step start, solved in each of the sub-steps with soft push-out
-    // and an unbiased pass; a new contact bounces at the end of the step with e times the
-    // start-of-step approach. Damping comes last, as in free flight.
+    // Rapier 0.21 (rapier.js; the Rust solver's TGS-soft): the contacts of the step start,
+    // solved in each of its `substeps` sub-steps h = dt / n. A sub-step adds gravity, re-applies
+    // the impulses of the previous sub-step (warm start), solves the normal rows with soft
+    // push-out (no friction in this biased pass), moves the body, then solves once more without
+    // bias: normal rows, then friction (two tangent rows at the contact point, clamped to the
+    // disk of mu times this sub-step's normal impulse). The contact point is frozen on both
+    // bodies at the step start (midway between the surfaces); the sphere's anchor turns with
+    // it, so a rolling sphere's separation grows within the step. After the sub-steps a contact
+    // that is new (no impulse in the previous step) and pushed in this one bounces: its normal
+    // velocity becomes e times the approach at the step start. Damping comes last.
     void solveRapier(const DVec3& v0, DVec3& v) {
         const double dt = mRec.dt;
         const int n = static_cast<int>(mProfile.substeps);
         const double h = dt / n;
-        const double omega = 2.0 * M_PI * 60.0, zeta = 10.0;  // static contacts: 60 Hz, damping ratio 10
+        // Contacts against fixed bodies (IntegrationParameters::static_contact_softness): a
+        // 60 Hz spring with damping ratio 10, evaluated for the sub-step.
+        const double omega = 2.0 * M_PI * 60.0, zeta = 10.0;
         const double erpInvDt = omega / (h * omega + 2.0 * zeta);
         const double erp = h * erpInvDt;
         const double cfmCoefficient = (1.0 / erp - 1.0) * (1.0 / erp - 1.0) / ((1.0 / erp) * 4.0 * zeta * zeta);
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
+        const double maxCorrective = 3.0;  // normalized_max_corrective_velocity [m/s]
+        const double maxSpin = 0.25 * M_PI / dt;  // at most 45 degrees of rotation per step
+        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
         const DVec3 start = mPosition;
         DVec3 x = mPosition;
-        double seed[kMaxSurfaces] = {};
+        double lambda[kMaxSurfaces] = {}, total[kMaxSurfaces] = {}, seed[kMaxSurfaces] = {}, arm[kMaxSurfaces] = {};
+        DVec3 anchor[kMaxSurfaces] = {};  // the sphere's contact point from its centre, turning with it
+        // The solver's order: a contact with a static body takes the highest colour its body
+        // has free when it appears (narrow_phase::assign_pair_solver_color) and keeps it while
+        // it lasts; colours are solved in increasing order, so the newest contact comes first.
+        int order[kMaxSurfaces] = {};
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            order[i] = i;
+            if (!s.acting || s.color >= 0) continue;
+            int color = 127;
+            for (bool taken = true; taken && color > 0;) {
+                taken = false;
+                for (int j = 0; j < mCount; ++j)
+                    if (j != i && mSurfaces[j].color == color) taken = true;
+                if (taken) --color;
+            }
+            s.color = color;
+        }
+        for (int i = 1; i < mCount; ++i)
+            for (int j = i; j > 0 && mSurfaces[order[j - 1]].color > mSurfaces[order[j]].color; --j)
+                std::swap(order[j - 1], order[j]);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             const double vn0 = glm::dot(v0, s.normal);
             s.bounce = (!s.carried || s.e >= 1.0) && s.e > 0.0 && vn0 < 0.0;
             seed[i] = s.bounce ? s.e * vn0 : 0.0;
+            arm[i] = mRotates ? std::max(0.0, mRadius + 0.5 * s.gap) : 0.0;
+            anchor[i] = -arm[i] * s.normal;
+            lambda[i] = s.warmNormal;
+            s.warmFriction -= glm::dot(s.warmFriction, s.normal) * s.normal;
         }
         for (int sub = 0; sub < n; ++sub) {
             vel += mGravity * h;
-            for (int i = 0; i < mCount; ++i) {
+            // Warm start: the previous sub-step's impulses once more.
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal);
-                const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -3.0, 0.0);
+                vel += lambda[i] * s.normal;
+                applyRapierFriction(s.warmFriction, anchor0(s, arm[i]), invInertia, vel);
+            }
+            // Biased pass: normal rows only.
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -maxCorrective, 0.0);
                 const double cf = dist <= 0.0 ? cfmFactor : 1.0;
-                const double vn = glm::dot(vel, s.normal);
-                // Warm-started: the accumulated impulse so far stays applied.
-                const double accumulated = std::max(0.0, cf * (s.normalImpulse - (vn + rhs)));
-                vel += (accumulated - s.normalImpulse) * s.normal;
-                s.normalImpulse = accumulated;
-                frictionRow(s, vel, 1.0);
+                const double next = cf * std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + rhs));
+                vel += (next - lambda[i]) * s.normal;
+                lambda[i] = next;
+            }
+            if (mRotates) {
+                const double spin = glm::length(mAngular);
+                if (spin > maxSpin) mAngular *= maxSpin / spin;
             }
             x += vel * h;
-            for (int i = 0; i < mCount; ++i) {
+            if (mRotates) turnAnchors(anchor, h);
+            // Unbiased pass: normal rows, then friction.
+            for (int q = 0; q < mCount; ++q) {
+                const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal);
-                normalRow(s, vel, -std::max(dist, 0.0) / h);
+                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double next = std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + std::max(dist, 0.0) / h));
+                vel += (next - lambda[i]) * s.normal;
+                lambda[i] = next;
+                const DVec3 r = anchor0(s, arm[i]);
+                DVec3 slip = vel + glm::cross(mAngular, r);
+                slip -= glm::dot(slip, s.normal) * s.normal;
+                const double k = 1.0 + (mRotates ? invInertia * arm[i] * arm[i] : 0.0);
+                DVec3 impulse = s.warmFriction - slip / k;
+                const double limit = s.mu * lambda[i], size = glm::length(impulse);
+                if (size > limit) impulse *= size > 0.0 ? limit / size : 0.0;
+                applyRapierFriction(impulse - s.warmFriction, r, invInertia, vel);
+                s.warmFriction = impulse;
+                total[i] += lambda[i];
             }
         }
-        for (int i = 0; i < mCount; ++i) {
+        // Restitution, once after the sub-steps.
+        for (int q = 0; q < mCount; ++q) {
+            const int i = order[q];
             Surface& s = mSurfaces[i];
-            if (!s.acting || seed[i] >= 0.0 || s.normalImpulse <= 0.0) continue;
-            const double vn = glm::dot(vel, s.normal);
-            if (vn < -seed[i]) vel += (-seed[i] - vn) * s.normal;
+            if (!s.acting) continue;
+            if (seed[i] < 0.0 && total[i] > 0.0) {
+                const double next = std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + seed[i]));
+                vel += (next - lambda[i]) * s.normal;
+                total[i] += next - lambda[i];
+                lambda[i] = next;
+            }
+            s.warmNormal = lambda[i];
+            s.normalImpulse = total[i];
+            s.frictionImpulse = s.warmFriction;
         }
         mSubstepPosition = x;
         v = vel * mRec.d;
+    }
+
+    // The sphere's contact point on surface s at the step start, from the centre.
+    static DVec3 anchor0(const Surface& s, double arm) { return -arm * s.normal; }
+
+    // The contact anchors turn with the sphere: a sub-step's rotation, linearised as Rapier
+    // integrates it (the quaternion (w h / 2, 1), normalised).
+    void turnAnchors(DVec3* anchor, double h) const {
+        const double spin = glm::length(mAngular);
+        if (spin <= 0.0) return;
+        const double angle = 2.0 * std::atan(0.5 * spin * h);
+        const DVec3 k = mAngular / spin;
+        const double c = std::cos(angle), sn = std::sin(angle);
+        for (int i = 0; i < mCount; ++i) {
+            if (!mSurfaces[i].acting) continue;
+            const DVec3 a = anchor[i];
+            anchor[i] = a * c + glm::cross(k, a) * sn + k * (glm::dot(k, a) * (1.0 - c));
+        }
+    }
+
+    // A friction impulse (per unit mass) at the contact point r from the centre.
+    void applyRapierFriction(const DVec3& impulse, const DVec3& r, double invInertia, DVec3& v) {
+        v += impulse;
+        if (mRotates) mAngular += invInertia * glm::cross(r, impulse);
+    }
+
+    // Rapier's continuous collision detection (CCDSolver::solve_continuous): a body that moved
+    // more than half its radius in the step (its centre, plus the rotation at its surface) is
+    // swept from the step's start to its end against the static shapes, and stops at the first
+    // pose where it penetrates one by the allowed linear error. The time of impact is parry's
+    // (Box2D's conservative advancement): from the closest points at the time reached so far,
+    // the motion advances until the separation along that axis reaches the target, until the
+    // distance is within a quarter of the allowed error above the target (on a face exactly the
+    // target; past an edge up to that much less deep). A sweep that starts within that tolerance
+    // finds the impact at once and is ignored, as is one whose end does not reach below the
+    // target by the tolerance. The velocity is left alone: the contact found at the next step's
+    // start deals with it.
+    void rapierSweep(const DVec3& before) {
+        const DVec3 motion = mPosition - before;
+        const double turn = 2.0 * std::atan(0.5 * glm::length(mAngular) * mRec.dt / mProfile.substeps) *
+                            mProfile.substeps * mRadius;
+        if (glm::length(motion) + (mRotates ? turn : 0.0) <= 0.5 * mRadius) return;
+        const double slop = mProfile.penetrationSlop, tolerance = 0.25 * slop;
+        if (mRadius <= 2.0 * slop) return;
+        SegmentCast c;
+        c.origin = toR(before);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(mRadius - slop - tolerance);
+        CastHit hit;
+        if (!mWorld.castSegment(c, hit) || hit.fraction <= 0.0f) return;
+        const double target = mRadius - slop;
+        DVec3 axis = glm::normalize(toD(hit.normal));
+        double t = 0.0, distance = 0.0;
+        const double range = mRadius + glm::length(motion) + 0.05;
+        if (!closestDistance(before, range, axis, distance)) return;
+        for (int iteration = 0; iteration < 20; ++iteration) {
+            if (distance < target + tolerance) {
+                if (t > 0.0 && t < 1.0) mPosition = before + motion * t;
+                return;
+            }
+            // The separation along the axis is linear in time: where does it reach the target?
+            const DVec3 at = before + motion * t;
+            const double end = distance + glm::dot(mPosition - at, axis);
+            if (end > target - tolerance) return;
+            t += (1.0 - t) * (distance - target) / (distance - end);
+            if (!closestDistance(before + motion * t, range, axis, distance)) return;
+        }
+    }
+
+    // The distance from centre `c` to the nearest surface near direction -`axis`, within `range`;
+    // `axis` becomes the direction from that surface's closest point to c (a few probes converge
+    // on an edge or corner). False when a probe finds nothing.
+    bool closestDistance(const DVec3& c, double range, DVec3& axis, double& distance) const {
+        // Each probe's distance is a lower bound (the contact's tangent plane supports the
+        // shape); a probe sphere just smaller than the distance touches at the closest point.
+        double probe = 0.5 * mRadius;
+        const double lift = 0.05;
+        for (int iteration = 0; iteration < 6; ++iteration) {
+            SegmentCast cast;
+            cast.origin = toR(c + axis * lift);
+            cast.displacement = toF(c - axis * range - toD(cast.origin));
+            cast.radius = static_cast<float>(probe);
+            CastHit hit;
+            if (!mWorld.castSegment(cast, hit)) return false;
+            const DVec3 n = glm::normalize(toD(hit.normal));
+            const bool settled = glm::dot(n, axis) > 1.0 - 1e-10;
+            axis = n;
+            distance = glm::dot(c - toD(hit.position), n) + probe;
+            if (settled && iteration > 0) break;
+            probe = std::max(0.1 * mRadius, distance - 1e-3);
+        }
+        return true;
     }
 
     // One friction row at the contact point, clamped to the disk of mu times the normal impulse.

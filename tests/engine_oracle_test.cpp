@@ -91,7 +91,7 @@ struct EngineInfo {
 const EngineInfo kEngines[] = {
     {"jolt", PhysicsEngine::Jolt, "node", 0.9, 0.75},
     {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9},
-    {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.15},
+    {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9},
     {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.6},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
