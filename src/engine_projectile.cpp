@@ -226,7 +226,8 @@ private:
         if (acted && mProfile.engine == PhysicsEngine::Rapier) mPosition = mSubstepPosition;
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
-        correctPositions();
+        if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity) correctJoltPositions(before);
+        else correctPositions();
         if (mMeshContacts) followManifoldPoints(mPosition - before);
 
         bool bounced = false;
@@ -288,11 +289,44 @@ private:
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
         }
+        if (mProfile.engine == PhysicsEngine::Jolt) findSlideSurface(freeMotion, reach);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+    }
+
+    // Jolt's narrow phase collides the sphere with every shape its (motion-swept) bounds reach,
+    // not only with the first one along the motion: a sphere that slides or rolls on the floor
+    // also finds the wall ahead, which the cast along the free motion (stopped by the floor it
+    // presses into) cannot. So the motion is cast once more with its part into the surfaces
+    // already touched taken out, from just outside them; a surface found so is measured along
+    // its normal from the sphere's centre, as the narrow phase measures it.
+    void findSlideSurface(const DVec3& freeMotion, double reach) {
+        DVec3 slide = freeMotion, lift(0.0);
+        bool touching = false;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (s.gap >= reach) continue;
+            touching = true;
+            const double into = glm::dot(slide, s.normal);
+            if (into < 0.0) slide -= into * s.normal;
+            lift += s.normal * (std::max(0.0, -s.gap) + 1e-4);
+        }
+        const double length = glm::length(slide);
+        if (!touching || length <= 0.0) return;
+        const DVec3 from = mPosition + lift;
+        CastHit hit;
+        if (!cast(from, from + slide * ((length + reach) / length), hit)) return;
+        const DVec3 n = glm::normalize(toD(hit.normal));
+        for (int i = 0; i < mCount; ++i)
+            if (glm::dot(mSurfaces[i].normal, n) > 0.999) return;  // a surface already known
+        const double gapNow = glm::dot(mPosition - toD(hit.position), n);
+        const DVec3 probeFrom = mPosition + n * (std::max(0.0, -gapNow) + 0.01);
+        const DVec3 probeTo = mPosition - n * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, n)));
+        CastHit probe;
+        if (cast(probeFrom, probeTo, probe)) addSurface(probe);
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
@@ -604,6 +638,49 @@ private:
         const double accumulated = std::max(0.0, s.normalImpulse + (target - glm::dot(v, s.normal)));
         v += (accumulated - s.normalImpulse) * s.normal;
         s.normalImpulse = accumulated;
+    }
+
+    // Rotates v by the rotation vector `turn` (axis times angle), as Jolt's Body::AddRotationStep.
+    static DVec3 rotated(const DVec3& v, const DVec3& turn) {
+        const double angle = glm::length(turn);
+        if (angle <= 1e-6) return v;
+        const DVec3 k = turn / angle;
+        return v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) + k * (glm::dot(k, v) * (1.0 - std::cos(angle)));
+    }
+
+    // Jolt's ContactConstraintManager::SolvePositionConstraints (mNumPositionSteps = 2, Baumgarte
+    // 0.2, slop 0.02, at most mMaxPenetrationDistance 0.2 per iteration). The contact points were
+    // found at the step's start: one on the surface, fixed in the world, one on the sphere
+    // (centre - r n), which moves and turns with the body. The separation is measured between
+    // them, and the correction acts at their midpoint: once the sphere has slid along the
+    // surface that point is off the normal through the centre, so part of the correction turns
+    // the sphere instead of moving it (effective mass 1 / (1/m + |r x n|^2 / I)).
+    void correctJoltPositions(const DVec3& start) {
+        std::array<DVec3, kMaxSurfaces> anchor{}, arm{};
+        const DVec3 turn = mAngular * mRec.dt;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            anchor[i] = start - (s.gap + mRadius) * s.normal;
+            arm[i] = rotated(-mRadius * s.normal, turn);
+        }
+        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        for (int iteration = 0; iteration < 2; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                const Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const DVec3 p2 = mPosition + arm[i];
+                const double separation =
+                    std::max(glm::dot(p2 - anchor[i], s.normal) + mProfile.penetrationSlop, -0.2);
+                if (separation >= 0.0) continue;
+                const DVec3 r2 = 0.5 * (anchor[i] + p2) - mPosition;
+                const DVec3 r2xn = glm::cross(r2, s.normal);
+                const double lambda = -mProfile.positionCorrection * separation /
+                                      (1.0 + invInertia * glm::dot(r2xn, r2xn));
+                mPosition += lambda * s.normal;
+                const DVec3 spin = lambda * invInertia * r2xn;
+                for (int j = 0; j < mCount; ++j) arm[j] = rotated(arm[j], spin);
+            }
+        }
     }
 
     // Position-based correction after the move (Jolt: 2 iterations of 0.2 beyond the 0.02 slop,
