@@ -139,11 +139,15 @@ private:
     // Angular damping of one step, and Jolt's cap on the spin.
     void spinDown() {
         mAngular *= mAngularFactor;
-        if (mProfile.engine == PhysicsEngine::Jolt) {
-            // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
-            const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
-            if (spin > maxSpin) mAngular *= maxSpin / spin;
-        }
+        capSpin();
+    }
+
+    // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s, applied
+    // with the forces and again after the contact solve (JobIntegrateVelocity).
+    void capSpin() {
+        if (mProfile.engine != PhysicsEngine::Jolt) return;
+        const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
+        if (spin > maxSpin) mAngular *= maxSpin / spin;
     }
 
     // Free flight over several steps with one world query. While no surface is known, step k's
@@ -215,6 +219,7 @@ private:
         findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
         mVelocity = v;
+        if (acted) capSpin();
 
         // Box2D's translation limit acts on the solved velocity.
         const double travel = glm::length(mVelocity) * dt;
@@ -289,7 +294,10 @@ private:
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
         }
-        if (mProfile.engine == PhysicsEngine::Jolt) findSlideSurface(freeMotion, reach);
+        if (mProfile.engine == PhysicsEngine::Jolt) {
+            findSlideSurface(freeMotion, reach);
+            for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
+        }
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
@@ -327,6 +335,30 @@ private:
         const DVec3 probeTo = mPosition - n * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, n)));
         CastHit probe;
         if (cast(probeFrom, probeTo, probe)) addSurface(probe);
+    }
+
+    // Jolt's narrow phase measures a contact between the closest points of the sphere and the
+    // shape at the step's start (GJK), where the cast found the surface at the point the motion
+    // reaches. On a face the two agree; on a rounded edge or corner the normal differs. Probing
+    // along the normal again until it settles finds the closest point (near the surface each
+    // probe shrinks the normal's error by about gap / (r + rounding)).
+    void closestPoint(Surface& s, const DVec3& freeMotion, double reach) const {
+        for (int iteration = 0; iteration < 4; ++iteration) {
+            const DVec3 from = mPosition + s.normal * (std::max(0.0, -s.gap) + 0.01);
+            const DVec3 to = mPosition - s.normal * (std::max(0.0, s.gap) + reach + 0.01 +
+                                                     std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            CastHit hit;
+            if (!cast(from, to, hit)) return;
+            const DVec3 n = glm::normalize(toD(hit.normal));
+            if (glm::dot(n, s.normal) < 0.9) return;  // another surface
+            const bool settled = glm::dot(n, s.normal) > 1.0 - 1e-12;
+            s.normal = n;
+            s.touch = toD(hit.position);
+            s.gap = glm::dot(mPosition - s.touch, n);
+            s.restitution = hit.restitution;
+            s.friction = hit.friction;
+            if (settled) return;
+        }
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
@@ -615,9 +647,10 @@ private:
     }
 
     // The lever arm of the contact point from the centre: the sphere's surface, except in Jolt,
-    // whose contact point is midway between the two surfaces (half the gap further out).
+    // whose contact point is midway between the two surfaces (half the gap further out, or in).
     double contactArm(const Surface& s) const {
-        if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
+        // Deeper than the diameter's half that point lies beyond the centre: the lever turns over.
+        if (mProfile.engine == PhysicsEngine::Jolt) return mRadius + 0.5 * s.gap;
         return mRadius;
     }
 
