@@ -297,6 +297,7 @@ private:
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
+            findNearSurfaces(freeMotion, reach);
         }
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
@@ -316,7 +317,8 @@ private:
         bool touching = false;
         for (int i = 0; i < mCount; ++i) {
             const Surface& s = mSurfaces[i];
-            if (s.gap >= reach) continue;
+            // The surfaces this step's motion may reach: they hide whatever lies beyond them.
+            if (s.gap >= reach + std::max(0.0, -glm::dot(freeMotion, s.normal))) continue;
             touching = true;
             const double into = glm::dot(slide, s.normal);
             if (into < 0.0) slide -= into * s.normal;
@@ -335,6 +337,44 @@ private:
         const DVec3 probeTo = mPosition - n * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, n)));
         CastHit probe;
         if (cast(probeFrom, probeTo, probe)) addSurface(probe);
+    }
+
+    // A surface within the contact distance of the sphere is a contact in Jolt even when the
+    // sphere's path only grazes past it (the end or the underside edge of a wall): its closest
+    // point at the step's start makes the normal, and the solver stops the approach along it.
+    // The cast along the motion misses such a surface, so short probes along the world axes
+    // that the motion heads along look for it; what they find is measured at its closest point
+    // and kept when within reach.
+    void findNearSurfaces(const DVec3& freeMotion, double reach) {
+        const double length = glm::length(freeMotion);
+        if (length <= 0.0 || mCount == kMaxSurfaces) return;
+        const DVec3 heading = freeMotion / length;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (std::abs(heading[axis]) < 0.05) continue;
+            DVec3 d(0.0);
+            d[axis] = heading[axis] > 0.0 ? 1.0 : -1.0;
+            CastHit hit;
+            if (!cast(mPosition, mPosition + d * (3.0 * reach), hit)) continue;
+            Surface s;
+            s.normal = glm::normalize(toD(hit.normal));
+            bool known = false;
+            for (int i = 0; i < mCount; ++i)
+                if (glm::dot(mSurfaces[i].normal, s.normal) > 0.999) known = true;
+            if (known) continue;
+            s.touch = toD(hit.position);
+            s.gap = glm::dot(mPosition - s.touch, s.normal);
+            s.restitution = hit.restitution;
+            s.friction = hit.friction;
+            closestPoint(s, freeMotion, reach);
+            if (s.gap >= reach) continue;
+            CastHit settled;
+            settled.position = toR(s.touch);
+            settled.normal = toF(s.normal);
+            settled.restitution = s.restitution;
+            settled.friction = s.friction;
+            addSurface(settled);
+            if (mCount == kMaxSurfaces) return;
+        }
     }
 
     // Jolt's narrow phase measures a contact between the closest points of the sphere and the
