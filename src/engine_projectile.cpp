@@ -261,6 +261,8 @@ private:
     // Probes the surfaces already known, and casts the step's free motion for new ones.
     void findSurfaces(const DVec3& freeMotion) {
         const double reach = contactReach();
+        const std::array<Surface, kMaxSurfaces> known = mSurfaces;
+        const int knownCount = mCount;
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
@@ -275,12 +277,13 @@ private:
             // A triangle whose plane the centre passed long ago: its back face is out of reach.
             if (mMeshContacts && gapNow < -(2.0 * mRadius + reach + glm::length(freeMotion) + 0.05)) continue;
             const double lift = std::max(0.0, -gapNow) + 0.01;
-            const DVec3 from = mPosition + s.normal * lift;
-            const DVec3 to = mPosition - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            const DVec3 clear = clearance(s.normal, known.data(), knownCount);
+            const DVec3 from = mPosition + clear + s.normal * lift;
+            const DVec3 to = mPosition + clear - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) continue;
             s.normal = glm::normalize(toD(hit.normal));
-            s.touch = toD(hit.position);
+            s.touch = toD(hit.position) - clear;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
@@ -332,11 +335,39 @@ private:
         const DVec3 n = glm::normalize(toD(hit.normal));
         for (int i = 0; i < mCount; ++i)
             if (glm::dot(mSurfaces[i].normal, n) > 0.999) return;  // a surface already known
-        const double gapNow = glm::dot(mPosition - toD(hit.position), n);
-        const DVec3 probeFrom = mPosition + n * (std::max(0.0, -gapNow) + 0.01);
-        const DVec3 probeTo = mPosition - n * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, n)));
-        CastHit probe;
-        if (cast(probeFrom, probeTo, probe)) addSurface(probe);
+        Surface found;
+        found.normal = n;
+        found.touch = toD(hit.position) - lift;
+        found.gap = glm::dot(mPosition - found.touch, n);
+        found.restitution = hit.restitution;
+        found.friction = hit.friction;
+        closestPoint(found, freeMotion, reach);
+        addFound(found);
+    }
+
+    // Adds a surface measured by closestPoint (addSurface takes a cast's hit).
+    void addFound(const Surface& s) {
+        CastHit hit;
+        hit.position = toR(s.touch);
+        hit.normal = toF(s.normal);
+        hit.restitution = s.restitution;
+        hit.friction = s.friction;
+        addSurface(hit);
+    }
+
+    // Jolt: a probe along n starts clear of the other surfaces the sphere touches or is in (by
+    // 0.1 mm), or it could report one of them at its start instead of the surface it looks for;
+    // what it finds is moved back by as much. Other engines: no offset.
+    DVec3 clearance(const DVec3& n, const Surface* surfaces, int count) const {
+        DVec3 offset(0.0);
+        if (mProfile.engine != PhysicsEngine::Jolt) return offset;
+        for (int j = 0; j < count; ++j) {
+            const Surface& o = surfaces[j];
+            if (glm::dot(o.normal, n) > 0.999) continue;
+            const double gap = glm::dot(mPosition - o.touch, o.normal);
+            if (gap < 1e-3) offset += o.normal * (std::max(0.0, -gap) + 1e-4);
+        }
+        return offset;
     }
 
     // A surface within the contact distance of the sphere is a contact in Jolt even when the
@@ -353,26 +384,22 @@ private:
             if (std::abs(heading[axis]) < 0.05) continue;
             DVec3 d(0.0);
             d[axis] = heading[axis] > 0.0 ? 1.0 : -1.0;
+            const DVec3 clear = clearance(d, mSurfaces.data(), mCount);
             CastHit hit;
-            if (!cast(mPosition, mPosition + d * (3.0 * reach), hit)) continue;
+            if (!cast(mPosition + clear, mPosition + clear + d * (3.0 * reach), hit)) continue;
             Surface s;
             s.normal = glm::normalize(toD(hit.normal));
             bool known = false;
             for (int i = 0; i < mCount; ++i)
                 if (glm::dot(mSurfaces[i].normal, s.normal) > 0.999) known = true;
             if (known) continue;
-            s.touch = toD(hit.position);
+            s.touch = toD(hit.position) - clear;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
             closestPoint(s, freeMotion, reach);
             if (s.gap >= reach) continue;
-            CastHit settled;
-            settled.position = toR(s.touch);
-            settled.normal = toF(s.normal);
-            settled.restitution = s.restitution;
-            settled.friction = s.friction;
-            addSurface(settled);
+            addFound(s);
             if (mCount == kMaxSurfaces) return;
         }
     }
@@ -383,17 +410,18 @@ private:
     // along the normal again until it settles finds the closest point (near the surface each
     // probe shrinks the normal's error by about gap / (r + rounding)).
     void closestPoint(Surface& s, const DVec3& freeMotion, double reach) const {
+        const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
         for (int iteration = 0; iteration < 4; ++iteration) {
-            const DVec3 from = mPosition + s.normal * (std::max(0.0, -s.gap) + 0.01);
-            const DVec3 to = mPosition - s.normal * (std::max(0.0, s.gap) + reach + 0.01 +
-                                                     std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            const DVec3 from = mPosition + clear + s.normal * (std::max(0.0, -s.gap) + 0.01);
+            const DVec3 to = mPosition + clear - s.normal * (std::max(0.0, s.gap) + reach + 0.01 +
+                                                             std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             if (glm::dot(n, s.normal) < 0.9) return;  // another surface
             const bool settled = glm::dot(n, s.normal) > 1.0 - 1e-12;
             s.normal = n;
-            s.touch = toD(hit.position);
+            s.touch = toD(hit.position) - clear;
             s.gap = glm::dot(mPosition - s.touch, n);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
