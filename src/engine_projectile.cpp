@@ -143,11 +143,8 @@ private:
     // Angular damping of one step, and Jolt's cap on the spin.
     void spinDown() {
         mAngular *= mAngularFactor;
-        if (mProfile.engine == PhysicsEngine::Jolt) {
-            // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s.
-            const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
-            if (spin > maxSpin) mAngular *= maxSpin / spin;
-        } else if (mProfile.engine == PhysicsEngine::PhysX) {
+        capSpin();
+        if (mProfile.engine == PhysicsEngine::PhysX) {
             // PxRigidDynamic's default maximum angular velocity in PhysX 4: 100 rad/s.
             const double spin = glm::length(mAngular), maxSpin = 100.0;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
@@ -156,6 +153,14 @@ private:
             const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI / mRec.dt;
             if (spin > maxSpin) mAngular *= maxSpin / spin;
         }
+    }
+
+    // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s, applied
+    // with the forces and again after the contact solve (JobIntegrateVelocity).
+    void capSpin() {
+        if (mProfile.engine != PhysicsEngine::Jolt) return;
+        const double spin = glm::length(mAngular), maxSpin = 0.25 * M_PI * 60.0;
+        if (spin > maxSpin) mAngular *= maxSpin / spin;
     }
 
     // Free flight over several steps with one world query. While no surface is known, step k's
@@ -227,6 +232,7 @@ private:
         findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
         mVelocity = v;
+        if (acted) capSpin();
 
         // Box2D's translation limit acts on the solved velocity.
         const double travel = glm::length(mVelocity) * dt;
@@ -239,7 +245,8 @@ private:
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
         if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
-        correctPositions();
+        if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity) correctJoltPositions(before);
+        else correctPositions();
         if (mMeshContacts) followManifoldPoints(mPosition - before);
 
         bool bounced = false;
@@ -273,6 +280,8 @@ private:
     // Probes the surfaces already known, and casts the step's free motion for new ones.
     void findSurfaces(const DVec3& freeMotion) {
         const double reach = contactReach();
+        const std::array<Surface, kMaxSurfaces> known = mSurfaces;
+        const int knownCount = mCount;
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
@@ -287,8 +296,9 @@ private:
             // A triangle whose plane the centre passed long ago: its back face is out of reach.
             if (mMeshContacts && gapNow < -(2.0 * mRadius + reach + glm::length(freeMotion) + 0.05)) continue;
             const double lift = std::max(0.0, -gapNow) + 0.01;
-            const DVec3 from = mPosition + s.normal * lift;
-            const DVec3 to = mPosition - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            const DVec3 clear = clearance(s.normal, known.data(), knownCount);
+            const DVec3 from = mPosition + clear + s.normal * lift;
+            const DVec3 to = mPosition + clear - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) continue;
             DVec3 normal = glm::normalize(toD(hit.normal)), off(0.0);
@@ -301,7 +311,7 @@ private:
                 normal = glm::normalize(toD(hit.normal));
                 if (glm::dot(normal, s.normal) < 0.05) continue;
             }
-            DVec3 touch = toD(hit.position) - off;
+            DVec3 touch = toD(hit.position) - off - clear;
             if (mProfile.engine == PhysicsEngine::PhysX) nearestOnEdge(normal, touch);
             if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
             s.normal = normal;
@@ -322,6 +332,11 @@ private:
         }
         if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
+        if (mProfile.engine == PhysicsEngine::Jolt) {
+            findSlideSurface(freeMotion, reach);
+            for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
+            findNearSurfaces(freeMotion, reach);
+        }
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
@@ -404,6 +419,126 @@ private:
             n = m;
         }
         if (found) addSurface(probe);
+    }
+
+    // Jolt's narrow phase collides the sphere with every shape its (motion-swept) bounds reach,
+    // not only with the first one along the motion: a sphere that slides or rolls on the floor
+    // also finds the wall ahead, which the cast along the free motion (stopped by the floor it
+    // presses into) cannot. So the motion is cast once more with its part into the surfaces
+    // already touched taken out, from just outside them; a surface found so is measured along
+    // its normal from the sphere's centre, as the narrow phase measures it.
+    void findSlideSurface(const DVec3& freeMotion, double reach) {
+        DVec3 slide = freeMotion, lift(0.0);
+        bool touching = false;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            // The surfaces this step's motion may reach: they hide whatever lies beyond them.
+            if (s.gap >= reach + std::max(0.0, -glm::dot(freeMotion, s.normal))) continue;
+            touching = true;
+            const double into = glm::dot(slide, s.normal);
+            if (into < 0.0) slide -= into * s.normal;
+            lift += s.normal * (std::max(0.0, -s.gap) + 1e-4);
+        }
+        const double length = glm::length(slide);
+        if (!touching || length <= 0.0) return;
+        const DVec3 from = mPosition + lift;
+        CastHit hit;
+        if (!cast(from, from + slide * ((length + reach) / length), hit)) return;
+        const DVec3 n = glm::normalize(toD(hit.normal));
+        for (int i = 0; i < mCount; ++i)
+            if (glm::dot(mSurfaces[i].normal, n) > 0.999) return;  // a surface already known
+        Surface found;
+        found.normal = n;
+        found.touch = toD(hit.position) - lift;
+        found.gap = glm::dot(mPosition - found.touch, n);
+        found.restitution = hit.restitution;
+        found.friction = hit.friction;
+        closestPoint(found, freeMotion, reach);
+        addFound(found);
+    }
+
+    // Adds a surface measured by closestPoint (addSurface takes a cast's hit).
+    void addFound(const Surface& s) {
+        CastHit hit;
+        hit.position = toR(s.touch);
+        hit.normal = toF(s.normal);
+        hit.restitution = s.restitution;
+        hit.friction = s.friction;
+        addSurface(hit);
+    }
+
+    // Jolt: a probe along n starts clear of the other surfaces the sphere touches or is in (by
+    // 0.1 mm), or it could report one of them at its start instead of the surface it looks for;
+    // what it finds is moved back by as much. Other engines: no offset.
+    DVec3 clearance(const DVec3& n, const Surface* surfaces, int count) const {
+        DVec3 offset(0.0);
+        if (mProfile.engine != PhysicsEngine::Jolt) return offset;
+        for (int j = 0; j < count; ++j) {
+            const Surface& o = surfaces[j];
+            if (glm::dot(o.normal, n) > 0.999) continue;
+            const double gap = glm::dot(mPosition - o.touch, o.normal);
+            if (gap < 1e-3) offset += o.normal * (std::max(0.0, -gap) + 1e-4);
+        }
+        return offset;
+    }
+
+    // A surface within the contact distance of the sphere is a contact in Jolt even when the
+    // sphere's path only grazes past it (the end or the underside edge of a wall): its closest
+    // point at the step's start makes the normal, and the solver stops the approach along it.
+    // The cast along the motion misses such a surface, so short probes along the world axes
+    // that the motion heads along look for it; what they find is measured at its closest point
+    // and kept when within reach.
+    void findNearSurfaces(const DVec3& freeMotion, double reach) {
+        const double length = glm::length(freeMotion);
+        if (length <= 0.0 || mCount == kMaxSurfaces) return;
+        const DVec3 heading = freeMotion / length;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (std::abs(heading[axis]) < 0.05) continue;
+            DVec3 d(0.0);
+            d[axis] = heading[axis] > 0.0 ? 1.0 : -1.0;
+            const DVec3 clear = clearance(d, mSurfaces.data(), mCount);
+            CastHit hit;
+            if (!cast(mPosition + clear, mPosition + clear + d * (3.0 * reach), hit)) continue;
+            Surface s;
+            s.normal = glm::normalize(toD(hit.normal));
+            bool known = false;
+            for (int i = 0; i < mCount; ++i)
+                if (glm::dot(mSurfaces[i].normal, s.normal) > 0.999) known = true;
+            if (known) continue;
+            s.touch = toD(hit.position) - clear;
+            s.gap = glm::dot(mPosition - s.touch, s.normal);
+            s.restitution = hit.restitution;
+            s.friction = hit.friction;
+            closestPoint(s, freeMotion, reach);
+            if (s.gap >= reach) continue;
+            addFound(s);
+            if (mCount == kMaxSurfaces) return;
+        }
+    }
+
+    // Jolt's narrow phase measures a contact between the closest points of the sphere and the
+    // shape at the step's start (GJK), where the cast found the surface at the point the motion
+    // reaches. On a face the two agree; on a rounded edge or corner the normal differs. Probing
+    // along the normal again until it settles finds the closest point (near the surface each
+    // probe shrinks the normal's error by about gap / (r + rounding)).
+    void closestPoint(Surface& s, const DVec3& freeMotion, double reach) const {
+        const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
+        for (int iteration = 0; iteration < 4; ++iteration) {
+            const DVec3 from = mPosition + clear + s.normal * (std::max(0.0, -s.gap) + 0.01);
+            const DVec3 to = mPosition + clear - s.normal * (std::max(0.0, s.gap) + reach + 0.01 +
+                                                             std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            CastHit hit;
+            if (!cast(from, to, hit)) return;
+            const DVec3 n = glm::normalize(toD(hit.normal));
+            if (glm::dot(n, s.normal) < 0.9) return;  // another surface
+            const bool settled = glm::dot(n, s.normal) > 1.0 - 1e-12;
+            s.normal = n;
+            s.touch = toD(hit.position) - clear;
+            s.gap = glm::dot(mPosition - s.touch, n);
+            s.restitution = hit.restitution;
+            s.friction = hit.friction;
+            if (settled) return;
+        }
     }
 
     // Bullet against a triangle mesh (btBvhTriangleMeshShape): btConvexConcaveCollisionAlgorithm
@@ -925,10 +1060,12 @@ private:
     }
 
     // The lever arm of the contact point from the centre: the sphere's surface, except in Jolt,
-    // whose contact point is midway between the two surfaces (half the gap further out), and in
-    // PhysX, whose contact point (the friction anchor) lies on the static shape's surface.
+    // whose contact point is midway between the two surfaces (half the gap further out, or in),
+    // and in PhysX, whose contact point (the friction anchor) lies on the static shape's surface.
     double contactArm(const Surface& s) const {
-        if (mProfile.engine == PhysicsEngine::Jolt) return std::max(0.0, mRadius + 0.5 * s.gap);
+        // Jolt: deeper than the diameter's half that point lies beyond the centre: the lever
+        // turns over.
+        if (mProfile.engine == PhysicsEngine::Jolt) return mRadius + 0.5 * s.gap;
         if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
         return mRadius;
     }
@@ -950,6 +1087,49 @@ private:
         const double accumulated = std::max(0.0, s.normalImpulse + (target - glm::dot(v, s.normal)));
         v += (accumulated - s.normalImpulse) * s.normal;
         s.normalImpulse = accumulated;
+    }
+
+    // Rotates v by the rotation vector `turn` (axis times angle), as Jolt's Body::AddRotationStep.
+    static DVec3 rotated(const DVec3& v, const DVec3& turn) {
+        const double angle = glm::length(turn);
+        if (angle <= 1e-6) return v;
+        const DVec3 k = turn / angle;
+        return v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) + k * (glm::dot(k, v) * (1.0 - std::cos(angle)));
+    }
+
+    // Jolt's ContactConstraintManager::SolvePositionConstraints (mNumPositionSteps = 2, Baumgarte
+    // 0.2, slop 0.02, at most mMaxPenetrationDistance 0.2 per iteration). The contact points were
+    // found at the step's start: one on the surface, fixed in the world, one on the sphere
+    // (centre - r n), which moves and turns with the body. The separation is measured between
+    // them, and the correction acts at their midpoint: once the sphere has slid along the
+    // surface that point is off the normal through the centre, so part of the correction turns
+    // the sphere instead of moving it (effective mass 1 / (1/m + |r x n|^2 / I)).
+    void correctJoltPositions(const DVec3& start) {
+        std::array<DVec3, kMaxSurfaces> anchor{}, arm{};
+        const DVec3 turn = mAngular * mRec.dt;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            anchor[i] = start - (s.gap + mRadius) * s.normal;
+            arm[i] = rotated(-mRadius * s.normal, turn);
+        }
+        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        for (int iteration = 0; iteration < 2; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                const Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                const DVec3 p2 = mPosition + arm[i];
+                const double separation =
+                    std::max(glm::dot(p2 - anchor[i], s.normal) + mProfile.penetrationSlop, -0.2);
+                if (separation >= 0.0) continue;
+                const DVec3 r2 = 0.5 * (anchor[i] + p2) - mPosition;
+                const DVec3 r2xn = glm::cross(r2, s.normal);
+                const double lambda = -mProfile.positionCorrection * separation /
+                                      (1.0 + invInertia * glm::dot(r2xn, r2xn));
+                mPosition += lambda * s.normal;
+                const DVec3 spin = lambda * invInertia * r2xn;
+                for (int j = 0; j < mCount; ++j) arm[j] = rotated(arm[j], spin);
+            }
+        }
     }
 
     // Position-based correction after the move (Jolt: 2 iterations of 0.2 beyond the 0.02 slop,

@@ -122,9 +122,12 @@ void castSphere(const Ray& ray, double radius, const Sphere& sphere, Candidate& 
 
 void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& best) {
     // Work in the box's local frame: an axis-aligned box [-h, h], rounded by the cast radius.
+    // A rounded box is the box shrunk by its rounding, met by a sphere that much larger.
     const DQuat q = toD(box.orientation);
     const DQuat qi = glm::conjugate(q);
-    const DVec3 h = toD(box.halfExtents);
+    const double rounding = static_cast<double>(box.rounding);
+    const DVec3 h = toD(box.halfExtents) - DVec3(rounding);
+    radius += rounding;
     Ray local = ray;
     local.origin = qi * (ray.origin - toD(box.center));
     local.direction = qi * ray.direction;
@@ -263,6 +266,10 @@ Status validateBox(const OrientedBox& box) {
     if (Status s = normalizeQuaternion(box.orientation, q); s != Status::Ok) return s;
     if (!(box.halfExtents.x > 0.0f && box.halfExtents.y > 0.0f && box.halfExtents.z > 0.0f))
         return Status::DegenerateShape;
+    if (!std::isfinite(box.rounding)) return Status::NonFiniteInput;
+    if (!(box.rounding >= 0.0f) ||
+        box.rounding > std::min({box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}))
+        return Status::InvalidRadius;
     return Status::Ok;
 }
 

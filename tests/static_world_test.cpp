@@ -250,6 +250,35 @@ TEST(StaticWorldBox, RotatedBoxCases) {
     runCases(world, cases, std::size(cases), placement);
 }
 
+// A rounded box (OrientedBox::rounding, Jolt's convex radius): the box shrunk by the rounding,
+// grown back by it. Faces stay; edges and corners are arcs of that radius.
+TEST(StaticWorldBox, RoundedBoxCases) {
+    StaticWorld world;
+    const auto q = ftest::quatWXYZ(0.9238795f, 0.0f, 0.3826834f, 0.0f);  // 45 degrees about y
+    OrientedBox box{RVec3(Real(1), Real(2), Real(3)), Vec3(1.0f, 0.5f, 2.0f), q};
+    box.rounding = 0.1f;
+    ASSERT_EQ(world.add(box), Status::Ok);
+    Placement placement;
+    placement.offset = DVec3(1, 2, 3);
+    placement.rotation = ftest::toD(q);
+    // Seen from outside, the (+X, +Y) edge is an arc of radius 0.1 + r about (0.9, 0.4).
+    const double R = 0.35, e = R / kSqrt2;
+    const Case cases[] = {
+        {"sphere onto the +X face: as the sharp box", {3, 0.1, 0.2}, {-4, 0, 0}, 0.25f,
+         hitAt(0.4375, {1.25, 0.1, 0.2}, {1, 0, 0})},
+        {"ray onto the +Y face", {0.2, 3, 0.3}, {0, -5, 0}, 0.0f, hitAt(0.5, {0.2, 0.5, 0.3}, {0, 1, 0})},
+        {"sphere onto the (+X, +Y) edge along the diagonal: later than the sharp edge", {2, 1.5, 0}, {-2, -2, 0},
+         0.25f, hitAt((1.1 - e) / 2.0, {0.9 + e, 0.4 + e, 0}, {1 / kSqrt2, 1 / kSqrt2, 0})},
+        // At y 0.7 the centre line is 0.3 above the arc's axis: contact at x = 0.9 + sqrt(R^2 - 0.3^2).
+        {"sphere grazing the rounded edge (y 0.7)", {3, 0.7, 0}, {-6, 0, 0}, 0.25f,
+         hitAt((3 - 0.9 - std::sqrt(R * R - 0.09)) / 6.0, {0.9 + std::sqrt(R * R - 0.09), 0.7, 0},
+               {std::sqrt(R * R - 0.09) / R, 0.3 / R, 0})},
+        // 0.234 from the sharp box's corner (1, 0.5, 2), but 0.375 > R from the arc's centre.
+        {"sphere missing the rounded corner (y 0.68, z 2.15)", {3, 0.68, 2.15}, {-6, 0, 0}, 0.25f, std::nullopt},
+    };
+    runCases(world, cases, std::size(cases), placement);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Triangles
 
@@ -364,6 +393,11 @@ TEST(StaticWorld, ValidatorsRefuseBadShapes) {
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), ftest::quatWXYZ(0.0f, 0.0f, 0.0f, 0.0f)}),
               Status::ZeroQuaternion);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0), rinf, Real(0)), Vec3(1.0f), id}), Status::NonFiniteInput);
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 0.5f, 1.0f), id, 0.5f}), Status::Ok);
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 0.5f, 1.0f), id, 0.6f}),
+              Status::InvalidRadius);  // more than the smallest half extent
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), id, -0.1f}), Status::InvalidRadius);
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), id, kNaN}), Status::NonFiniteInput);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), ftest::quatWXYZ(kNaN, 0.0f, 0.0f, 0.0f)}),
               Status::NonFiniteInput);
 

@@ -124,6 +124,7 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
         const bool okExtents = box.vector("half_extents", true, shape.halfExtents);
         const bool okOrientation = box.quaternion("orientation", true, shape.orientation);
         const bool okMaterial = readMaterial(box, material, d);
+        box.floatNumber("rounding", false, shape.rounding);
         box.finish();
         if (okExtents) {
             // The half extents alone, so that their problem is named even if others fail.

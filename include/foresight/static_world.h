@@ -40,6 +40,10 @@ struct OrientedBox {
     RVec3 center{0};                          ///< [Units: m]
     Vec3 halfExtents{0.5f};                   ///< half sizes along the box's local axes [Units: m] [Limit: > 0]
     Quat orientation = glm::identity<Quat>(); ///< local-to-world; normalised when added.
+    /// Radius of the rounded edges and corners: the box is the points within `rounding` of the
+    /// box shrunk by it (faces stay where they are). Jolt's BoxShape is such a box, with its
+    /// convex radius (0.05 m unless set) [Units: m] [Limit: 0 .. the smallest half extent].
+    float rounding = 0.0f;
 };
 
 /// A two-sided triangle.
