@@ -1225,6 +1225,31 @@ TEST_F(cli, PredictSvgDrawsEngineMatchedFlightsInTheirOwnStyle) {
     EXPECT_NE(text.find(">lob (exact)<"), std::string::npos);
 }
 
+TEST_F(cli, PicturesFarFromTheOriginFinishWithoutNaN) {
+    // A walk drawn at x = 1e16 stopped the tick loop from advancing (a hang with growing memory);
+    // at 1e308 it wrote "-nan" into the SVG. A far sphere must not spoil the picture either.
+    const std::vector<std::string> scenarios = {
+        scenarioWith(R"({"id": "walk", "model": "linear", "position": [1e16, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(R"({"id": "walk", "model": "linear", "position": [1e308, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(R"({"id": "walk", "model": "linear", "position": [-1e308, 1, -1e308], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(R"({"id": "lob", "model": "projectile", "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2})",
+                     R"({"spheres": [{"center": [1e308, 0, 0], "radius": 1}]})"),
+    };
+    for (const std::string& scenario : scenarios) {
+        SCOPED_TRACE(scenario);
+        const fs::path svg = mDir / "far.svg";
+        const auto start = std::chrono::steady_clock::now();
+        const CliRun run = runCli({"predict", write("s.json", scenario).string(), "--svg", svg.string()});
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+        ASSERT_EQ(run.status, 0) << run.err;
+        const std::string text = readFile(svg);
+        EXPECT_LT(text.size(), 1u << 20);
+        EXPECT_EQ(text.find("nan"), std::string::npos);
+        EXPECT_EQ(text.find("inf"), std::string::npos);
+        EXPECT_GE(countOf(text, "<polyline"), 2u);
+    }
+}
+
 TEST_F(cli, PicturesThatCannotBeWrittenExitTwoNamingTheFile) {
     const fs::path file = write("s.json", projectile(""));
     const std::string target = (mDir / "no" / "such" / "dir" / "out.svg").string();

@@ -25,6 +25,7 @@ const char* const kExactColours[] = {"#1f6fd1", "#16a085", "#6c3483", "#117a65"}
 const char* const kEngineColours[] = {"#27ae60", "#7d9d0a", "#1e8449", "#58a618"};
 
 std::string number(double value) {
+    if (!std::isfinite(value)) value = 0.0;  // never "nan" in the SVG (picture() keeps bounds drawable)
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.2f", value);
     return buffer;
@@ -168,9 +169,15 @@ std::string axes(const Panel& panel) {
            "\" font-size=\"14\" font-weight=\"bold\">" + panel.title + "</text>\n";
     out += "<rect x=\"" + number(panel.left) + "\" y=\"" + number(panel.top) + "\" width=\"" + number(width) +
            "\" height=\"" + number(panel.height()) + "\" fill=\"#fbfbfb\" stroke=\"#555\"/>\n";
+    // Ticks are counted, never accumulated: far from the origin `t += step` may not advance t.
     const auto ticks = [&](double lo, double hi, auto&& draw) {
         const double step = gridStep(hi - lo);
-        for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) draw(std::abs(t) < 1e-12 ? 0.0 : t);
+        const double first = std::ceil(lo / step), last = std::floor(hi / step + 1e-9);
+        if (!std::isfinite(first) || !std::isfinite(last) || last - first > 100.0) return;
+        for (double k = first; k <= last; k += 1.0) {
+            const double t = k * step;
+            draw(std::abs(t) < 1e-12 ? 0.0 : t);
+        }
     };
     char label[32];
     ticks(panel.u0, panel.u1, [&](double u) {
@@ -318,7 +325,15 @@ std::string picture(const Json& document) {
     glm::dvec3 lo = vec3(member(member(document, "bounds"), "min"), glm::dvec3(-10, 0, -10));
     glm::dvec3 hi = vec3(member(member(document, "bounds"), "max"), glm::dvec3(10, 2, 10));
     // A margin of 5% (at least 0.5 m) so that nothing sits on the frame.
-    const glm::dvec3 pad = glm::max(0.05 * (hi - lo), glm::dvec3(0.5));
+    // Drawable bounds: finite, within +-1e12 m (far beyond the precision envelope of any
+    // prediction), so that spans and scales stay finite; shapes beyond are clipped.
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!std::isfinite(lo[axis])) lo[axis] = -10.0;
+        if (!std::isfinite(hi[axis])) hi[axis] = 10.0;
+        lo[axis] = std::clamp(lo[axis], -1e12, 1e12);
+        hi[axis] = std::clamp(hi[axis], lo[axis], 1e12);
+    }
+    const glm::dvec3 pad = glm::max(0.05 * (hi - lo), glm::max(glm::dvec3(0.5), 1e-9 * glm::max(glm::abs(lo), glm::abs(hi))));
     lo -= pad;
     hi += pad;
 
