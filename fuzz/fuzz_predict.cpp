@@ -65,7 +65,7 @@ private:
 };
 
 bool finite(float x) { return std::isfinite(x); }
-bool finite(double x) { return std::isfinite(x); }
+[[maybe_unused]] bool finite(double x) { return std::isfinite(x); }
 template <int N, typename T, glm::qualifier Q>
 bool finite(const glm::vec<N, T, Q>& x) {
     for (int i = 0; i < N; ++i)

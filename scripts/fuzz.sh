@@ -70,7 +70,7 @@ for h in "${harnesses[@]}"; do
     findings="$build/fuzz-findings/$h"
     logfile="$build/fuzz-logs/$h.log"
     mkdir -p "$corpus" "$findings" "$(dirname "$logfile")"
-    options=(-rss_limit_mb=2048 -timeout=10 -artifact_prefix="$findings/" -close_fd_mask=3)
+    options=(-rss_limit_mb=2048 -timeout=10 -artifact_prefix="$findings/" -close_fd_mask=1)
     dict="fuzz/dict/$h.dict"
     case $h in scenario | aim | plan | danger) dict=fuzz/dict/json.dict ;; esac
     if [[ -f "$dict" ]]; then options+=(-dict="$dict"); fi
