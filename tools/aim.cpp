@@ -172,14 +172,17 @@ bool runShots(const std::vector<Shot>& shots, Json& document, Diagnostics& d) {
 
 } // namespace
 
+bool aimDocument(const Json& document, Json& output, Diagnostics& diagnostics) {
+    std::vector<Shot> shots;
+    return readDocument(document, shots, diagnostics) && runShots(shots, output, diagnostics);
+}
+
 int aimCommand(const std::string& file) {
     Diagnostics diagnostics;
     std::string name;
     Json input;
-    std::vector<Shot> shots;
     Json output;
-    const bool ok = readJsonFile(file, name, input, diagnostics) && readDocument(input, shots, diagnostics) &&
-                    runShots(shots, output, diagnostics);
+    const bool ok = readJsonFile(file, name, input, diagnostics) && aimDocument(input, output, diagnostics);
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
     return writeJsonResult(output);

@@ -248,6 +248,10 @@ struct NetsimOptions {
 /// Adds the `netsim` subcommand and its options (filling `options`) to `app`.
 CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& options);
 
+/// Checks `options` and turns them into simulation settings, as netsimCommand does first.
+/// @return false (the problem printed on standard error) for a bad option.
+bool buildNetsimSettings(const NetsimOptions& options, netsim::SimulationSettings& settings);
+
 /// `foresight netsim`. Returns the exit status: 0; 2 for a bad option, an unreadable or bad CSV,
 /// an unwritable SVG file (nothing on standard output then); 1 for an internal error.
 int netsimCommand(NetsimOptions options);

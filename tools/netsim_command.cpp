@@ -77,7 +77,9 @@ std::vector<std::string> splitList(const std::vector<std::string>& items) {
     return out;
 }
 
-bool buildSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
+} // namespace
+
+bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
     if (!inRange("--duration", o.duration, 0, ns::kMaxDuration, true, "s") ||
         !inRange("--latency", o.latency, 0, 10000, false, "ms") || !inRange("--jitter", o.jitter, 0, 10000, false, "ms") ||
         !inRange("--send-rate", o.sendRate, 1, 1000, false, "Hz") ||
@@ -169,6 +171,8 @@ bool buildSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
     if (o.svgFile == "-") return fail("--svg: give a file name (standard output carries the report)");
     return true;
 }
+
+namespace {
 
 Json rounded(double value) {
     // Micrometres and micro-degrees: enough for any chart, and short to read.
@@ -322,7 +326,7 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
 
 int netsimCommand(NetsimOptions options) {
     ns::SimulationSettings settings;
-    if (!buildSettings(options, settings)) return 2;
+    if (!buildNetsimSettings(options, settings)) return 2;
 
     // The trajectories: the built-ins asked for (all by default, none when only --csv is given),
     // then the CSV file.

@@ -1,0 +1,18 @@
+// `foresight danger`: a scenario with danger keys (tools/README.md) through buildDangerInput and
+// runDanger, as dangerCommand runs them.
+#include "fuzz_json.h"
+
+#include "danger.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace foresight_cli;
+    const auto& base = foresight_fuzz::meshDirectory();
+    Diagnostics diagnostics;
+    Json document, output;
+    DangerInput input;
+    std::vector<PredictionResult> results;
+    if (foresight_fuzz::parseInput(data, size, document, diagnostics) &&
+        buildDangerInput(document, base, input, diagnostics) && runDanger(input, output, diagnostics, &results))
+        foresight_fuzz::formatOutput(output);
+    return 0;
+}

@@ -1,0 +1,19 @@
+// `foresight plan`: a world and throws (tools/README.md) through buildPlanDocument, runPlans and
+// the result document, as planCommand runs them.
+#include "fuzz_json.h"
+
+#include "plan.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace foresight_cli;
+    const auto& base = foresight_fuzz::meshDirectory();
+    Diagnostics diagnostics;
+    Json document;
+    Scenario world;
+    std::vector<ThrowRequest> throws;
+    std::vector<ThrowOutcome> outcomes;
+    if (foresight_fuzz::parseInput(data, size, document, diagnostics) &&
+        buildPlanDocument(document, base, world, throws, diagnostics) && runPlans(world, throws, outcomes, diagnostics))
+        foresight_fuzz::formatOutput(planResultDocument(throws, outcomes));
+    return 0;
+}
