@@ -12,7 +12,7 @@
 #                   errors, no benchmarks, no browser tests (the same JavaScript as in build/);
 #                   ctest, halting on the first sanitizer report
 #   5. build-fuzz/  the libFuzzer harnesses of fuzz/ (clang-14, address + undefined sanitizers),
-#                   each run for FORESIGHT_FUZZ_SECONDS (default 10) seconds by scripts/fuzz.sh,
+#                   each run for FORESIGHT_FUZZ_SECONDS (default 5) seconds by scripts/fuzz.sh,
 #                   which fails on any finding (kept in build-fuzz/fuzz-findings/)
 #
 # Each configuration is built once, with every core (FORESIGHT_JOBS overrides the count).
@@ -138,8 +138,8 @@ ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_check
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
     run_ctest build-asan
 
-step "fuzzing (scripts/fuzz.sh: build-fuzz/, ${FORESIGHT_FUZZ_SECONDS:-10} s per harness)"
-./scripts/fuzz.sh "${FORESIGHT_FUZZ_SECONDS:-10}"
+step "fuzzing (scripts/fuzz.sh: build-fuzz/, ${FORESIGHT_FUZZ_SECONDS:-5} s per harness)"
+./scripts/fuzz.sh "${FORESIGHT_FUZZ_SECONDS:-5}"
 
 current="finishing"
 echo ""

@@ -695,6 +695,18 @@ TEST_F(cli, BeyondThePrecisionEnvelopeIsRefusedNotWrong) {
     EXPECT_NE(run.err.find("precision envelope"), std::string::npos) << run.err;
 }
 
+TEST_F(cli, JsonIsReadWholeAndMessagesStayOnOneLine) {
+    // The JSON reader stops at a NUL byte: what follows must not be silently ignored.
+    CliRun run = runCli({"predict", write("nul.json", std::string("{\"predictions\": []}\0garbage", 28)).string()});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("a NUL byte at offset 19"), std::string::npos) << run.err;
+    // A key holding a newline and escape codes is reported on one line, escaped.
+    run = predict(scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1, "bad\nkey\u001b[31m": 1})"));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_NE(run.err.find("bad\\x0akey\\x1b[31m: unknown key"), std::string::npos) << run.err;
+}
+
 TEST_F(cli, DevicesAndPipesAreNeverReadWithoutEnd) {
     // A mesh must be a regular file: a device would read until memory runs out, a named pipe
     // would block.
@@ -2033,7 +2045,11 @@ TEST_F(cli, NetsimRefusesBadOptionsWithStatusTwo) {
         // Not wrapped to 2^64 - 1 nor saturated (as CLI11 and strtoull would).
         {{"netsim", "--seed", "-1"}, "--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"-1\""},
         {{"netsim", "--seed", "18446744073709551616"}, "--seed: expected an unsigned 64-bit integer"},
-        // An empty value is a mistake, not the default.
+        // An empty value is a mistake, not the default (CLI11 alone reads an empty number as 0).
+        {{"netsim", "--latency", ""}, "--latency: expected a number, got \"\""},
+        {{"netsim", "--jitter", " "}, "--jitter: expected a number, got \" \""},
+        {{"netsim", "--extrapolation-limit", ""}, "--extrapolation-limit: expected a number"},
+        {{"netsim", "--duration", ""}, "--duration: expected a number"},
         {{"netsim", "--csv", ""}, "--csv: expected a file name, got \"\""},
         {{"netsim", "--models", ""}, "--models: expected a name or a comma-separated list, got \"\""},
         {{"netsim", "--smoothing", ","}, "--smoothing: expected a name or a comma-separated list"},

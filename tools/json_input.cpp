@@ -18,9 +18,32 @@ void Diagnostics::warning(const std::string& path, const std::string& message) {
     warnings.push_back((path.empty() ? std::string("(root)") : path) + ": " + message);
 }
 
+namespace {
+
+// One line on a terminal, whatever a key or file name holds: control characters (a newline,
+// escape codes) are written as \xNN.
+std::string printable(const std::string& line) {
+    std::string out;
+    out.reserve(line.size());
+    for (const char c : line) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) {
+            static const char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err) {
-    for (const auto& line : diagnostics.warnings) err << "warning: " << line << '\n';
-    for (const auto& line : diagnostics.errors) err << line << '\n';
+    for (const auto& line : diagnostics.warnings) err << "warning: " << printable(line) << '\n';
+    for (const auto& line : diagnostics.errors) err << printable(line) << '\n';
     err.flush();
 }
 
@@ -42,6 +65,12 @@ std::string jsonQuoted(const std::string& text) {
 bool parseJsonText(const std::string& text, const std::string& name, Json& document, Diagnostics& diagnostics) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
         diagnostics.errors.push_back(name + ": invalid JSON: the input is empty");
+        return false;
+    }
+    // The JSON reader stops at a NUL byte: whatever follows it would be silently ignored.
+    if (const auto nul = text.find('\0'); nul != std::string::npos) {
+        diagnostics.errors.push_back(name + ": invalid JSON: a NUL byte at offset " + std::to_string(nul) +
+                                     " (not a JSON text file?)");
         return false;
     }
 

@@ -314,6 +314,18 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
     netsim->add_flag("--markdown", o.markdown, "write the README's summary table (Markdown) instead");
     netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory, first model other than STATIC) to FILE")
         ->type_name("FILE");
+    // CLI11 reads an empty number ("--latency ''") as 0: the numeric options refuse it (the
+    // others say so in their own parsers).
+    const CLI::Validator number(
+        [](std::string& value) {
+            return value.find_first_not_of(" \t") == std::string::npos ? std::string("expected a number, got \"") + value + "\""
+                                                                       : std::string();
+        },
+        "", "number");
+    for (CLI::Option* option : netsim->get_options()) {
+        const std::string unit = option->get_type_name();
+        if (unit == "MS" || unit == "S" || unit == "HZ" || unit == "M" || unit == "DEG") option->check(number);
+    }
     CLI::Option* csv = netsim->get_option("--csv");
     netsim->final_callback([&o, duration, interpolationDelay, extrapolationLimit, csv] {
         o.durationGiven = duration->count() > 0;
