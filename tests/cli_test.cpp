@@ -646,6 +646,24 @@ TEST_F(cli, WorkCapIsReportedWithTheStepCountQuickly) {
     EXPECT_LT(run.seconds, 1.0);
 }
 
+TEST_F(cli, AWholeFileHasABudgetForWorkAndOutput) {
+    // Each prediction just under its step cap (2^20): four of them printed 554 MB and took 3.3 GB.
+    const std::string one =
+        R"({"model": "projectile", "method": "stepped", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 20971, "step": 0.02})";
+    CliRun run = predict(R"({"gravity": [0, 0, 0], "predictions": [)" + one + "," + one + "," + one + "]}");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("predictions: the projectile trajectories have 3145653 points in all; one file may print at most 1048576"),
+              std::string::npos) << run.err;
+    EXPECT_LT(run.seconds, 5.0);
+    // Nine of them, without trajectories: the work is capped too.
+    std::string many = R"({"gravity": [0, 0, 0], "predictions": [)";
+    for (int i = 0; i < 9; ++i) many += (i ? ", " : "") + one.substr(0, one.size() - 1) + R"(, "trajectory": false})";
+    run = predict(many + "]}");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("steps in all; one file may take at most 8388608"), std::string::npos) << run.err;
+}
+
 TEST_F(cli, AllProblemsAreReportedInOnePass) {
     const CliRun run = predict(R"({"predictions": [
         {"model": "linear", "position": [0, 0, 0], "velocity": [1, 0], "time": -1},

@@ -573,6 +573,25 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
         }
     }
     root.finish();
+    // The whole file's budget: each prediction is capped, and so is their sum (four predictions
+    // just under their cap printed 554 MB and took 3.3 GB).
+    std::uint64_t steps = 0, points = 0;
+    for (const Prediction& p : scenario.predictions) {
+        if (p.model != Model::Projectile) continue;
+        const std::uint64_t n = std::min<std::uint64_t>(
+            foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)), p.projectile.maxSteps);
+        steps += n;
+        if (p.trajectory) points += n + 1;
+    }
+    if (steps > kMaxScenarioSteps)
+        diagnostics.error("predictions", "the projectile predictions take " + std::to_string(steps) +
+                                             " steps in all; one file may take at most " +
+                                             std::to_string(kMaxScenarioSteps) + " (split the file)");
+    else if (points > kMaxScenarioPoints)
+        diagnostics.error("predictions", "the projectile trajectories have " + std::to_string(points) +
+                                             " points in all; one file may print at most " +
+                                             std::to_string(kMaxScenarioPoints) +
+                                             " (\"trajectory\": false leaves a prediction's out, or split the file)");
     return diagnostics.ok();
 }
 
@@ -698,6 +717,7 @@ Status runPrediction(const Scenario& scenario, const Prediction& prediction, Pre
 bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics) {
     results.clear();
     results.resize(scenario.predictions.size());
+    std::uint64_t points = 0;  // trajectory points to print, against kMaxScenarioPoints
     for (std::size_t i = 0; i < scenario.predictions.size(); ++i) {
         const Prediction& p = scenario.predictions[i];
         std::string detail;
@@ -707,6 +727,15 @@ bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& result
             std::string message = foresight::statusMessage(status);
             if (!detail.empty()) message += ": " + detail;
             diagnostics.error(p.path, message);
+        }
+        // Bounces add points beyond the steps buildScenario counted: the budget holds here too.
+        if (p.model == Model::Projectile && p.trajectory) points += results[i].trajectory.size();
+        if (points > kMaxScenarioPoints) {
+            diagnostics.error(p.path, "the trajectories up to here have " + std::to_string(points) +
+                                          " points; one file may print at most " + std::to_string(kMaxScenarioPoints) +
+                                          " (\"trajectory\": false leaves a prediction's out, or split the file)");
+            results.clear();
+            return false;
         }
     }
     return diagnostics.ok();

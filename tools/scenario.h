@@ -13,6 +13,7 @@
 #include <foresight/foresight.h>
 
 #include <filesystem>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,12 @@ struct Prediction {
     // dead_reckoning ("algorithm")
     foresight::DeadReckoningAlgorithm deadReckoning = foresight::DeadReckoningAlgorithm::Fpw;
 };
+
+/// Most projectile steps one scenario file may ask for in all (a whole-file budget beside each
+/// prediction's maxSteps): 2^23, a few seconds of work.
+inline constexpr std::uint64_t kMaxScenarioSteps = std::uint64_t(1) << 23;
+/// Most trajectory points one scenario file may print in all: 2^20 (about 130 MB of JSON).
+inline constexpr std::uint64_t kMaxScenarioPoints = std::uint64_t(1) << 20;
 
 /// A validated scenario, ready to run.
 struct Scenario {
