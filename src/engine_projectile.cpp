@@ -54,6 +54,7 @@ struct Surface {
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
+    bool predictive = false; // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
     double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
     int color = -1;            // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
@@ -285,6 +286,7 @@ private:
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
+            if (s.predictive) continue;
             if (s.reversed) {
                 s.normal = -s.normal;
                 s.reversed = false;
@@ -342,6 +344,39 @@ private:
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+        if (mProfile.engine == PhysicsEngine::Godot3Bullet) predictiveContact();
+    }
+
+    // Godot 3's Bullet bodies sweep for continuous collision (btRigidBody's CCD motion threshold
+    // 1e-7 m, swept sphere 0.2 of the shape's bounding sphere: 0.2 sqrt(3) r for a sphere), so
+    // btDiscreteDynamicsWorld::createPredictiveContacts adds a contact before the narrow phase:
+    // the swept sphere is cast along the step's motion before gravity (damped velocity x dt);
+    // a hit that approaches the surface by more than the allowed CCD penetration (0.04 m along
+    // its normal) becomes a contact whose point on the body is the centre (no lever arm: its
+    // friction stops the sliding without spinning the sphere), restitution 0, and distance the
+    // motion's approach up to the hit (the solver lets the body close that and no more).
+    void predictiveContact() {
+        if (mCount == kMaxSurfaces || mRadius <= 0.0) return;
+        const DVec3 motion = mVelocity * mRec.d * mRec.dt;
+        const double length = glm::length(motion);
+        if (length <= 0.0) return;
+        SegmentCast c;
+        c.origin = toR(mPosition);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
+        CastHit hit;
+        if (!mWorld.castSegment(c, hit) || hit.fraction >= 1.0f) return;
+        const DVec3 n = glm::normalize(toD(hit.normal));
+        if (glm::dot(n, motion) >= -0.04) return;  // btClosestNotMeConvexResultCallback's allowed penetration
+        Surface& s = mSurfaces[mCount++];
+        s = Surface{};
+        s.predictive = true;
+        s.normal = n;
+        s.gap = -static_cast<double>(hit.fraction) * glm::dot(motion, n);
+        s.touch = mPosition - n * s.gap;
+        s.restitution = 0.0f;
+        s.friction = hit.friction;
+        s.acting = true;
     }
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
@@ -721,6 +756,7 @@ private:
             switch (engine) {
             case PhysicsEngine::Bullet:
             case PhysicsEngine::Godot3Bullet: {
+                if (s.predictive) s.bounce = false;
                 double target = s.bounce ? -s.e * base : 0.0;
                 if (s.gap > 0.0) target -= s.gap / dt;
                 else if (s.gap > -0.04) target += mProfile.positionCorrection * -s.gap / dt;
@@ -744,6 +780,28 @@ private:
                 }
                 break;
             }
+        }
+        if (engine == PhysicsEngine::Godot3Bullet) {
+            // btSequentialImpulseConstraintSolver: every normal row, then every friction row,
+            // clamped by its normal row's impulse so far; a friction row whose normal impulse is
+            // 0 is skipped and keeps what it applied. The predictive contact comes first (its
+            // manifold is made before the narrow phase's).
+            int order[kMaxSurfaces] = {}, n = 0;
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].predictive) order[n++] = i;
+            for (int i = 0; i < mCount; ++i)
+                if (!mSurfaces[i].predictive) order[n++] = i;
+            for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
+                for (int q = 0; q < n; ++q) {
+                    Surface& s = mSurfaces[order[q]];
+                    if (s.acting) normalRow(s, v, s.target);
+                }
+                for (int q = 0; q < n; ++q) {
+                    Surface& s = mSurfaces[order[q]];
+                    if (s.acting && s.normalImpulse > 0.0) frictionRow(s, v, 1.0);
+                }
+            }
+            return;
         }
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
@@ -1067,6 +1125,7 @@ private:
         // turns over.
         if (mProfile.engine == PhysicsEngine::Jolt) return mRadius + 0.5 * s.gap;
         if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
+        if (s.predictive) return 0.0;
         return mRadius;
     }
 
