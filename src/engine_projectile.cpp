@@ -332,7 +332,10 @@ private:
             if (cast(mPosition, to, hit)) addSurface(hit);
             if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
         }
-        if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
+        // Bullet's narrow phase (Godot 3 with Bullet too) tests every shape whose bounds overlap the
+        // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does.
+        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet)
+            slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
@@ -791,6 +794,15 @@ private:
                 if (mSurfaces[i].predictive) order[n++] = i;
             for (int i = 0; i < mCount; ++i)
                 if (!mSurfaces[i].predictive) order[n++] = i;
+            // One friction row per contact (Bullet's default solver mode), along the slip of the
+            // sphere's contact point when the contacts are set up (after gravity).
+            for (int q = 0; q < n; ++q) {
+                Surface& s = mSurfaces[order[q]];
+                if (!s.acting) continue;
+                const DVec3 slip = v + glm::cross(mAngular, -contactArm(s) * s.normal);
+                const DVec3 tangential = slip - glm::dot(slip, s.normal) * s.normal;
+                s.tangent = glm::dot(tangential, tangential) > 1e-30 ? glm::normalize(tangential) : DVec3(0.0);
+            }
             for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
                 for (int q = 0; q < n; ++q) {
                     Surface& s = mSurfaces[order[q]];
@@ -798,7 +810,7 @@ private:
                 }
                 for (int q = 0; q < n; ++q) {
                     Surface& s = mSurfaces[order[q]];
-                    if (s.acting && s.normalImpulse > 0.0) frictionRow(s, v, 1.0);
+                    if (s.acting && s.normalImpulse > 0.0) frictionRowBullet(s, v);
                 }
             }
             return;
@@ -1085,6 +1097,21 @@ private:
         if (size > limit) total *= size > 0.0 ? limit / size : 0.0;
         applyTangential(total - s.frictionImpulse, s.normal, radius, v);
         s.frictionImpulse = total;
+    }
+
+    // Bullet's single friction row along s.tangent, clamped to +- mu times the normal impulse.
+    void frictionRowBullet(Surface& s, DVec3& v) {
+        if (glm::dot(s.tangent, s.tangent) <= 0.0) return;
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * s.normal;
+        const double mass =
+            mRotates ? 1.0 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 1.0;
+        const double applied = glm::dot(s.frictionImpulse, s.tangent);
+        const double slip = glm::dot(v + glm::cross(mAngular, arm), s.tangent);
+        const double limit = s.mu * s.normalImpulse;
+        const double total = std::clamp(applied - mass * slip, -limit, limit);
+        applyTangential((total - applied) * s.tangent, s.normal, radius, v);
+        s.frictionImpulse += (total - applied) * s.tangent;
     }
 
     // PhysX 4.1 patch friction (DyContactPrep.cpp): two 1-D rows along orthogonal tangents t0 and
