@@ -109,7 +109,7 @@ EngineProfile engineProfile(PhysicsEngine engine) {
         p.restitutionCombine = CombineRule::SumClamped;
         p.frictionCombine = CombineRule::Min;
         p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.04f;
+        p.contactDistance = 0.02f;  // Bullet's gContactBreakingThreshold, scaled by the shape's bound
         p.positionCorrection = 0.2f;
         p.correctionIsVelocity = true;
         break;

@@ -54,6 +54,7 @@ struct Surface {
     double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
     bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
+    bool predictive = false; // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
     double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
     int color = -1;            // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
@@ -285,6 +286,7 @@ private:
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
+            if (s.predictive) continue;
             if (s.reversed) {
                 s.normal = -s.normal;
                 s.reversed = false;
@@ -330,7 +332,10 @@ private:
             if (cast(mPosition, to, hit)) addSurface(hit);
             if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
         }
-        if (mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
+        // Bullet's narrow phase (Godot 3 with Bullet too) tests every shape whose bounds overlap the
+        // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does.
+        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet)
+            slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
@@ -342,6 +347,39 @@ private:
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
         }
+        if (mProfile.engine == PhysicsEngine::Godot3Bullet) predictiveContact();
+    }
+
+    // Godot 3's Bullet bodies sweep for continuous collision (btRigidBody's CCD motion threshold
+    // 1e-7 m, swept sphere 0.2 of the shape's bounding sphere: 0.2 sqrt(3) r for a sphere), so
+    // btDiscreteDynamicsWorld::createPredictiveContacts adds a contact before the narrow phase:
+    // the swept sphere is cast along the step's motion before gravity (damped velocity x dt);
+    // a hit that approaches the surface by more than the allowed CCD penetration (0.04 m along
+    // its normal) becomes a contact whose point on the body is the centre (no lever arm: its
+    // friction stops the sliding without spinning the sphere), restitution 0, and distance the
+    // motion's approach up to the hit (the solver lets the body close that and no more).
+    void predictiveContact() {
+        if (mCount == kMaxSurfaces || mRadius <= 0.0) return;
+        const DVec3 motion = mVelocity * mRec.d * mRec.dt;
+        const double length = glm::length(motion);
+        if (length <= 0.0) return;
+        SegmentCast c;
+        c.origin = toR(mPosition);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
+        CastHit hit;
+        if (!mWorld.castSegment(c, hit) || hit.fraction >= 1.0f) return;
+        const DVec3 n = glm::normalize(toD(hit.normal));
+        if (glm::dot(n, motion) >= -0.04) return;  // btClosestNotMeConvexResultCallback's allowed penetration
+        Surface& s = mSurfaces[mCount++];
+        s = Surface{};
+        s.predictive = true;
+        s.normal = n;
+        s.gap = -static_cast<double>(hit.fraction) * glm::dot(motion, n);
+        s.touch = mPosition - n * s.gap;
+        s.restitution = 0.0f;
+        s.friction = hit.friction;
+        s.acting = true;
     }
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
@@ -721,6 +759,7 @@ private:
             switch (engine) {
             case PhysicsEngine::Bullet:
             case PhysicsEngine::Godot3Bullet: {
+                if (s.predictive) s.bounce = false;
                 double target = s.bounce ? -s.e * base : 0.0;
                 if (s.gap > 0.0) target -= s.gap / dt;
                 else if (s.gap > -0.04) target += mProfile.positionCorrection * -s.gap / dt;
@@ -744,6 +783,37 @@ private:
                 }
                 break;
             }
+        }
+        if (engine == PhysicsEngine::Godot3Bullet) {
+            // btSequentialImpulseConstraintSolver: every normal row, then every friction row,
+            // clamped by its normal row's impulse so far; a friction row whose normal impulse is
+            // 0 is skipped and keeps what it applied. The predictive contact comes first (its
+            // manifold is made before the narrow phase's).
+            int order[kMaxSurfaces] = {}, n = 0;
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].predictive) order[n++] = i;
+            for (int i = 0; i < mCount; ++i)
+                if (!mSurfaces[i].predictive) order[n++] = i;
+            // One friction row per contact (Bullet's default solver mode), along the slip of the
+            // sphere's contact point when the contacts are set up (after gravity).
+            for (int q = 0; q < n; ++q) {
+                Surface& s = mSurfaces[order[q]];
+                if (!s.acting) continue;
+                const DVec3 slip = v + glm::cross(mAngular, -contactArm(s) * s.normal);
+                const DVec3 tangential = slip - glm::dot(slip, s.normal) * s.normal;
+                s.tangent = glm::dot(tangential, tangential) > 1e-30 ? glm::normalize(tangential) : DVec3(0.0);
+            }
+            for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
+                for (int q = 0; q < n; ++q) {
+                    Surface& s = mSurfaces[order[q]];
+                    if (s.acting) normalRow(s, v, s.target);
+                }
+                for (int q = 0; q < n; ++q) {
+                    Surface& s = mSurfaces[order[q]];
+                    if (s.acting && s.normalImpulse > 0.0) frictionRowBullet(s, v);
+                }
+            }
+            return;
         }
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
@@ -1029,6 +1099,21 @@ private:
         s.frictionImpulse = total;
     }
 
+    // Bullet's single friction row along s.tangent, clamped to +- mu times the normal impulse.
+    void frictionRowBullet(Surface& s, DVec3& v) {
+        if (glm::dot(s.tangent, s.tangent) <= 0.0) return;
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * s.normal;
+        const double mass =
+            mRotates ? 1.0 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 1.0;
+        const double applied = glm::dot(s.frictionImpulse, s.tangent);
+        const double slip = glm::dot(v + glm::cross(mAngular, arm), s.tangent);
+        const double limit = s.mu * s.normalImpulse;
+        const double total = std::clamp(applied - mass * slip, -limit, limit);
+        applyTangential((total - applied) * s.tangent, s.normal, radius, v);
+        s.frictionImpulse += (total - applied) * s.tangent;
+    }
+
     // PhysX 4.1 patch friction (DyContactPrep.cpp): two 1-D rows along orthogonal tangents t0 and
     // t1 = n x t0 at the friction anchor, each clamped on its own to +- mu times the normal
     // impulse (a box, not the disk), with the velocity multiplier 0.8 / response. t0 is the
@@ -1067,6 +1152,7 @@ private:
         // turns over.
         if (mProfile.engine == PhysicsEngine::Jolt) return mRadius + 0.5 * s.gap;
         if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
+        if (s.predictive) return 0.0;
         return mRadius;
     }
 
