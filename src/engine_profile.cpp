@@ -152,7 +152,7 @@ Status validateEngineProfile(const EngineProfile& p) {
     const float values[] = {p.timestep,          p.linearDamping,     p.addedLinearDamping,
                             p.angularDamping,    p.restitutionThreshold, p.contactDistance,
                             p.penetrationSlop,   p.positionCorrection, p.maxLinearSpeed,
-                            p.maxStepDistance};
+                            p.maxStepDistance,   p.frictionWarmStart, p.splitImpulseCorrection};
     for (float value : values)
         if (!std::isfinite(value)) return Status::NonFiniteInput;
     if (!(p.timestep >= 1e-5f && p.timestep <= 1.0f)) return Status::InvalidStep;
@@ -161,6 +161,8 @@ Status validateEngineProfile(const EngineProfile& p) {
         p.restitutionThreshold < 0 || p.contactDistance < 0 || p.penetrationSlop < 0)
         return Status::InvalidSetting;
     if (p.positionCorrection < 0 || p.positionCorrection > 1) return Status::InvalidSetting;
+    if (p.frictionWarmStart < 0 || p.frictionWarmStart > 1) return Status::InvalidSetting;
+    if (p.splitImpulseCorrection < 0 || p.splitImpulseCorrection > 1) return Status::InvalidSetting;
     if (!(p.maxLinearSpeed > 0) || !(p.maxStepDistance > 0)) return Status::InvalidSetting;
     if (static_cast<unsigned>(p.engine) > static_cast<unsigned>(PhysicsEngine::Box2D) ||
         static_cast<unsigned>(p.order) > static_cast<unsigned>(DampingOrder::DampingThenGravity) ||

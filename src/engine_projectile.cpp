@@ -65,6 +65,12 @@ struct Surface {
     double pointGap = 0.0;   // the point's gap when it was found [m]
     DVec3 pointMotion{0.0};  // how far the sphere's material point moved since [m]
     double pointDistance = 0.0, pointSlip = 0.0;  // its distance along and across the normal now [m]
+    // Bullet up to 2.88 (EngineProfile::frictionWarmStart): the friction impulse along this
+    // step's friction direction, which the next step's solve starts from.
+    double lateral = 0.0;
+    DVec3 lateralDir{0.0};
+    DVec3 lateralArm{0.0};     // the manifold point on the sphere at the next step's start, from the centre
+    DVec3 lateralCentre{0.0};  // the centre when the point was found
 };
 
 class EngineRun {
@@ -249,6 +255,7 @@ private:
         if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity) correctJoltPositions(before);
         else correctPositions();
         if (mMeshContacts) followManifoldPoints(mPosition - before);
+        if (mProfile.frictionWarmStart > 0.0f) dropDriftedPoints(mPosition - before);
 
         bool bounced = false;
         mTouching = false;
@@ -634,6 +641,31 @@ private:
         }
     }
 
+    // Bullet's refreshContactPoints: a manifold point stays on the sphere's material point (which
+    // moves with the body, rotation included) and on the surface where it was found; it is
+    // dropped, and its friction impulse with it, once its distance along the normal or its slip
+    // across it exceeds the contact breaking threshold.
+    void dropDriftedPoints(const DVec3& moved) {
+        const DVec3 turn = mAngular * mRec.dt;
+        const double angle = glm::length(turn), reach = contactReach();
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (s.lateral == 0.0) continue;
+            const DVec3 arm = -mRadius * s.normal;
+            DVec3 turned = arm;
+            if (angle > 0.0) {
+                const DVec3 k = turn / angle;
+                turned = arm * std::cos(angle) + glm::cross(k, arm) * std::sin(angle) +
+                         k * (glm::dot(k, arm) * (1.0 - std::cos(angle)));
+            }
+            const DVec3 motion = moved + turned - arm;
+            const double along = glm::dot(motion, s.normal);
+            if (s.gap + along > reach || glm::length(motion - along * s.normal) > reach) s.lateral = 0.0;
+            s.lateralArm = turned;
+            s.lateralCentre = mPosition - moved;
+        }
+    }
+
     // The largest gap that makes a contact. Bullet scales its contact breaking threshold by the
     // shape's bounding radius (sqrt(3) r for a sphere's box bound).
     double contactReach() const {
@@ -716,7 +748,10 @@ private:
             s.frictionImpulse = DVec3(0.0);
             s.bounce = false;
             s.approach = -glm::dot(v, s.normal);
-            if (!s.acting) continue;
+            if (!s.acting) {
+                s.lateral = 0.0;  // the manifold point is gone
+                continue;
+            }
             any = true;
             s.e = s.restitution >= 0.0f
                       ? combineMaterial(mProfile.restitutionCombine, mSettings.restitution, s.restitution)
@@ -763,7 +798,7 @@ private:
                 double target = s.bounce ? -s.e * base : 0.0;
                 if (s.gap > 0.0) target -= s.gap / dt;
                 else if (s.gap > -0.04) target += mProfile.positionCorrection * -s.gap / dt;
-                else mPushVelocity += s.normal * (mProfile.positionCorrection * -s.gap / dt);
+                else mPushVelocity += s.normal * (mProfile.splitImpulseCorrection * -s.gap / dt);
                 s.target = target;
                 break;
             }
@@ -815,6 +850,10 @@ private:
             }
             return;
         }
+        if (mProfile.frictionWarmStart > 0.0f && engine == PhysicsEngine::Bullet) {
+            solveBulletWarmStarted(v);
+            return;
+        }
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
@@ -822,6 +861,54 @@ private:
                 frictionRow(s, v, 1.0);
                 normalRow(s, v, s.target);
             }
+        }
+    }
+
+    // Bullet up to 2.88 (btSequentialImpulseConstraintSolver with its default mode flags: one
+    // friction direction, warm starting). convertContact sets the friction direction along the
+    // contact point's tangential velocity (after gravity; any direction in the plane when it is
+    // still) and applies the contact's last friction impulse times the warm-starting factor along
+    // it; every iteration then solves all normal rows, and a friction row only while its
+    // contact's normal impulse is positive. A contact that pushes no more (a sphere leaving the
+    // surface, its point still in the manifold) so keeps the warm-started friction, and hands
+    // it on to the next step.
+    void solveBulletWarmStarted(DVec3& v) {
+        const double reach = contactReach();
+        auto direction = [&](const Surface& s, const DVec3& arm) {
+            DVec3 slip = v + glm::cross(mAngular, arm);
+            slip -= glm::dot(slip, s.normal) * s.normal;
+            const double length2 = glm::dot(slip, slip);
+            if (length2 > 1.1920929e-07) return slip / std::sqrt(length2);  // SIMD_EPSILON (float)
+            // btPlaneSpace1's first axis.
+            const DVec3 n = s.normal;
+            if (std::abs(n.z) > 0.70710678) return glm::normalize(DVec3(0.0, -n.z, n.y));
+            return glm::normalize(DVec3(-n.y, n.x, 0.0));
+        };
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            const double radius = contactArm(s);
+            s.lateralDir = direction(s, -radius * s.normal);
+            if (s.lateral == 0.0) continue;
+            // The new closest point replaces the old one (keeping its impulses) when it lies within
+            // the breaking threshold of it on the surface; otherwise the old point stays a
+            // contact of its own, where the sphere's material point has turned to.
+            const DVec3 shift = mPosition - s.lateralCentre;
+            const bool replaced = glm::length(shift - glm::dot(shift, s.normal) * s.normal) <= reach;
+            const DVec3 dir = replaced ? s.lateralDir : direction(s, s.lateralArm);
+            const DVec3 warm = static_cast<double>(mProfile.frictionWarmStart) * s.lateral * dir;
+            applyTangential(warm, s.normal, radius, v);
+            if (replaced) s.frictionImpulse = warm;
+        }
+        for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].acting) normalRow(mSurfaces[i], v, mSurfaces[i].target);
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].acting && mSurfaces[i].normalImpulse > 0.0) frictionRow(mSurfaces[i], v, 1.0);
+        }
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (s.acting) s.lateral = glm::dot(s.frictionImpulse, s.lateralDir);
         }
     }
 

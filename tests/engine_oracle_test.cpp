@@ -92,7 +92,7 @@ const EngineInfo kEngines[] = {
     {"jolt", PhysicsEngine::Jolt, "node", 0.95, 0.95},
     {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9},
     {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9},
-    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.6},
+    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.8},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
     {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.75},
@@ -266,7 +266,13 @@ Prediction predict(const Throw& t, ProjectileMethod method) {
     settings.engine.timestep = static_cast<float>(1.0 / t.hz);
     if (t.damping) settings.engine.linearDamping = static_cast<float>(*t.damping);
     // ammo.js 0.0.10 carries a Bullet older than 2.87: no restitution threshold (a project setting).
-    if (t.harnessEngine == "ammo") settings.engine.restitutionThreshold = 0.0f;
+    // It also warm-starts friction (removed in 2.89) and pushes deep penetrations out with
+    // erp2 = 0.8 (0.2 from 2.85 on).
+    if (t.harnessEngine == "ammo") {
+        settings.engine.restitutionThreshold = 0.0f;
+        settings.engine.frictionWarmStart = 0.85f;
+        settings.engine.splitImpulseCorrection = 0.8f;
+    }
     settings.step = settings.engine.timestep;
     settings.radius = static_cast<float>(t.radius);
     settings.restitution = static_cast<float>(t.restitution);

@@ -115,6 +115,16 @@ struct EngineProfile {
     /// so the sphere keeps it: Bullet, Godot 3); false: the position is moved and the velocity is
     /// left alone (Jolt, Box2D).
     bool correctionIsVelocity = false;
+    /// Bullet's split impulse (erp2): fraction of a penetration deeper than 4 cm pushed out per
+    /// step by a separate velocity that moves the sphere but is not kept. Bullet 2.85 and later:
+    /// 0.2; ammo.js 0.0.10 (Bullet 2.83): 0.8. Only the Bullet profiles use it [Limit: 0 .. 1].
+    float splitImpulseCorrection = 0.2f;
+    /// Fraction of a contact's previous friction impulse that the solver applies first when the
+    /// contact persists into the next step (warm starting of friction), along that step's new
+    /// friction direction; a contact whose normal impulse then comes out zero keeps it
+    /// uncorrected. Bullet up to 2.88 (ammo.js 0.0.10 carries 2.83): 0.85; Bullet 2.89 and later
+    /// and the other engines' profiles: 0 [Limit: 0 .. 1].
+    float frictionWarmStart = 0.0f;
     /// Largest linear speed the engine allows; faster bodies are slowed to it each step
     /// (Jolt: 500) [Units: m/s] [Limit: > 0].
     float maxLinearSpeed = 3.0e38f;
