@@ -823,11 +823,34 @@ private:
             if (!mWorld.castSegment(c, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             const DVec3 at = toD(hit.position);
-            auto separation = [&](double t) { return target + glm::dot(c0 + motion * t - at, n); };
-            if (separation(1.0) > target - tolerance) return;  // ends (nearly) at the target: no event
-            double t = static_cast<double>(hit.fraction);
-            if (separation(0.0) <= target + tolerance) t = 0.0;
-            else if (std::abs(separation(0.5) - target) < tolerance) t = 0.5;
+            // The separation function: along the face normal, or, at a corner, along the
+            // direction from the corner to the centre where the advancement stands (e_points).
+            const DVec3 corner = at - n * target;
+            const bool vertex = isCorner(at, n, target);
+            double t = 0.0;
+            bool impact = false;
+            for (int iteration = 0; iteration < 20; ++iteration) {
+                const DVec3 from = c0 + motion * t;
+                const double distance = vertex ? glm::length(from - corner) : target + glm::dot(from - at, n);
+                if (distance < target + tolerance) {
+                    impact = true;
+                    break;
+                }
+                const DVec3 axis = vertex ? (from - corner) / distance : n;
+                auto separation = [&](double u) { return glm::dot(c0 + motion * u - corner, axis) + (vertex ? 0.0 : target - glm::dot(at - corner, n)); };
+                const double s1 = separation(t), s2 = separation(1.0);
+                if (s2 > target + tolerance) break;  // separated
+                if (s2 > target - tolerance) {
+                    t = 1.0;
+                    continue;
+                }
+                // b2TimeOfImpact's root finder: bisection first, then the secant rule (exact
+                // for a separation linear in time).
+                const double middle = 0.5 * (t + 1.0);
+                if (std::abs(separation(middle) - target) < tolerance) t = middle;
+                else t = t + (target - s1) * (1.0 - t) / (s2 - s1);
+            }
+            if (!impact) return;
             const double alpha = alpha0 + (1.0 - alpha0) * t;
             if (alpha >= 1.0 - 10.0 * 1.1920929e-7) return;
             DVec3 p = c0 + motion * t;
@@ -896,6 +919,24 @@ private:
             mPosition = p;
             alpha0 = alpha;
         }
+    }
+
+    // Whether a sphere cast (radius `radius`) that stopped with its centre at `centre` and the
+    // normal n touched a corner: probes beside it, along -n, find the same face or not.
+    bool isCorner(const DVec3& centre, const DVec3& n, double radius) const {
+        DVec3 side = glm::cross(n, DVec3(0.0, 0.0, 1.0));
+        if (glm::length(side) < 1e-6) side = glm::cross(n, DVec3(1.0, 0.0, 0.0));
+        side = glm::normalize(side) * 1e-3;
+        for (const double sign : {-1.0, 1.0}) {
+            SegmentCast probe;
+            probe.origin = toR(centre + n * 0.01 + side * sign);
+            probe.displacement = toF(-n * 0.02);
+            probe.radius = static_cast<float>(radius);
+            CastHit hit;
+            if (!mWorld.castSegment(probe, hit)) return true;
+            if (glm::dot(glm::normalize(toD(hit.normal)), n) < 1.0 - 1e-6) return true;
+        }
+        return false;
     }
 
     // PhysX 4.1 PGS: biased rows (push-out, speculative allowance) in 4 position iterations with
