@@ -859,11 +859,17 @@ private:
             // The contacts touching there: the one hit, and the others within the skin.
             CastHit surface = hit;
             surface.position = toR(at + n * (mRadius - target));
-            DVec3 touch = toD(surface.position);
-            if (!isKnown(n, touch, mCount) && mCount < kMaxSurfaces) {
+            DVec3 touch = toD(surface.position), normal = n;
+            if (vertex && glm::length(p - corner) > 0.0) {
+                // b2CollidePolygonAndCircle in a vertex region: the normal from the corner to
+                // the centre where the time of impact left it.
+                normal = glm::normalize(p - corner);
+                touch = corner + normal * mRadius;
+            }
+            if (!isKnown(normal, touch, mCount) && mCount < kMaxSurfaces) {
                 Surface& s = mSurfaces[mCount++];
                 s = Surface{};
-                s.normal = n;
+                s.normal = normal;
                 s.touch = touch;
                 s.restitution = hit.restitution;
                 s.friction = hit.friction;
