@@ -252,8 +252,17 @@ private:
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
         if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
+        if (mProfile.engine == PhysicsEngine::Box2D) {
+            // The impulses this step's discrete solve stores for the next step's warm start.
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                s.warmNormal = s.acting ? s.normalImpulse : 0.0;
+                s.warmFriction = s.acting ? s.frictionImpulse : DVec3(0.0);
+            }
+        }
         if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity) correctJoltPositions(before);
         else correctPositions();
+        if (mProfile.engine == PhysicsEngine::Box2D) box2dTimeOfImpact(before);
         if (mMeshContacts) followManifoldPoints(mPosition - before);
         if (mProfile.frictionWarmStart > 0.0f) dropDriftedPoints(mPosition - before);
 
@@ -337,13 +346,14 @@ private:
             const DVec3 to = mPosition + freeMotion * ((length + reach) / length);
             CastHit hit;
             if (cast(mPosition, to, hit)) addSurface(hit);
-            if (mProfile.engine == PhysicsEngine::Rapier) findNearby(freeMotion / length, reach);
+            if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D)
+                findNearby(freeMotion / length, reach);
         }
         // Bullet's narrow phase (Godot 3 with Bullet too) tests every shape whose bounds overlap the
         // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does.
         if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet)
             slideCast(freeMotion, reach);
-        if (mProfile.engine == PhysicsEngine::Rapier) closestPoints(reach);
+        if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
@@ -764,6 +774,7 @@ private:
         switch (mProfile.engine) {
         case PhysicsEngine::Rapier: solveRapier(v0, v); break;
         case PhysicsEngine::PhysX: solvePhysX(v); break;
+        case PhysicsEngine::Box2D: solveBox2D(v, false); break;
         default: solveSequential(v0, v); break;
         }
         return true;
@@ -910,6 +921,185 @@ private:
             Surface& s = mSurfaces[i];
             if (s.acting) s.lateral = glm::dot(s.frictionImpulse, s.lateralDir);
         }
+    }
+
+    // Box2D 2.4 b2ContactSolver: every touching contact (within the polygon skin) bounces when
+    // its relative normal velocity before the solve, after gravity, approaches faster than the
+    // restitution threshold (velocityBias = -e vRel), else its target is 0; there is no
+    // speculative allowance. The impulses stored by the previous step warm-start the solve
+    // (applied to the velocity first); then 8 velocity iterations, friction before the normal
+    // row. The time-of-impact sub-step (`toi`) starts its accumulated impulses from the stored
+    // ones without applying them, as b2Island::SolveTOI does (no WarmStart call).
+    void solveBox2D(DVec3& v, bool toi) {
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            const double vn = glm::dot(v, s.normal);
+            s.bounce = vn < -mProfile.restitutionThreshold && s.e > 0.0;
+            s.target = s.bounce ? -s.e * vn : 0.0;
+            s.normalImpulse = s.warmNormal;
+            s.frictionImpulse = s.warmFriction - glm::dot(s.warmFriction, s.normal) * s.normal;
+            if (!toi) {
+                v += s.normalImpulse * s.normal;
+                applyTangential(s.frictionImpulse, s.normal, contactArm(s), v);
+            }
+        }
+        for (int iteration = 0; iteration < 8; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                frictionRow(s, v, 1.0);
+                normalRow(s, v, s.target);
+            }
+        }
+    }
+
+    // Box2D 2.4's continuous collision (b2World::SolveTOI): every dynamic body is swept against
+    // the static shapes from its position at the step's start to where the step left it. The
+    // time of impact (b2TimeOfImpact, conservative advancement) is where the distance between
+    // the circle's centre and the polygon's core reaches target = r + skin - 3 slop (within a
+    // quarter slop); on a face the separation is linear in time and the root finder returns the
+    // midpoint of the sweep when that is within the tolerance, else the exact root. The body
+    // is moved there, pushed out by up to 20 position iterations (Baumgarte 0.75, until no
+    // contact is deeper than 1.5 slop), the velocity is solved again (8 iterations, restitution
+    // from the velocity at that moment) and moves the body for the rest of the step. Further
+    // impacts in that rest are handled alike (b2_maxSubSteps 8).
+    void box2dTimeOfImpact(const DVec3& start) {
+        const double dt = mRec.dt, slop = 0.005, skin = 0.01, tolerance = 0.25 * slop;
+        const double target = std::max(slop, mRadius + skin - 3.0 * slop);
+        DVec3 c0 = start;
+        double alpha0 = 0.0;
+        for (int event = 0; event < 8; ++event) {
+            const DVec3 motion = mPosition - c0;
+            if (glm::length(motion) <= 0.0) return;
+            SegmentCast c;
+            c.origin = toR(c0);
+            c.displacement = toF(motion);
+            c.radius = static_cast<float>(target);
+            CastHit hit;
+            if (!mWorld.castSegment(c, hit)) return;
+            const DVec3 n = glm::normalize(toD(hit.normal));
+            const DVec3 at = toD(hit.position);
+            // The separation function: along the face normal, or, at a corner, along the
+            // direction from the corner to the centre where the advancement stands (e_points).
+            const DVec3 corner = at - n * target;
+            const bool vertex = isCorner(at, n, target);
+            double t = 0.0;
+            bool impact = false;
+            for (int iteration = 0; iteration < 20; ++iteration) {
+                const DVec3 from = c0 + motion * t;
+                const double distance = vertex ? glm::length(from - corner) : target + glm::dot(from - at, n);
+                if (distance < target + tolerance) {
+                    impact = true;
+                    break;
+                }
+                const DVec3 axis = vertex ? (from - corner) / distance : n;
+                auto separation = [&](double u) { return glm::dot(c0 + motion * u - corner, axis) + (vertex ? 0.0 : target - glm::dot(at - corner, n)); };
+                const double s1 = separation(t), s2 = separation(1.0);
+                if (s2 > target + tolerance) break;  // separated
+                if (s2 > target - tolerance) {
+                    t = 1.0;
+                    continue;
+                }
+                // b2TimeOfImpact's root finder: bisection first, then the secant rule (exact
+                // for a separation linear in time).
+                const double middle = 0.5 * (t + 1.0);
+                if (std::abs(separation(middle) - target) < tolerance) t = middle;
+                else t = t + (target - s1) * (1.0 - t) / (s2 - s1);
+            }
+            if (!impact) return;
+            const double alpha = alpha0 + (1.0 - alpha0) * t;
+            if (alpha >= 1.0 - 10.0 * 1.1920929e-7) return;
+            DVec3 p = c0 + motion * t;
+            if (mProfile.planar) p.z = start.z;
+
+            // The contacts touching there: the one hit, and the others within the skin.
+            CastHit surface = hit;
+            surface.position = toR(at + n * (mRadius - target));
+            DVec3 touch = toD(surface.position), normal = n;
+            if (vertex && glm::length(p - corner) > 0.0) {
+                // b2CollidePolygonAndCircle in a vertex region: the normal from the corner to
+                // the centre where the time of impact left it.
+                normal = glm::normalize(p - corner);
+                touch = corner + normal * mRadius;
+            }
+            if (!isKnown(normal, touch, mCount) && mCount < kMaxSurfaces) {
+                Surface& s = mSurfaces[mCount++];
+                s = Surface{};
+                s.normal = normal;
+                s.touch = touch;
+                s.restitution = hit.restitution;
+                s.friction = hit.friction;
+            }
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                s.gap = glm::dot(p - s.touch, s.normal);
+                const bool touching = s.gap < skin;
+                if (touching && !s.acting) {
+                    s.warmNormal = 0.0;
+                    s.warmFriction = DVec3(0.0);
+                }
+                s.acting = touching;
+                if (!touching) continue;
+                s.e = s.restitution >= 0.0f
+                          ? combineMaterial(mProfile.restitutionCombine, mSettings.restitution, s.restitution)
+                          : mSettings.restitution;
+                s.mu = s.friction >= 0.0f ? combineMaterial(mProfile.frictionCombine, mSettings.friction, s.friction)
+                                          : mSettings.friction;
+            }
+            // b2ContactSolver::SolveTOIPositionConstraints.
+            for (int iteration = 0; iteration < 20; ++iteration) {
+                double deepest = 0.0;
+                for (int i = 0; i < mCount; ++i) {
+                    const Surface& s = mSurfaces[i];
+                    if (!s.acting) continue;
+                    const double sep = glm::dot(p - s.touch, s.normal) - skin;
+                    deepest = std::min(deepest, sep);
+                    p -= s.normal * std::clamp(0.75 * (sep + slop), -0.2, 0.0);
+                }
+                // Done once no contact was deeper than 1.5 slop. After a time of impact on a face
+                // the first iteration leaves exactly that depth, which Box2D's float arithmetic
+                // finds not quite reached: one more iteration follows.
+                if (deepest > -1.5 * slop + 1e-9) break;
+            }
+            c0 = p;
+            // The velocity constraints are set up where the position solve left the body.
+            for (int i = 0; i < mCount; ++i) mSurfaces[i].gap = glm::dot(p - mSurfaces[i].touch, mSurfaces[i].normal);
+            DVec3 v = mVelocity;
+            double approach[kMaxSurfaces] = {};
+            for (int i = 0; i < mCount; ++i) approach[i] = -glm::dot(v, mSurfaces[i].normal);
+            solveBox2D(v, true);
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (s.acting) s.approach = std::max(s.approach, approach[i]);
+            }
+            const double h = (1.0 - alpha) * dt;
+            const double travel = glm::length(v) * h;
+            if (travel > mProfile.maxStepDistance) v *= mProfile.maxStepDistance / travel;
+            p += v * h;
+            if (mProfile.planar) p.z = start.z;
+            mVelocity = v;
+            mPosition = p;
+            alpha0 = alpha;
+        }
+    }
+
+    // Whether a sphere cast (radius `radius`) that stopped with its centre at `centre` and the
+    // normal n touched a corner: probes beside it, along -n, find the same face or not.
+    bool isCorner(const DVec3& centre, const DVec3& n, double radius) const {
+        DVec3 side = glm::cross(n, DVec3(0.0, 0.0, 1.0));
+        if (glm::length(side) < 1e-6) side = glm::cross(n, DVec3(1.0, 0.0, 0.0));
+        side = glm::normalize(side) * 1e-3;
+        for (const double sign : {-1.0, 1.0}) {
+            SegmentCast probe;
+            probe.origin = toR(centre + n * 0.01 + side * sign);
+            probe.displacement = toF(-n * 0.02);
+            probe.radius = static_cast<float>(radius);
+            CastHit hit;
+            if (!mWorld.castSegment(probe, hit)) return true;
+            if (glm::dot(glm::normalize(toD(hit.normal)), n) < 1.0 - 1e-6) return true;
+        }
+        return false;
     }
 
     // PhysX 4.1 PGS: biased rows (push-out, speculative allowance) in 4 position iterations with
@@ -1240,6 +1430,8 @@ private:
         if (mProfile.engine == PhysicsEngine::Jolt) return mRadius + 0.5 * s.gap;
         if (mProfile.engine == PhysicsEngine::PhysX) return mRadius + s.gap;  // negative: centre inside the box
         if (s.predictive) return 0.0;
+        // Box2D: midway between the circle's surface and the polygon's skin (0.01 m).
+        if (mProfile.engine == PhysicsEngine::Box2D) return mRadius + 0.5 * (s.gap - 0.01);
         return mRadius;
     }
 
@@ -1314,10 +1506,12 @@ private:
         if (engine == PhysicsEngine::Rapier) return;  // its sub-steps pushed out already
         const int iterations = engine == PhysicsEngine::Jolt ? 2 : engine == PhysicsEngine::Box2D ? 3 : 1;
         for (int iteration = 0; iteration < iterations; ++iteration) {
+            double deepest = 0.0;  // Box2D: the deepest separation met in this iteration
             for (int i = 0; i < mCount; ++i) {
                 const Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 const double gap = glm::dot(mPosition - s.touch, s.normal);
+                deepest = std::min(deepest, gap - 0.01);
                 if (engine == PhysicsEngine::Jolt) {
                     const double c = std::max(gap + mProfile.penetrationSlop, -0.2);
                     if (c < 0.0) mPosition -= s.normal * (mProfile.positionCorrection * c);
@@ -1329,6 +1523,9 @@ private:
                     if (depth > 0.0) mPosition += s.normal * (mProfile.positionCorrection * depth);
                 }
             }
+            // b2ContactSolver::SolvePositionConstraints: done once no contact was deeper than
+            // 3 slop (separation below the skin) when the iteration began.
+            if (engine == PhysicsEngine::Box2D && deepest >= -3.0 * 0.005) break;
         }
     }
 

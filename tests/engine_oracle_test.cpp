@@ -96,7 +96,7 @@ const EngineInfo kEngines[] = {
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
     {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.75},
-    {"box2d", PhysicsEngine::Box2D, "native", 0.2, 0.2},
+    {"box2d", PhysicsEngine::Box2D, "native", 0.9, 0.85},
 };
 
 Quat yawQuat(double yaw, bool aboutZ) {
