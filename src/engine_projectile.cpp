@@ -625,19 +625,11 @@ private:
     // its distance along the normal, or its slip across it, exceeds the contact breaking
     // threshold; a new contact found near it replaces it.
     void followManifoldPoints(const DVec3& moved) {
-        const DVec3 turn = mAngular * mRec.dt;
-        const double angle = glm::length(turn);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
-            // The material point at -r n, turned by the step's rotation (Rodrigues).
             const DVec3 arm = -mRadius * s.normal;
-            DVec3 turned = arm;
-            if (angle > 0.0) {
-                const DVec3 k = turn / angle;
-                turned = arm * std::cos(angle) + glm::cross(k, arm) * std::sin(angle) +
-                         k * (glm::dot(k, arm) * (1.0 - std::cos(angle)));
-            }
+            const DVec3 turned = turnedByStep(arm);
             const DVec3 motion = moved + turned - arm;
             if (s.fresh) {
                 s.pointGap = s.gap;
@@ -651,23 +643,28 @@ private:
         }
     }
 
+    // A vector fixed in the body (a material point's arm from the centre), turned by this step's
+    // rotation (Rodrigues).
+    DVec3 turnedByStep(const DVec3& arm) const {
+        const DVec3 turn = mAngular * mRec.dt;
+        const double angle = glm::length(turn);
+        if (!(angle > 0.0)) return arm;
+        const DVec3 k = turn / angle;
+        return arm * std::cos(angle) + glm::cross(k, arm) * std::sin(angle) +
+               k * (glm::dot(k, arm) * (1.0 - std::cos(angle)));
+    }
+
     // Bullet's refreshContactPoints: a manifold point stays on the sphere's material point (which
     // moves with the body, rotation included) and on the surface where it was found; it is
     // dropped, and its friction impulse with it, once its distance along the normal or its slip
     // across it exceeds the contact breaking threshold.
     void dropDriftedPoints(const DVec3& moved) {
-        const DVec3 turn = mAngular * mRec.dt;
-        const double angle = glm::length(turn), reach = contactReach();
+        const double reach = contactReach();
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (s.lateral == 0.0) continue;
             const DVec3 arm = -mRadius * s.normal;
-            DVec3 turned = arm;
-            if (angle > 0.0) {
-                const DVec3 k = turn / angle;
-                turned = arm * std::cos(angle) + glm::cross(k, arm) * std::sin(angle) +
-                         k * (glm::dot(k, arm) * (1.0 - std::cos(angle)));
-            }
+            const DVec3 turned = turnedByStep(arm);
             const DVec3 motion = moved + turned - arm;
             const double along = glm::dot(motion, s.normal);
             if (s.gap + along > reach || glm::length(motion - along * s.normal) > reach) s.lateral = 0.0;
