@@ -22,6 +22,7 @@
 #include "engine_internal.h"
 
 #include <foresight/projectile.h>
+#include <foresight/static_world.h>
 
 #include <algorithm>
 #include <array>
@@ -73,11 +74,28 @@ struct Surface {
     DVec3 lateralCentre{0.0};  // the centre when the point was found
 };
 
+// The world that contactCoast steps against: one one-sided plane with a material, answered by
+// the same shape test as StaticWorld's.
+class PlaneWorld final : public CollisionWorld {
+public:
+    PlaneWorld(const Plane& plane, const SurfaceMaterial& material) : mPlane(plane), mMaterial(material) {}
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
+        ClosestHitCaster caster(cast);
+        caster.test(mPlane, mMaterial);
+        return caster.result(hit);
+    }
+    bool mayTouch(const SegmentCast& capsule) const override { return foresight::mayTouch(capsule, mPlane); }
+
+private:
+    Plane mPlane;
+    SurfaceMaterial mMaterial;
+};
+
 class EngineRun {
 public:
     EngineRun(const ProjectileSettings& settings, const CollisionWorld& world, TrajectoryRecorder& recorder,
               ProjectileResult& result)
-        : mSettings(settings), mProfile(settings.engine), mWorld(world), mRecorder(recorder), mResult(result),
+        : mSettings(settings), mProfile(settings.engine), mWorld(&world), mRecorder(recorder), mResult(result),
           mRec(engineRecurrence(settings.engine)) {
         mGravity = DVec3(decimalValue(settings.gravity.x), decimalValue(settings.gravity.y),
                          decimalValue(settings.gravity.z));
@@ -99,24 +117,15 @@ public:
                 if (!isFinite(mPosition) || !isFinite(mVelocity)) return Status::NonFiniteResult;
                 continue;
             }
-            const bool bounced = step(k == 1);
-            const double t = static_cast<double>(k) * mRec.dt;
-            if (bounced && mResult.bounces > mSettings.maxBounces) {
-                --mResult.bounces;
-                mResult.stoppedAtHit = true;
-                mResult.time = static_cast<float>(t);
-                mResult.hitNormal = toF(mLastNormal);
-                mRecorder.add(t, TrajectoryEvent::Hit, mPosition, mVelocity, mLastNormal);
-                mResult.position = toR(mPosition);
-                mResult.velocity = toF(mVelocity);
-                return Status::Ok;
+            StepOutcome outcome = StepOutcome::Next;
+            if (const std::uint64_t taken = contactCoast(k, steps, outcome); taken > 0) {
+                k += taken - 1;
+                if (outcome == StepOutcome::Stopped) return Status::Ok;
+                continue;
             }
-            if (!isFinite(mPosition) || !isFinite(mVelocity)) return Status::NonFiniteResult;
-            // A step in which a contact changed the velocity is a bounce point, with the normal
-            // of the contact that pushed hardest (resting and rolling steps too).
-            TrajectoryEvent event = mTouching ? TrajectoryEvent::Bounce : TrajectoryEvent::Step;
-            if (k == steps) event = TrajectoryEvent::End;
-            mRecorder.add(t, event, mPosition, mVelocity, mTouching ? mContactNormal : DVec3(0.0));
+            outcome = advance(k, steps);
+            if (outcome == StepOutcome::Stopped) return Status::Ok;
+            if (outcome == StepOutcome::NonFinite) return Status::NonFiniteResult;
         }
         mResult.position = toR(mPosition);
         mResult.velocity = toF(mVelocity);
@@ -127,6 +136,151 @@ public:
     }
 
 private:
+    enum class StepOutcome { Next, Stopped, NonFinite };
+
+    // Step k of `steps`, recorded: Stopped when it was the impact that maxBounces stops at (the
+    // result is then complete), NonFinite when the state overflowed.
+    StepOutcome advance(std::uint64_t k, std::uint64_t steps) {
+        const bool bounced = step(k == 1);
+        const double t = static_cast<double>(k) * mRec.dt;
+        if (bounced && mResult.bounces > mSettings.maxBounces) {
+            --mResult.bounces;
+            mResult.stoppedAtHit = true;
+            mResult.time = static_cast<float>(t);
+            mResult.hitNormal = toF(mLastNormal);
+            mRecorder.add(t, TrajectoryEvent::Hit, mPosition, mVelocity, mLastNormal);
+            mResult.position = toR(mPosition);
+            mResult.velocity = toF(mVelocity);
+            return StepOutcome::Stopped;
+        }
+        if (!isFinite(mPosition) || !isFinite(mVelocity)) return StepOutcome::NonFinite;
+        // A step in which a contact changed the velocity is a bounce point, with the normal
+        // of the contact that pushed hardest (resting and rolling steps too).
+        TrajectoryEvent event = mTouching ? TrajectoryEvent::Bounce : TrajectoryEvent::Step;
+        if (k == steps) event = TrajectoryEvent::End;
+        mRecorder.add(t, event, mPosition, mVelocity, mTouching ? mContactNormal : DVec3(0.0));
+        return StepOutcome::Next;
+    }
+
+    // What a step changes (contactCoast takes steps on trial and may have to undo them).
+    struct Snapshot {
+        DVec3 position, velocity, angular, pushVelocity, substepPosition, lastNormal, contactNormal;
+        std::array<Surface, kMaxSurfaces> surfaces;
+        int count;
+        bool touching;
+        ProjectileResult result;
+        std::size_t recorderSize, recorderNeeded;
+        double recorderReach;
+    };
+    Snapshot save() const {
+        return Snapshot{mPosition, mVelocity, mAngular, mPushVelocity, mSubstepPosition, mLastNormal,
+                        mContactNormal, mSurfaces, mCount, mTouching, mResult, mRecorder.size,
+                        mRecorder.needed, mRecorder.reach};
+    }
+    void restore(const Snapshot& s) {
+        mPosition = s.position;
+        mVelocity = s.velocity;
+        mAngular = s.angular;
+        mPushVelocity = s.pushVelocity;
+        mSubstepPosition = s.substepPosition;
+        mLastNormal = s.lastNormal;
+        mContactNormal = s.contactNormal;
+        mSurfaces = s.surfaces;
+        mCount = s.count;
+        mTouching = s.touching;
+        mResult = s.result;
+        mRecorder.size = s.recorderSize;
+        mRecorder.needed = s.recorderNeeded;
+        mRecorder.reach = s.recorderReach;
+    }
+
+    // Rolling, sliding or resting on one surface over several steps with one world query. While
+    // the sphere touches only a plane, every query of a step stays within `extent` of its centre;
+    // the steps are taken against a world that holds that plane alone, and kept when the world
+    // promises (CollisionWorld::isOnlyPlane) that it is that plane and nothing else within the
+    // capsule around their path: then each step's casts would have had the same answers. Else
+    // they are undone and taken one by one. Returns the steps taken from step k on (0: none);
+    // `outcome` is the last one's. The horizon doubles after a promise and halves after a refusal.
+    std::uint64_t contactCoast(std::uint64_t k, std::uint64_t steps, StepOutcome& outcome) {
+        if (mCount != 1 || k == 1 || mRadius <= 0.0) return 0;
+        const Surface& surface = mSurfaces[0];
+        if (!surface.acting || surface.predictive || surface.reversed || !surface.carried) return 0;
+        if (mContactWait > 0) {
+            --mContactWait;
+            return 0;
+        }
+        const std::uint64_t n = std::min<std::uint64_t>(mContactSteps, steps - k + 1);
+        if (n < 2) return 0;
+        PlaneRegion region;
+        region.normal = toF(surface.normal);
+        region.point = toR(surface.touch - surface.normal * mRadius);
+        region.restitution = surface.restitution;
+        region.friction = surface.friction;
+        const DVec3 normal = toD(region.normal), point = toD(region.point);
+        Plane plane;
+        plane.normal = region.normal;
+        plane.distance = static_cast<Real>(glm::dot(normal, point));
+        const PlaneWorld planeWorld(plane, SurfaceMaterial{surface.restitution, surface.friction});
+
+        const auto sinking = [&](const DVec3& p) { return glm::dot(normal, p - point) < mRadius; };
+        if (sinking(mPosition)) return 0;  // see isOnlyPlane below
+
+        const Snapshot before = save();
+        const CollisionWorld* world = mWorld;
+        mWorld = &planeWorld;
+        mCoastPositions[0] = mPosition;
+        std::uint64_t taken = 0;
+        double travel = 0.0;
+        bool sunk = false;
+        outcome = StepOutcome::Next;
+        while (taken < n && outcome == StepOutcome::Next) {
+            const DVec3 from = mPosition;
+            outcome = advance(k + taken, steps);
+            ++taken;
+            mCoastPositions[taken] = mPosition;
+            const double speed = std::max(glm::length(mVelocity), glm::length(mPosition - from) / mRec.dt);
+            travel = std::max(travel, (speed + glm::length(mGravity) * mRec.dt) * mRec.dt);
+            if (sinking(mPosition)) {
+                sunk = true;
+                break;  // refused below: no more steps wasted
+            }
+        }
+        mWorld = world;
+
+        // How far from the centre a step's queries reach (findSurfaces and what it calls): the
+        // probes along a surface's normal start 0.01 m off it and end the contact reach and the
+        // step's travel into it; Jolt's axis probes reach 3 times the contact reach; Rapier's and
+        // Box2D's closest-point probes start 0.05 m behind and reach r + reach + 0.1 with a probe
+        // sphere as large. Twice the travel, and 0.01 m more.
+        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[taken] - a;
+        const double chordSquared = glm::dot(chord, chord);
+        double bend = 0.0;
+        for (std::uint64_t j = 1; j < taken; ++j) {
+            const DVec3 offset = mCoastPositions[j] - a;
+            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
+            bend = std::max(bend, glm::length(offset - chord * t));
+        }
+        const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
+        const double reach = contactReach();
+        const double extent = (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) +
+                              2.0 * travel + 0.01;
+        region.capsule.origin = toR(a);
+        region.capsule.displacement = toF(mCoastPositions[taken] - toD(region.capsule.origin));
+        region.capsule.radius = static_cast<float>((extent + bend + 1e-3) * (1.0 + 1e-5));
+        // isOnlyPlane promises the answers of casts that start clear of the plane: a sphere that
+        // sinks into a floor of triangles meets their shared edges (and tilted normals there),
+        // which the plane alone has not.
+        const bool kept = outcome != StepOutcome::NonFinite && !sunk && mWorld->isOnlyPlane(region);
+        if (!kept) {
+            restore(before);
+            mContactSteps = std::max<std::uint64_t>(mContactSteps / 2, 2);
+            if (mContactSteps == 2) mContactWait = 4;  // near an edge or a wall: step a while
+            return 0;
+        }
+        mContactSteps = std::min<std::uint64_t>(mContactSteps * 2, kMaxCoastSteps);
+        return taken;
+    }
+
     // One engine step; returns true when a contact stopped or reversed a real approach (an
     // impact: counted in `bounces`, and what maxBounces stops at).
     // The step's velocity and free motion before contacts (the profile's recurrence or its
@@ -212,7 +366,7 @@ private:
         capsule.displacement = toF(mCoastPositions[n] - toD(capsule.origin));
         // The casts' own margins: the float rounding of origin and displacement, 1 mm besides.
         capsule.radius = static_cast<float>((mRadius + contactReach() + bend + 1e-3) * (1.0 + 1e-5));
-        if (mWorld.mayTouch(capsule)) {
+        if (mWorld->mayTouch(capsule)) {
             mCoastSteps = std::max<std::uint64_t>(mCoastSteps / 2, 2);
             if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
             return 0;
@@ -385,7 +539,7 @@ private:
         c.displacement = toF(motion);
         c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
         CastHit hit;
-        if (!mWorld.castSegment(c, hit) || hit.fraction >= 1.0f) return;
+        if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return;
         const DVec3 n = glm::normalize(toD(hit.normal));
         if (glm::dot(n, motion) >= -0.04) return;  // btClosestNotMeConvexResultCallback's allowed penetration
         Surface& s = mSurfaces[mCount++];
@@ -457,7 +611,7 @@ private:
         grown.displacement = toF(mPosition + direction * 1e-3 - toD(grown.origin));
         grown.radius = static_cast<float>(mRadius + reach);
         CastHit hit;
-        if (!mWorld.castSegment(grown, hit)) return;
+        if (!mWorld->castSegment(grown, hit)) return;
         // Along the closest direction the probe meets the shape at the gap; an edge or corner
         // gives that direction after a few probes.
         DVec3 n = glm::normalize(toD(hit.normal));
@@ -742,7 +896,7 @@ private:
         c.origin = toR(from);
         c.displacement = toF(to - toD(c.origin));
         c.radius = static_cast<float>(mRadius);
-        return mWorld.castSegment(c, hit);
+        return mWorld->castSegment(c, hit);
     }
 
     // The contact solve; returns true when any contact applied an impulse. Each engine's own rule
@@ -974,7 +1128,7 @@ private:
             c.displacement = toF(motion);
             c.radius = static_cast<float>(target);
             CastHit hit;
-            if (!mWorld.castSegment(c, hit)) return;
+            if (!mWorld->castSegment(c, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             const DVec3 at = toD(hit.position);
             // The separation function: along the face normal, or, at a corner, along the
@@ -1093,7 +1247,7 @@ private:
             probe.displacement = toF(-n * 0.02);
             probe.radius = static_cast<float>(radius);
             CastHit hit;
-            if (!mWorld.castSegment(probe, hit)) return true;
+            if (!mWorld->castSegment(probe, hit)) return true;
             if (glm::dot(glm::normalize(toD(hit.normal)), n) < 1.0 - 1e-6) return true;
         }
         return false;
@@ -1309,7 +1463,7 @@ private:
         c.displacement = toF(motion);
         c.radius = static_cast<float>(mRadius - slop - tolerance);
         CastHit hit;
-        if (!mWorld.castSegment(c, hit) || hit.fraction <= 0.0f) return;
+        if (!mWorld->castSegment(c, hit) || hit.fraction <= 0.0f) return;
         const double target = mRadius - slop;
         DVec3 axis = glm::normalize(toD(hit.normal));
         double t = 0.0, distance = 0.0;
@@ -1343,7 +1497,7 @@ private:
             cast.displacement = toF(c - axis * range - toD(cast.origin));
             cast.radius = static_cast<float>(probe);
             CastHit hit;
-            if (!mWorld.castSegment(cast, hit)) return false;
+            if (!mWorld->castSegment(cast, hit)) return false;
             const DVec3 n = glm::normalize(toD(hit.normal));
             const bool settled = glm::dot(n, axis) > 1.0 - 1e-10;
             axis = n;
@@ -1528,7 +1682,7 @@ private:
 
     const ProjectileSettings& mSettings;
     const EngineProfile& mProfile;
-    const CollisionWorld& mWorld;
+    const CollisionWorld* mWorld;  // the world, or a PlaneWorld while contactCoast tries steps
     TrajectoryRecorder& mRecorder;
     ProjectileResult& mResult;
     EngineRecurrence mRec;
@@ -1545,6 +1699,8 @@ private:
     bool mTouching = false;
     std::uint64_t mCoastSteps = 8;  // the next coast's horizon [steps]
     int mCoastWait = 0;             // steps to take one at a time before coasting again
+    std::uint64_t mContactSteps = 8;  // the next contactCoast's horizon [steps]
+    int mContactWait = 0;             // steps to take one at a time before contactCoast again
     std::array<DVec3, kMaxCoastSteps + 1> mCoastPositions{}, mCoastVelocities{};
     DVec3 mLastNormal{0.0};     // the last real impact's normal
     DVec3 mContactNormal{0.0};  // this step's strongest contact's normal

@@ -482,6 +482,194 @@ bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
     return !((sa > c.radius && sb > c.radius) || (sa < -c.radius && sb < -c.radius));
 }
 
+namespace {
+
+// The smallest distance between the segments [p0, p1] and [q0, q1] (Ericson, Real-Time
+// Collision Detection, 5.1.9).
+double segmentDistance(const DVec3& p0, const DVec3& p1, const DVec3& q0, const DVec3& q1) {
+    const DVec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+    const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+    double s = 0.0, t = 0.0;
+    if (a <= 0.0 && e <= 0.0) return glm::length(r);
+    if (a <= 0.0) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = glm::dot(d1, r);
+        if (e <= 0.0) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = glm::dot(d1, d2), denom = a * e - b * b;
+            s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0.0) {
+                t = 0.0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1.0) {
+                t = 1.0;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    return glm::length(p0 + d1 * s - (q0 + d2 * t));
+}
+
+bool lexicographicLess(const DVec3& a, const DVec3& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+}
+
+}  // namespace
+
+PlaneRegionTester::PlaneRegionTester(const PlaneRegion& region) {
+    const Capsule c = prepareCapsule(region.capsule);
+    const DVec3 normal(region.normal), point = toD(region.point);
+    const double length = glm::length(normal);
+    mMaterial.restitution = region.restitution;
+    mMaterial.friction = region.friction;
+    if (!c.valid || !(length > 0.0) || !std::isfinite(length) || !isFinite(point)) {
+        mFailed = true;
+        return;
+    }
+    mCapsule = region.capsule;
+    mA = c.a;
+    mB = c.b;
+    mRadius = c.radius;
+    mNormal = normal / length;
+    mDistance = glm::dot(mNormal, point);
+    // The plane of a mesh's floor holds its vertices up to their float rounding; 10 um besides.
+    const double magnitude = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z),
+                                       std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
+    mTolerance = 1e-5 + 1e-6 * magnitude;
+    // The anchor must lie in the cross-section: the start within the radius of the plane.
+    const double height = glm::dot(mNormal, mA) - mDistance;
+    if (!(std::abs(height) < mRadius)) mFailed = true;
+    mAnchor = mA - mNormal * height;
+}
+
+bool PlaneRegionTester::sameMaterial(const SurfaceMaterial& m) const {
+    const auto same = [](float a, float b) { return (a < 0.0f && b < 0.0f) || a == b; };
+    return same(m.restitution, mMaterial.restitution) && same(m.friction, mMaterial.friction);
+}
+
+void PlaneRegionTester::test(const Plane& plane, const SurfaceMaterial& material) {
+    if (mFailed || !mayTouch(mCapsule, plane)) return;
+    const DVec3 n(plane.normal);
+    const double length = glm::length(n);
+    if (!(length > 0.0) || glm::dot(n / length, mNormal) < 1.0 - 1e-12 ||
+        std::abs(static_cast<double>(plane.distance) / length - mDistance) > mTolerance || !sameMaterial(material)) {
+        mFailed = true;
+        return;
+    }
+    mCovered = true;
+}
+
+void PlaneRegionTester::test(const Sphere& sphere, const SurfaceMaterial&) {
+    if (!mFailed && mayTouch(mCapsule, sphere)) mFailed = true;
+}
+
+void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& material) {
+    if (mFailed || !mayTouch(mCapsule, box)) return;
+    mFailed = true;  // unless one face holds the whole cross-section
+    const glm::dquat q(box.orientation);
+    const double norm = glm::length(q);
+    if (!(norm > 0.0) || !sameMaterial(material)) return;
+    const glm::dquat inverse = glm::conjugate(q / norm);
+    const DVec3 centre = toD(box.center), half(box.halfExtents), n = inverse * mNormal;
+    const DVec3 a = inverse * (mA - centre), b = inverse * (mB - centre);
+    const double rounding = static_cast<double>(box.rounding);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (std::abs(n[axis]) < 1.0 - 1e-12) continue;
+        const double sign = n[axis] > 0.0 ? 1.0 : -1.0;
+        // The face's plane, and a box deeper than the region reaches behind it.
+        if (std::abs(glm::dot(mNormal, centre) + sign * half[axis] - mDistance) > mTolerance) return;
+        if (2.0 * half[axis] < mRadius) return;
+        for (int other = 0; other < 3; ++other) {
+            if (other == axis) continue;
+            const double room = half[other] - rounding - mRadius;
+            if (!(std::abs(a[other]) <= room && std::abs(b[other]) <= room)) return;
+        }
+        mFailed = false;
+        mCovered = true;
+        return;
+    }
+}
+
+void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
+    if (mFailed || !mayTouch(mCapsule, triangle)) return;
+    const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
+    for (const DVec3& v : {a, b, c}) {
+        if (std::abs(glm::dot(mNormal, v) - mDistance) > mTolerance) {
+            mFailed = true;
+            return;
+        }
+    }
+    // Its hits' normals must be the plane's (a small triangle may tilt within the tolerance).
+    const DVec3 n = glm::cross(b - a, c - a);
+    const double area2 = glm::length(n);
+    if (!(area2 > 0.0) || std::abs(glm::dot(n, mNormal)) / area2 < 1.0 - 1e-11 || !sameMaterial(material)) {
+        mFailed = true;
+        return;
+    }
+    addEdge(a, b, c);
+    addEdge(b, c, a);
+    addEdge(c, a, b);
+    if (!mAnchored) {
+        // The anchor inside the triangle (edges included), in the plane's own terms.
+        const double ab = glm::dot(mNormal, glm::cross(b - a, mAnchor - a));
+        const double bc = glm::dot(mNormal, glm::cross(c - b, mAnchor - b));
+        const double ca = glm::dot(mNormal, glm::cross(a - c, mAnchor - c));
+        mAnchored = (ab >= 0.0 && bc >= 0.0 && ca >= 0.0) || (ab <= 0.0 && bc <= 0.0 && ca <= 0.0);
+    }
+}
+
+// Keeps edge uv when it comes within the region (it may cross the cross-section), with the side
+// of it that w (the triangle's third vertex) lies on.
+void PlaneRegionTester::addEdge(const DVec3& u, const DVec3& v, const DVec3& w) {
+    if (mFailed || segmentDistance(u, v, mA, mB) > mRadius) return;
+    if (mEdgeCount == kMaxEdges) {
+        mFailed = true;
+        return;
+    }
+    Edge& e = mEdges[static_cast<std::size_t>(mEdgeCount++)];
+    const bool forward = lexicographicLess(u, v);
+    e.from = forward ? u : v;
+    e.to = forward ? v : u;
+    const double side = glm::dot(mNormal, glm::cross(e.to - e.from, w - e.from));
+    e.side = side > 0.0 ? 1 : side < 0.0 ? -1 : 0;
+}
+
+bool PlaneRegionTester::result() const {
+    if (mFailed) return false;
+    if (mCovered) return true;  // triangles on a covering plane or face change no answer
+    if (!mAnchored && !mCovered) return false;
+    // Every edge within the region must be shared by exactly two triangles, one on each side.
+    const auto begin = mEdges.begin(), end = begin + mEdgeCount;
+    std::sort(begin, end, [](const Edge& x, const Edge& y) {
+        if (x.from != y.from) return lexicographicLess(x.from, y.from);
+        if (x.to != y.to) return lexicographicLess(x.to, y.to);
+        return x.side < y.side;
+    });
+    for (auto it = begin; it != end; it += 2) {
+        const auto next = it + 1;
+        if (next == end || next->from != it->from || next->to != it->to) return false;
+        if (it->side != -1 || next->side != 1) return false;
+        if (next + 1 != end && (next + 1)->from == it->from && (next + 1)->to == it->to) return false;
+    }
+    return true;
+}
+
+bool StaticWorld::isOnlyPlane(const PlaneRegion& region) const {
+    if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
+    PlaneRegionTester tester(region);
+    for (std::size_t i = 0; i < mPlanes.size() && !tester.failed(); ++i) tester.test(mPlanes[i], mPlaneMaterials[i]);
+    for (std::size_t i = 0; i < mSpheres.size() && !tester.failed(); ++i) tester.test(mSpheres[i], mSphereMaterials[i]);
+    for (std::size_t i = 0; i < mBoxes.size() && !tester.failed(); ++i) tester.test(mBoxes[i], mBoxMaterials[i]);
+    for (std::size_t i = 0; i < mTriangles.size() && !tester.failed(); ++i)
+        tester.test(mTriangles[i], mTriangleMaterials[i]);
+    return tester.result();
+}
+
 bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     for (const Plane& p : mPlanes)
         if (foresight::mayTouch(capsule, p)) return true;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace foresight;
@@ -321,11 +322,14 @@ TEST(EngineProjectile, RenderedPositionBetweenSteps) {
 
 namespace {
 
-// Forwards to a StaticWorld and counts the queries; with `answerTouch` false it leaves mayTouch
-// at CollisionWorld's default (always true), so the Engine method casts every step.
+// Forwards to a world and counts the queries; with `answerTouch` false it leaves mayTouch at
+// CollisionWorld's default (always true), so the Engine method casts every free-flight step;
+// with `answerPlane` false it leaves isOnlyPlane at its default (false), so it casts every step
+// in contact.
 class CountingWorld final : public CollisionWorld {
 public:
-    CountingWorld(const StaticWorld& world, bool answerTouch) : mWorld(world), mAnswerTouch(answerTouch) {}
+    CountingWorld(const CollisionWorld& world, bool answerTouch, bool answerPlane = false)
+        : mWorld(world), mAnswerTouch(answerTouch), mAnswerPlane(answerPlane) {}
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
         ++casts;
         return mWorld.castSegment(cast, hit);
@@ -334,11 +338,18 @@ public:
         ++touches;
         return mAnswerTouch ? mWorld.mayTouch(capsule) : true;
     }
-    mutable std::size_t casts = 0, touches = 0;
+    bool isOnlyPlane(const PlaneRegion& region) const override {
+        if (!mAnswerPlane) return false;
+        ++planeQueries;
+        const bool only = mWorld.isOnlyPlane(region);
+        planePromises += only ? 1 : 0;
+        return only;
+    }
+    mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0;
 
 private:
-    const StaticWorld& mWorld;
-    bool mAnswerTouch;
+    const CollisionWorld& mWorld;
+    bool mAnswerTouch, mAnswerPlane;
 };
 
 StaticWorld randomScene(ftest::Random& random) {
@@ -408,6 +419,152 @@ TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
     // saves 43 % today).
     EXPECT_LT(static_cast<double>(castsCoasting), 0.7 * static_cast<double>(castsEveryStep))
         << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
+}
+
+namespace {
+
+// A floor of 1 m tiles (two triangles each) from -half to half in x and z at height 0, and the
+// box walls and the sphere of randomScene(): the floor is a mesh, not a plane.
+StaticWorld tiledScene(ftest::Random& random, int half) {
+    StaticWorld world;
+    for (int x = -half; x < half; ++x) {
+        for (int z = -half; z < half; ++z) {
+            const RVec3 a(x, 0, z), b(x + 1, 0, z), c(x + 1, 0, z + 1), d(x, 0, z + 1);
+            EXPECT_EQ(world.add(Triangle{a, c, b}), Status::Ok);
+            EXPECT_EQ(world.add(Triangle{a, d, c}), Status::Ok);
+        }
+    }
+    const StaticWorld scene = randomScene(random);
+    for (const OrientedBox& box : scene.boxes()) EXPECT_EQ(world.add(box), Status::Ok);
+    for (const Sphere& sphere : scene.spheres()) EXPECT_EQ(world.add(sphere), Status::Ok);
+    return world;
+}
+
+}  // namespace
+
+// Contact coasting (steps on one surface taken against that plane alone, kept when the world
+// promises with isOnlyPlane that nothing else is near) must give the steps of casting every
+// step: the same arithmetic, against a plane instead of the floor's own shapes, so the same
+// numbers up to their rounding. A plane floor, and a floor of tiles that ends (a ball that rolls
+// off its border falls: the promise must not hold there), with walls and a sphere; every profile.
+TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
+    ftest::Random random(4242);
+    std::size_t castsEveryStep = 0, castsCoasting = 0, promises = 0, fell = 0;
+    double worst = 0.0;
+    for (int round = 0; round < 24; ++round) {
+        const bool tiled = round % 2 == 1;
+        const StaticWorld world = tiled ? tiledScene(random, 7) : randomScene(random);
+        for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
+                                     PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
+                                     PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
+            ProjectileSettings settings;
+            settings.method = ProjectileMethod::Engine;
+            settings.engine = engineProfile(engine);
+            settings.engine.timestep = static_cast<float>(1.0 / (30 + 30 * random.below(4)));
+            settings.engine.triangleMesh = tiled && random.below(2) == 1;
+            settings.step = settings.engine.timestep;
+            settings.radius = static_cast<float>(random.uniform(0.05, 0.3));
+            settings.restitution = static_cast<float>(random.uniform(0.0, 0.6));
+            settings.friction = static_cast<float>(random.uniform(0, 0.6));
+            // Low, fast throws: most of the 4 s is rolling and sliding.
+            const RVec3 start(random.uniform(-1, 1), random.uniform(0.3, 1), random.uniform(-1, 1));
+            const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(2, 9);
+            const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(-2, 2)),
+                                static_cast<float>(speed * std::sin(heading)));
+            const float time = 4.0f;
+            CountingWorld plain(world, true, false), coasting(world, true, true);
+            std::vector<TrajectoryPoint> a(600), b(600);
+            ProjectileResult ra, rb;
+            ASSERT_EQ(predictProjectile(start, velocity, time, settings, &plain, a, ra), Status::Ok);
+            ASSERT_EQ(predictProjectile(start, velocity, time, settings, &coasting, b, rb), Status::Ok);
+            ASSERT_EQ(ra.trajectorySize, rb.trajectorySize);
+            for (std::size_t i = 0; i < ra.trajectorySize; ++i) {
+                const double gap = glm::length(glm::dvec3(a[i].position) - glm::dvec3(b[i].position));
+                worst = std::max(worst, gap);
+                // The plane's offset and normal come from a cast's float hit (1e-7 m); the steps
+                // carry such differences along without growing them past 1e-5 m in 4 s.
+                ASSERT_LT(gap, 1e-5) << engineName(engine) << " round " << round << " point " << i;
+                ASSERT_EQ(a[i].event, b[i].event) << engineName(engine) << " round " << round << " point " << i;
+            }
+            EXPECT_EQ(ra.bounces, rb.bounces) << engineName(engine) << " round " << round;
+            castsEveryStep += plain.casts;
+            castsCoasting += coasting.casts + coasting.planeQueries;
+            promises += coasting.planePromises;
+            fell += ra.position.y < -1.0f ? 1 : 0;
+        }
+    }
+    std::printf("[ contact coasting ] %zu queries against %zu casting every step, %zu promises, %zu balls off the "
+                "tiles, largest difference %.2e m\n",
+                castsCoasting, castsEveryStep, promises, fell, worst);
+    EXPECT_GT(fell, 0u) << "no ball left the tiled floor: its border was never tested";
+    // Most of these steps roll or slide in the open: contact coasting must save at least a third
+    // of the queries.
+    EXPECT_LT(static_cast<double>(castsCoasting), 0.67 * static_cast<double>(castsEveryStep))
+        << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
+}
+
+// PlaneRegionTester's answers on shapes whose cover is known by construction.
+TEST(StaticWorldPlane, IsOnlyPlaneKnowsHolesBordersAndNeighbours) {
+    PlaneRegion region;
+    region.capsule.origin = RVec3(0.3f, 0.1f, 0.2f);
+    region.capsule.displacement = Vec3(1.5f, 0.0f, 0.4f);
+    region.capsule.radius = 0.3f;
+    region.point = RVec3(0, 0, 0);
+    region.normal = Vec3(0, 1, 0);
+    const auto tiles = [](int half, int holeX, int holeZ) {
+        StaticWorld world;
+        for (int x = -half; x < half; ++x) {
+            for (int z = -half; z < half; ++z) {
+                const RVec3 a(x, 0, z), b(x + 1, 0, z), c(x + 1, 0, z + 1), d(x, 0, z + 1);
+                if (x == holeX && z == holeZ) {
+                    EXPECT_EQ(world.add(Triangle{a, d, c}), Status::Ok);  // half a tile: a hole
+                    continue;
+                }
+                EXPECT_EQ(world.add(Triangle{a, c, b}), Status::Ok);
+                EXPECT_EQ(world.add(Triangle{a, d, c}), Status::Ok);
+            }
+        }
+        return world;
+    };
+    EXPECT_TRUE(tiles(4, 100, 100).isOnlyPlane(region)) << "a whole tiled floor";
+    EXPECT_FALSE(tiles(4, 1, 0).isOnlyPlane(region)) << "a missing triangle under the path";
+    EXPECT_TRUE(tiles(4, -3, -3).isOnlyPlane(region)) << "a missing triangle far from the path";
+    EXPECT_FALSE(tiles(2, 100, 100).isOnlyPlane(region)) << "the floor's border (x = 2) within the region";
+    region.point = RVec3(0, 0.001f, 0);
+    EXPECT_FALSE(tiles(4, 100, 100).isOnlyPlane(region)) << "a plane 1 mm above the tiles";
+    region.point = RVec3(0, 0, 0);
+
+    StaticWorld world = tiles(4, 100, 100);
+    EXPECT_EQ(world.add(OrientedBox{RVec3(0.3, 0.5, 1.5), Vec3(2, 0.5, 0.1)}), Status::Ok);
+    EXPECT_TRUE(world.isOnlyPlane(region)) << "a wall 0.8 m beside the path, out of the region";
+    region.capsule.radius = 0.9f;
+    EXPECT_FALSE(world.isOnlyPlane(region)) << "the same wall within a wider region";
+    region.capsule.radius = 0.3f;
+
+    // A floor plane, a box whose top face is the floor, materials.
+    StaticWorld plane;
+    ASSERT_EQ(plane.add(Plane{Vec3(0, 1, 0), 0}, SurfaceMaterial{0.5f, 0.2f}), Status::Ok);
+    EXPECT_FALSE(plane.isOnlyPlane(region)) << "the plane's material differs";
+    region.restitution = 0.5f;
+    region.friction = 0.2f;
+    EXPECT_TRUE(plane.isOnlyPlane(region));
+    region.restitution = region.friction = -1.0f;
+    StaticWorld slab;
+    ASSERT_EQ(slab.add(OrientedBox{RVec3(1, -1, 0.5), Vec3(3, 1, 3)}), Status::Ok);
+    EXPECT_TRUE(slab.isOnlyPlane(region)) << "a box's top face under the whole region";
+    StaticWorld narrow;
+    ASSERT_EQ(narrow.add(OrientedBox{RVec3(1, -1, 0.3), Vec3(3, 1, 0.4)}), Status::Ok);
+    EXPECT_FALSE(narrow.isOnlyPlane(region)) << "a box whose top face ends inside the region";
+    StaticWorld ball = tiles(4, 100, 100);
+    ASSERT_EQ(ball.add(Sphere{RVec3(1, 0.3, 0.4), 0.2f}), Status::Ok);
+    EXPECT_FALSE(ball.isOnlyPlane(region)) << "a sphere on the path";
+    StaticWorld tilted;
+    ASSERT_EQ(tilted.add(Triangle{RVec3(-5, 0, -5), RVec3(5, 0.01, 5), RVec3(5, 0, -5)}), Status::Ok);
+    ASSERT_EQ(tilted.add(Triangle{RVec3(-5, 0, -5), RVec3(-5, 0, 5), RVec3(5, 0.01, 5)}), Status::Ok);
+    EXPECT_FALSE(tilted.isOnlyPlane(region)) << "a floor that rises 1 cm across 14 m";
+    StaticWorld loose(StaticWorldSettings{1e-3f});
+    ASSERT_EQ(loose.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    EXPECT_FALSE(loose.isOnlyPlane(region)) << "a world whose surface tolerance is not the default";
 }
 
 // mayTouch's promise, checked against the casts: when it says no surface comes within the

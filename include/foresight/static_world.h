@@ -6,6 +6,7 @@
 
 #include <foresight/world.h>
 
+#include <array>
 #include <limits>
 #include <span>
 #include <vector>
@@ -144,6 +145,65 @@ bool mayTouch(const SegmentCast& capsule, const OrientedBox& box);
 /// See mayTouch(const SegmentCast&, const Plane&). The bounds, then the triangle's plane.
 bool mayTouch(const SegmentCast& capsule, const Triangle& triangle);
 
+/// The test behind CollisionWorld::isOnlyPlane, offered one shape at a time, for worlds that find
+/// their candidate shapes themselves (as ClosestHitCaster is for casts). A shape that reaches
+/// into the region must lie in the plane with the region's material: an infinite plane covers
+/// the region at once, a box when the region's cross-section lies inside its face (and the box
+/// is deeper than the region reaches), triangles when every one of their edges that crosses the
+/// cross-section is shared with a triangle on its other side (so no hole or border lies there).
+/// Spheres and other surfaces fail it. No allocation; at most kMaxEdges edges near the region
+/// (then it fails: the caller takes smaller steps).
+/// @code
+///   PlaneRegionTester tester(region);
+///   for (const Triangle& t : candidates) if (!tester.failed()) tester.test(t);
+///   const bool only = tester.result();
+/// @endcode
+class PlaneRegionTester {
+public:
+    /// Edges crossing the region kept at most (3 per triangle).
+    static constexpr int kMaxEdges = 192;
+
+    /// Prepares `region` (its normal is normalised; a zero or non-finite one fails).
+    explicit PlaneRegionTester(const PlaneRegion& region);
+
+    /// Offers one shape with its own material (negative values: none).
+    void test(const Plane& plane, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Sphere& sphere, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const OrientedBox& box, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Triangle& triangle, const SurfaceMaterial& material = {});
+
+    /// True once a shape has ruled the region out: the rest need not be offered.
+    bool failed() const { return mFailed; }
+
+    /// Whether the shapes offered make the region the plane alone, covered.
+    bool result() const;
+
+private:
+    struct Edge {
+        glm::dvec3 from{0.0}, to{0.0};  // ordered: from < to
+        int side = 0;                   // the side of the edge its triangle lies on
+    };
+    bool sameMaterial(const SurfaceMaterial& material) const;
+    void addEdge(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w);
+
+    SegmentCast mCapsule;             // the region, as given
+    glm::dvec3 mA{0.0}, mB{0.0};      // the capsule's segment
+    double mRadius = 0.0;             // the capsule's radius, grown for rounding
+    glm::dvec3 mNormal{0.0, 1.0, 0.0};
+    double mDistance = 0.0;           // dot(normal, x) on the plane
+    double mTolerance = 0.0;          // how far from the plane a vertex still lies in it [m]
+    glm::dvec3 mAnchor{0.0};          // a point of the cross-section: the start's projection
+    SurfaceMaterial mMaterial;
+    bool mFailed = false;
+    bool mCovered = false;            // a plane or a box covers the cross-section
+    bool mAnchored = false;           // a triangle holds the anchor
+    mutable std::array<Edge, kMaxEdges> mEdges{};
+    int mEdgeCount = 0;
+};
+
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
     /// A cast that starts this close behind a one-sided surface and moves into it still hits
@@ -186,6 +246,10 @@ public:
 
     /// Every shape through the conservative mayTouch tests above (a linear scan).
     bool mayTouch(const SegmentCast& capsule) const override;
+
+    /// Every shape through PlaneRegionTester (a linear scan). False unless the world has the
+    /// default surface tolerance (the promise is about a plane with that tolerance).
+    bool isOnlyPlane(const PlaneRegion& region) const override;
 
     /// The shapes as added (normalised).
     std::span<const Plane> planes() const { return mPlanes; }

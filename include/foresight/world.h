@@ -31,6 +31,18 @@ struct CastHit {
     float friction = -1.0f;
 };
 
+/// A region of a plane, for CollisionWorld::isOnlyPlane: the points within `capsule.radius` of
+/// the segment from `capsule.origin` to `capsule.origin + capsule.displacement`, and the plane
+/// through `point` with unit normal `normal` (towards the free side) that should be the only
+/// surface there, with the material `restitution`, `friction` (as CastHit reports them).
+struct PlaneRegion {
+    SegmentCast capsule;       ///< the region [Units: m].
+    RVec3 point{0};            ///< a point of the plane [Units: m].
+    Vec3 normal{0, 1, 0};      ///< the plane's unit normal, pointing to the free side.
+    float restitution = -1.0f; ///< the material the plane's hits report (negative: none).
+    float friction = -1.0f;    ///< see restitution.
+};
+
 /// What a world must answer. Rules every implementation should follow (the built-in one does):
 /// - Report the closest hit with a surface the segment enters (`dot(displacement, normal) < 0`).
 /// - A segment that starts on a one-sided surface (within a small tolerance) and moves into it
@@ -56,6 +68,22 @@ public:
     virtual bool mayTouch(const SegmentCast& capsule) const {
         (void)capsule;
         return true;
+    }
+
+    /// Whether, inside `region.capsule`, the world is the plane of `region` and nothing else: every
+    /// surface that reaches into the capsule lies in that plane and has the region's material, and
+    /// together they cover the plane's whole cross-section with the capsule. True is a promise: a
+    /// castSegment whose swept sphere stays inside the capsule and starts clear of the plane (its
+    /// centre at least its radius in front of it) gets the answer that a world holding only that
+    /// one-sided plane (with StaticWorldSettings' default surface tolerance) would give, up to the
+    /// rounding of the shapes' own coordinates. (A sphere that starts sunk into a floor of
+    /// triangles meets the edges they share; the plane has none.) False may be a false alarm;
+    /// it only costs speed. ProjectileMethod::Engine asks it to take many steps of a sphere
+    /// rolling or sliding on a floor with one query instead of several casts per step. The
+    /// default answers false (the world cannot tell: callers then cast step by step).
+    virtual bool isOnlyPlane(const PlaneRegion& region) const {
+        (void)region;
+        return false;
     }
 };
 

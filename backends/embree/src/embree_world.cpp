@@ -640,6 +640,69 @@ bool touchCallback(RTCPointQueryFunctionArguments* args) {
 
 }  // namespace
 
+namespace {
+
+struct PlaneQuery {
+    const Triangle* triangles = nullptr;
+    PlaneRegionTester* tester = nullptr;
+};
+
+bool planeCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<PlaneQuery*>(args->userPtr);
+    q->tester->test(q->triangles[args->primID]);
+    if (!q->tester->failed()) return false;
+    args->query->radius = 0.0f;  // ruled out: the traversal may stop
+    return true;
+}
+
+// A point query holding the capsule: a sphere around its middle, grown by the centre's rounding
+// to float and a margin. False when the capsule lies beyond Embree's float range.
+bool capsuleQuery(const SegmentCast& capsule, RTCPointQuery& query) {
+    const DVec3 a = toD(capsule.origin), d(capsule.displacement);
+    const DVec3 centre = a + 0.5 * d;
+    if (!std::isfinite(centre.x + centre.y + centre.z)) return false;
+    const double extent = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)}) + glm::length(d);
+    if (!(extent < kEmbreeReach)) return false;
+    query.x = static_cast<float>(centre.x);
+    query.y = static_cast<float>(centre.y);
+    query.z = static_cast<float>(centre.z);
+    query.time = 0.0f;
+    const double rounding = glm::length(DVec3(query.x, query.y, query.z) - centre);
+    const double magnitude = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    query.radius = floatUp((0.5 * glm::length(d) + std::max(0.0, static_cast<double>(capsule.radius)) + rounding +
+                            1e-4 + 1e-6 * magnitude) * (1.0 + 1e-6));
+    return true;
+}
+
+}  // namespace
+
+bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
+    if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
+    PlaneRegionTester tester(region);
+    const StaticWorld& p = mPrimitives;
+    for (std::size_t i = 0; i < p.planes().size() && !tester.failed(); ++i) tester.test(p.planes()[i], p.planeMaterials()[i]);
+    for (std::size_t i = 0; i < p.spheres().size() && !tester.failed(); ++i)
+        tester.test(p.spheres()[i], p.sphereMaterials()[i]);
+    for (std::size_t i = 0; i < p.boxes().size() && !tester.failed(); ++i) tester.test(p.boxes()[i], p.boxMaterials()[i]);
+    for (std::size_t i = 0; i < p.triangles().size() && !tester.failed(); ++i)
+        tester.test(p.triangles()[i], p.triangleMaterials()[i]);
+    const Impl* impl = mImpl.get();
+    if (tester.failed() || !impl || impl->triangles.empty()) return tester.result();
+    if (!impl->committed || !impl->scene) {
+        for (std::size_t i = 0; i < impl->triangles.size() && !tester.failed(); ++i) tester.test(impl->triangles[i]);
+        return tester.result();
+    }
+    RTCPointQuery query;
+    if (!capsuleQuery(region.capsule, query)) return false;
+    PlaneQuery q;
+    q.triangles = impl->triangles.data();
+    q.tester = &tester;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(impl->scene, &query, &context, planeCallback, &q);
+    return tester.result();
+}
+
 bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
     if (mPrimitives.mayTouch(capsule)) return true;
     const Impl* impl = mImpl.get();
@@ -649,24 +712,11 @@ bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
             if (foresight::mayTouch(capsule, t)) return true;
         return false;
     }
-    const DVec3 a = toD(capsule.origin), d(capsule.displacement);
-    const DVec3 centre = a + 0.5 * d;
-    if (!std::isfinite(centre.x + centre.y + centre.z)) return true;
-    const double extent = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)}) + glm::length(d);
-    if (!(extent < kEmbreeReach)) return true;  // beyond Embree's float range: "maybe"
+    RTCPointQuery query;
+    if (!capsuleQuery(capsule, query)) return true;  // beyond Embree's float range: "maybe"
     TouchQuery q;
     q.triangles = impl->triangles.data();
     q.capsule = capsule;
-    RTCPointQuery query;
-    query.x = static_cast<float>(centre.x);
-    query.y = static_cast<float>(centre.y);
-    query.z = static_cast<float>(centre.z);
-    query.time = 0.0f;
-    // A sphere holding the capsule, grown by the centre's rounding to float and a margin.
-    const double rounding = glm::length(DVec3(query.x, query.y, query.z) - centre);
-    const double magnitude = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
-    query.radius = floatUp((0.5 * glm::length(d) + std::max(0.0, static_cast<double>(capsule.radius)) + rounding +
-                            1e-4 + 1e-6 * magnitude) * (1.0 + 1e-6));
     RTCPointQueryContext context;
     rtcInitPointQueryContext(&context);
     rtcPointQuery(impl->scene, &query, &context, touchCallback, &q);
