@@ -481,7 +481,12 @@ private:
         // Is the surface still under the new position? (An edge: fly off.)
         if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
             const DVec3 support = toD(hit.normal);
+            // The probe's hit point is rounded to Real, which may leave it a hair behind the
+            // surface: put the body a skin in front, as after an impact (arriveAt). From behind,
+            // the next chord would slip through the crack where this surface meets the next
+            // one in a concave edge (a triangle met from behind beyond its edge is not hit).
             mBody.position = toD(hit.position);
+            mBody.position += support * skinDistance(mBody.position);
             mContactPoint = mBody.position;
             if (glm::dot(support, n) < 1.0 - 1e-12) {
                 mContactNormal = support;
