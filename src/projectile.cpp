@@ -4,6 +4,7 @@
 #include "internal.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -420,9 +421,50 @@ private:
         DVec3 p = backedOff(p0 + v0 * s + 0.5 * mGravity * s * s, v0 + mGravity * s);
         p -= n * glm::dot(n, p - surfacePoint);  // onto the surface the world reported
         p += n * skinDistance(p);                 // and surely on its front side
+        keepInFront(p, n, surfacePoint);
         mBody = {p, v0 + mGravity * s};
         mTime += s;
         impact(n, s);
+    }
+
+    // In a crease or a corner (two or three surfaces meeting in a concave edge) the body
+    // rattles from one surface to the next, each impact a millimetre or less from the one
+    // before. Put on the front of the surface it hit, it may lie a hair behind the one it hit
+    // before (their planes cross there), and a chord that starts behind a two-sided triangle
+    // leaves through it. So the new position is put in front of the surfaces of the last
+    // impacts and of the slide too, where it lies within 5 cm of where it touched them
+    // and behind them by no more than rounding (0.1 mm): a few rounds, as planes meeting in a
+    // concave corner push it into their common front. A surface it has really passed (a ledge
+    // it fell off) is farther or deeper and left alone.
+    void keepInFront(DVec3& p, const DVec3& n, const DVec3& surfacePoint) const {
+        for (int round = 0; round < 4; ++round) {
+            bool moved = false;
+            // `point` on the surface's plane: a skin in front; a body position that was put a
+            // skin in front before: not behind it (a skin more each time would ratchet the body
+            // off a floor it slides on).
+            const auto push = [&](const DVec3& normal, const DVec3& point, double skin) {
+                if (glm::length(p - point) > kRecentReach) return;
+                const double height = glm::dot(normal, p - point);
+                if (height >= skin || height < -1e-4) return;
+                p += normal * (skin - height);
+                moved = true;
+            };
+            push(n, surfacePoint, skinDistance(p));
+            for (int i = 0; i < mRecentCount; ++i) push(mRecent[i].normal, mRecent[i].point, 0.0);
+            if (mHadContact) push(mContactNormal, mContactPoint, 0.0);
+            if (!moved) return;
+        }
+    }
+
+    // Remembers the surface of an impact for keepInFront (one entry per surface, the oldest
+    // forgotten first).
+    void rememberSurface(const DVec3& n, const DVec3& point) {
+        int slot = mRecentCount;
+        for (int i = 0; i < mRecentCount; ++i)
+            if (glm::dot(mRecent[i].normal, n) > 1.0 - 1e-9) slot = i;
+        if (slot == kRecentSurfaces) slot = mRecentOldest++ % kRecentSurfaces;
+        else if (slot == mRecentCount) ++mRecentCount;
+        mRecent[static_cast<std::size_t>(slot)] = {n, point};
     }
 
     // Sliding on the contact surface for up to h seconds. Returns true when h was covered.
@@ -469,6 +511,7 @@ private:
             DVec3 p = backedOff(p0 + v0 * s + 0.5 * a * s * s, v0 + a * s);
             p -= found.normal * std::min(0.0, glm::dot(found.normal, p - found.surfacePoint));
             p += found.normal * skinDistance(p);
+            keepInFront(p, found.normal, found.surfacePoint);
             mBody = {p, v0 + a * s};
             mTime += s;
             impact(found.normal, s);
@@ -487,6 +530,7 @@ private:
             // one in a concave edge (a triangle met from behind beyond its edge is not hit).
             mBody.position = toD(hit.position);
             mBody.position += support * skinDistance(mBody.position);
+            keepInFront(mBody.position, support, toD(hit.position));
             mContactPoint = mBody.position;
             if (glm::dot(support, n) < 1.0 - 1e-12) {
                 mContactNormal = support;
@@ -550,6 +594,7 @@ private:
         }
         mBody.velocity = v;
         mHasLastSurface = !mInContact;
+        rememberSurface(n, mBody.position);
         mHadImpact = true;
         mLastSurfaceNormal = n;
         mLastSurfacePoint = mBody.position;
@@ -571,6 +616,17 @@ private:
     DVec3 mContactNormal{0.0};
     DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
     bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
+    // The surfaces of the last impacts (keepInFront), and how far from where it touched one the
+    // body still heeds it [m].
+    static constexpr int kRecentSurfaces = 4;
+    static constexpr double kRecentReach = 0.05;
+    struct Touched {
+        DVec3 normal{0.0};
+        DVec3 point{0.0};
+    };
+    std::array<Touched, kRecentSurfaces> mRecent{};
+    int mRecentCount = 0;
+    unsigned mRecentOldest = 0;
     bool mHadContact = false;  // mContactNormal and mContactPoint are set
     bool mAtRest = false;
     bool mStopped = false;

@@ -408,16 +408,18 @@ bool randomMeshThrow(ftest::Random& r, bool allowEngine, MeshThrow& t) {
 // 1. No tunnelling through closed meshes.
 
 // Known failures at the default seed (FORESIGHT_PROPERTY_CASE=<index> prints the trajectory):
-// - Exact, points in a box's corner: 1522, 1782, 3342, 3973. The body rattles or slides where
-//   two or three faces meet (many bounces a few ms apart, under the 8-in-a-row stall rule) and
-//   leaves through the edge by 0.3 to 10 mm. Present before the sliding fix of this change too.
+// - Exact, a point: 1802. It slides along a box's face into the edge with the next face (a
+//   concave edge); the slide's probe finds that face beyond the edge, the slide carries on
+//   on it from a hair behind it, and the point leaves through the edge (0.5 mm out).
 // - Engine: 1406 (Bullet, a 0.78 m sphere in a 3.8 m wide box, 32 mm out after 4 bounces) and
 //   2524 (Rapier, 27 mm out after 1 bounce). Not investigated: they may be what the engines do
 //   (docs/engines.md: Bullet's split impulse can lift a ball over a wall).
-// The long run (200 000 cases) finds 317 more of the same kinds (308 in boxes, 9 in
-// icospheres): Exact 186 points and 50 spheres, Stepped 10 points, Engine 63 Bullet, 7 PhysX,
-// 1 Rapier; 115 end under 1 mm outside, 131 under 1 cm, 71 further. It fails until they are fixed.
-const KnownFailures kKnownTunnelling = {1406, 1522, 1782, 2524, 3342, 3973};
+// The long run (200 000 cases) finds 106 of the same kinds: Exact 10 points and 13 spheres
+// (rattling or sliding into a box's edges and corners), Stepped 10 points (its loop has no
+// step back before casting on from a hit point), Engine 64 Bullet, 7 PhysX, 2 Rapier; 14 end
+// under 1 mm outside, 34 under 1 cm, 58 further. (Before keepInFront in the Exact method: 323,
+// of them Exact 186 points and 50 spheres.) It fails until they are fixed.
+const KnownFailures kKnownTunnelling = {1406, 1802, 2524};
 
 TEST(Property, NoTunnelling) {
     std::vector<TrajectoryPoint> points(8192);
