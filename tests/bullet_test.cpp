@@ -652,6 +652,110 @@ TEST(BulletWorld, CollisionFilter) {
 }
 
 // BulletScene refuses what StaticWorld refuses, with the same Status, and adds nothing then.
+// mayTouch and isOnlyPlane find their candidates with Bullet's broadphase (and a mesh's own
+// BVH) and test them as StaticWorld does: the same answers as StaticWorld on the same shapes,
+// and the promises hold against BulletWorld's own casts. The yard (planes, spheres, boxes, a
+// mesh), and a floor of 1 m tiles with a hole and a box on it (a Bullet mesh: isOnlyPlane makes
+// no promise there, Bullet's own sweep answers for it).
+TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
+    TwinWorld yard;
+    buildYard(yard);
+    TwinWorld tiles;
+    for (int x = -4; x < 4; ++x) {
+        for (int z = -4; z < 4; ++z) {
+            const RVec3 a(x, 0, z), b(x + 1, 0, z), c(x + 1, 0, z + 1), d(x, 0, z + 1);
+            tiles.mesh.push_back(Triangle{a, d, c});
+            if (x != 1 || z != 2) tiles.mesh.push_back(Triangle{a, c, b});  // a hole at (1, 2)
+        }
+    }
+    tiles.finishMesh();
+    tiles.add(OrientedBox{RVec3(-2, 0.5f, -2), Vec3(0.5f, 0.5f, 0.5f), rotation(0.3, DVec3(0, 1, 0))});
+    StaticWorld floor;
+    ASSERT_EQ(floor.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    Random random(515);
+    int touchAgree = 0, touchCases = 0, planeAgree = 0, planeCases = 0, yardPlaneCases = 0, promises = 0, clear = 0;
+    for (TwinWorld* w : {&yard, &tiles}) {
+        const BulletWorld bullet(w->scene.world());
+        for (int i = 0; i < 4000; ++i) {
+            SegmentCast capsule;
+            const bool onFloor = w == &tiles || i % 2 == 0;
+            const DVec3 a = onFloor ? random.inBox(DVec3(-5, 0.05, -5), DVec3(5, 0.3, 5))
+                                    : random.inBox(DVec3(-10, 0, -10), DVec3(10, 8, 10));
+            const DVec3 d = random.direction() * random.uniform(0.0, 2.0) * DVec3(1, onFloor ? 0.05 : 1, 1);
+            capsule.origin = toR(a);
+            capsule.displacement = toF(d);
+            capsule.radius = static_cast<float>(random.uniform(0.05, 0.6));
+            const bool touch = bullet.mayTouch(capsule);
+            ++touchCases;
+            touchAgree += touch == w->reference.mayTouch(capsule) ? 1 : 0;
+            if (!touch) {
+                ++clear;
+                // The promise: swept spheres inside the capsule hit nothing.
+                for (int k = 0; k < 8; ++k) {
+                    SegmentCast inside;
+                    const DVec3 from = a + d * random.uniform(0, 1) + random.direction() * random.uniform(0, 0.3) *
+                                                                       static_cast<double>(capsule.radius);
+                    const DVec3 to = a + d * random.uniform(0, 1);
+                    inside.origin = toR(from);
+                    inside.displacement = toF(to - from);
+                    inside.radius = capsule.radius * 0.5f;
+                    CastHit hit;
+                    ASSERT_FALSE(bullet.castSegment(inside, hit)) << "case " << i;
+                }
+            }
+            if (onFloor) {
+                foresight::PlaneRegion region;
+                region.capsule = capsule;
+                region.point = RVec3(0, 0, 0);
+                region.normal = Vec3(0, 1, 0);
+                const bool only = bullet.isOnlyPlane(region);
+                ++planeCases;
+                promises += only ? 1 : 0;
+                // The tiled floor is a Bullet mesh: no promise over it.
+                if (w == &tiles) {
+                    EXPECT_FALSE(only) << "case " << i;
+                } else {
+                    ++yardPlaneCases;
+                    planeAgree += only == w->reference.isOnlyPlane(region) ? 1 : 0;
+                }
+                if (only) {
+                    // The promise: swept spheres inside the capsule that start clear of the
+                    // floor get the floor plane's answers.
+                    for (int k = 0; k < 8; ++k) {
+                        const double radius = random.uniform(0.01, 0.5) * static_cast<double>(capsule.radius);
+                        DVec3 from = a + d * random.uniform(0, 1) + random.direction() * 0.3 * radius;
+                        from.y = std::max(from.y, radius + 1e-4);
+                        const DVec3 to = a + d * random.uniform(0, 1) + DVec3(0, random.uniform(-0.5, 0.1), 0) * radius;
+                        SegmentCast inside;
+                        inside.origin = toR(from);
+                        inside.displacement = toF(to - from);
+                        inside.radius = static_cast<float>(radius);
+                        const double farthest = static_cast<double>(capsule.radius) - 1e-3;
+                        if (glm::length(from - a) > farthest && glm::length(from - (a + d)) > farthest) continue;
+                        CastHit hit, planeHit;
+                        const bool hits = bullet.castSegment(inside, hit);
+                        ASSERT_EQ(hits, floor.castSegment(inside, planeHit)) << "case " << i << " cast " << k;
+                        if (hits) {
+                            ASSERT_NEAR(hit.fraction, planeHit.fraction, 1e-4) << "case " << i << " cast " << k;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    std::printf("[ bullet regions ] mayTouch: %d of %d as StaticWorld (%d clear); isOnlyPlane on the yard: %d of "
+                "%d as StaticWorld (%d promises)\n",
+                touchAgree, touchCases, clear, planeAgree, yardPlaneCases, promises);
+    // The shapes are the same floats in both worlds. StaticWorld offers a box whose bounds in the
+    // box's frame meet the capsule's; Bullet one whose world bounds do: each set holds boxes the
+    // other leaves out (rarely: a capsule that passes a box's corner).
+    EXPECT_GE(touchAgree, touchCases - touchCases / 200);
+    EXPECT_GE(planeAgree, yardPlaneCases - yardPlaneCases / 200);
+    EXPECT_GT(promises, yardPlaneCases / 4);
+    EXPECT_GT(planeCases, yardPlaneCases);
+    EXPECT_GT(clear, touchCases / 20);
+}
+
 TEST(BulletScene, RefusesInvalidShapes) {
     BulletScene scene;
     StaticWorld reference;

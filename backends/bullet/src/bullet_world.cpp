@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 FORESIGHT_NAMESPACE_BEGIN
 
@@ -171,7 +172,152 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
     }
 };
 
+// The shapes of the objects whose bounds meet an axis-aligned box (Bullet's broadphase, with
+// the casts' filter rule), as foresight's: spheres, boxes and planes as BroadphaseVisitor
+// reads them, a concave shape's triangles inside the box one by one (in world coordinates),
+// and `other` for any other shape. `Visit` returns false to stop.
+template <class Visit>
+struct ShapeVisitor final : btBroadphaseAabbCallback {
+    const BulletWorldSettings* settings = nullptr;
+    btVector3 lo, hi;  // the box, world coordinates
+    Visit* visit = nullptr;
+    bool stopped = false;
+
+    struct Triangles final : btTriangleCallback {
+        ShapeVisitor* owner = nullptr;
+        btTransform transform;
+        void processTriangle(btVector3* t, int, int) override {
+            if (owner->stopped) return;
+            const Triangle triangle{toVec<Real>(transform * t[0]), toVec<Real>(transform * t[1]),
+                                    toVec<Real>(transform * t[2])};
+            if (!(*owner->visit)(triangle)) owner->stopped = true;
+        }
+    };
+
+    bool process(const btBroadphaseProxy* proxy) override {
+        if (stopped) return false;
+        if ((proxy->m_collisionFilterGroup & settings->collisionFilterMask) == 0 ||
+            (settings->collisionFilterGroup & proxy->m_collisionFilterMask) == 0)
+            return true;
+        const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+        const btCollisionShape* shape = object->getCollisionShape();
+        const btTransform& transform = object->getWorldTransform();
+        bool go = true;
+        switch (shape->getShapeType()) {
+        case SPHERE_SHAPE_PROXYTYPE: {
+            const auto* sphere = static_cast<const btSphereShape*>(shape);
+            go = (*visit)(Sphere{toVec<Real>(transform.getOrigin()), static_cast<float>(sphere->getRadius())});
+            break;
+        }
+        case BOX_SHAPE_PROXYTYPE: {
+            const auto* b = static_cast<const btBoxShape*>(shape);
+            const btQuaternion r = transform.getRotation();
+            OrientedBox box;
+            box.center = toVec<Real>(transform.getOrigin());
+            box.halfExtents = toVec<float>(b->getHalfExtentsWithMargin());
+            box.orientation.w = static_cast<float>(r.w());
+            box.orientation.x = static_cast<float>(r.x());
+            box.orientation.y = static_cast<float>(r.y());
+            box.orientation.z = static_cast<float>(r.z());
+            go = (*visit)(box);
+            break;
+        }
+        case STATIC_PLANE_PROXYTYPE: {
+            const auto* p = static_cast<const btStaticPlaneShape*>(shape);
+            const btVector3 normal = transform.getBasis() * p->getPlaneNormal();
+            const btScalar distance = p->getPlaneConstant() + normal.dot(transform.getOrigin());
+            go = (*visit)(Plane{toVec<float>(normal), static_cast<Real>(distance)});
+            break;
+        }
+        default:
+            if (shape->isConcave()) {
+                // The box in the shape's frame: the bounds of its corners taken there.
+                const btTransform inverse = transform.inverse();
+                btVector3 localLo(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT), localHi = -localLo;
+                for (int corner = 0; corner < 8; ++corner) {
+                    const btVector3 c((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
+                                      (corner & 4) ? hi.z() : lo.z());
+                    const btVector3 l = inverse * c;
+                    localLo.setMin(l);
+                    localHi.setMax(l);
+                }
+                Triangles triangles;
+                triangles.owner = this;
+                triangles.transform = transform;
+                static_cast<const btConcaveShape*>(shape)->processAllTriangles(&triangles, localLo, localHi);
+            } else {
+                go = (*visit)(shape);  // another shape: the visitor decides
+            }
+            break;
+        }
+        if (!go) stopped = true;
+        return !stopped;
+    }
+};
+
+// The bounds of a capsule, grown by its radius and a margin for the rounding to btScalar.
+template <class Visit>
+bool visitNear(const btCollisionWorld& world, const BulletWorldSettings& settings, const SegmentCast& capsule,
+               Visit visit) {
+    const glm::dvec3 a(static_cast<double>(capsule.origin.x), static_cast<double>(capsule.origin.y),
+                       static_cast<double>(capsule.origin.z));
+    const glm::dvec3 b = a + glm::dvec3(capsule.displacement);
+    const double magnitude = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y),
+                                       std::abs(b.z), 1.0});
+    const double grow = std::max(0.0, static_cast<double>(capsule.radius)) + 1e-4 +
+                        8.0 * magnitude * static_cast<double>(std::numeric_limits<btScalar>::epsilon());
+    if (!std::isfinite(magnitude + grow) || magnitude > 1e15) return false;
+    ShapeVisitor<Visit> visitor;
+    visitor.settings = &settings;
+    visitor.lo = toBt(glm::min(a, b) - grow);
+    visitor.hi = toBt(glm::max(a, b) + grow);
+    visitor.visit = &visit;
+    btBroadphaseInterface* broadphase = const_cast<btBroadphaseInterface*>(world.getBroadphase());
+    broadphase->aabbTest(visitor.lo, visitor.hi, visitor);
+    return true;
+}
+
 }  // namespace
+
+bool BulletWorld::mayTouch(const SegmentCast& capsule) const {
+    // Bullet's own sphere sweep against a mesh stops up to about 1 mm before the surface (see
+    // castSegment): its triangles are tested against a capsule 2 mm wider.
+    SegmentCast wider = capsule;
+    wider.radius = std::max(0.0f, capsule.radius) + 2e-3f;
+    bool touched = false;
+    const bool visited = visitNear(*mWorld, mSettings, wider, [&](const auto& shape) {
+        using Shape = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<Shape, const btCollisionShape*>)
+            touched = true;  // a shape foresight does not test: maybe
+        else if constexpr (std::is_same_v<Shape, Triangle>)
+            touched = foresight::mayTouch(wider, shape);
+        else
+            touched = foresight::mayTouch(capsule, shape);
+        return !touched;
+    });
+    return touched || !visited;  // beyond btScalar's range: maybe
+}
+
+bool BulletWorld::isOnlyPlane(const PlaneRegion& region) const {
+    if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
+    PlaneRegionTester tester(region);
+    bool other = false;
+    // Meshes are answered by Bullet's own sweep (1 mm and a few degrees off the exact hit): no
+    // promise where one reaches in; nor where any other shape foresight does not test does.
+    SegmentCast wider = region.capsule;
+    wider.radius = std::max(0.0f, wider.radius) + 2e-3f;
+    const bool visited = visitNear(*mWorld, mSettings, wider, [&](const auto& shape) {
+        using Shape = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<Shape, const btCollisionShape*>)
+            other = true;
+        else if constexpr (std::is_same_v<Shape, Triangle>)
+            other = other || foresight::mayTouch(wider, shape);
+        else
+            tester.test(shape);
+        return !other && !tester.failed();
+    });
+    return visited && !other && tester.result();
+}
 
 bool BulletWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     const glm::dvec3 origin(static_cast<double>(cast.origin.x), static_cast<double>(cast.origin.y),

@@ -90,6 +90,16 @@ public:
         : mWorld(&world), mSettings(settings) {}
 
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override;
+    /// The objects whose bounds meet the capsule's (Bullet's broadphase aabbTest, with the casts'
+    /// filter): planes, spheres, boxes and the triangles of concave shapes (meshes, heightfields;
+    /// 2 mm closer, as Bullet's own sweep stops up to 1 mm early) through foresight's
+    /// conservative tests; any other shape answers "maybe".
+    bool mayTouch(const SegmentCast& capsule) const override;
+    /// The same objects: planes, spheres and boxes through PlaneRegionTester. A concave shape's
+    /// triangle within reach, any other shape, or a surface tolerance other than the default
+    /// answers false: Bullet's own sweeps answer for those, up to 1 mm and a few degrees off
+    /// the plane's exact answers.
+    bool isOnlyPlane(const PlaneRegion& region) const override;
 
     /// The wrapped Bullet world.
     const btCollisionWorld& bulletWorld() const { return *mWorld; }
