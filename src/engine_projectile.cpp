@@ -162,6 +162,19 @@ private:
         return StepOutcome::Next;
     }
 
+    // How far mCoastPositions[1 .. n-1] stray from the chord from mCoastPositions[0] to [n].
+    double chordBend(std::uint64_t n) const {
+        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[n] - a;
+        const double chordSquared = glm::dot(chord, chord);
+        double bend = 0.0;
+        for (std::uint64_t j = 1; j < n; ++j) {
+            const DVec3 offset = mCoastPositions[j] - a;
+            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
+            bend = std::max(bend, glm::length(offset - chord * t));
+        }
+        return bend;
+    }
+
     // What a step changes (contactCoast takes steps on trial and may have to undo them).
     struct Snapshot {
         DVec3 position, velocity, angular, pushVelocity, substepPosition, lastNormal, contactNormal;
@@ -222,7 +235,11 @@ private:
         plane.distance = static_cast<Real>(glm::dot(normal, point));
         const PlaneWorld planeWorld(plane, SurfaceMaterial{surface.restitution, surface.friction});
 
-        const auto sinking = [&](const DVec3& p) { return glm::dot(normal, p - point) < mRadius; };
+        // The largest sphere a step casts from the centre: Rapier's and Box2D's findNearby
+        // casts one grown by the contact reach; it must stay clear of the plane too.
+        const bool grown = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
+        const double clearance = mRadius + (grown ? contactReach() : 0.0);
+        const auto sinking = [&](const DVec3& p) { return glm::dot(normal, p - point) < clearance; };
         if (sinking(mPosition)) return 0;  // see isOnlyPlane below
 
         const Snapshot before = save();
@@ -252,14 +269,8 @@ private:
         // step's travel into it; Jolt's axis probes reach 3 times the contact reach; Rapier's and
         // Box2D's closest-point probes start 0.05 m behind and reach r + reach + 0.1 with a probe
         // sphere as large. Twice the travel, and 0.01 m more.
-        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[taken] - a;
-        const double chordSquared = glm::dot(chord, chord);
-        double bend = 0.0;
-        for (std::uint64_t j = 1; j < taken; ++j) {
-            const DVec3 offset = mCoastPositions[j] - a;
-            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
-            bend = std::max(bend, glm::length(offset - chord * t));
-        }
+        const DVec3 a = mCoastPositions[0];
+        const double bend = chordBend(taken);
         const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
         const double reach = contactReach();
         const double extent = (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) +
@@ -353,14 +364,8 @@ private:
             mCoastPositions[j] = position;
             mCoastVelocities[j] = velocity;
         }
-        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[n] - a;
-        const double chordSquared = glm::dot(chord, chord);
-        double bend = 0.0;
-        for (std::uint64_t j = 1; j < n; ++j) {
-            const DVec3 offset = mCoastPositions[j] - a;
-            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
-            bend = std::max(bend, glm::length(offset - chord * t));
-        }
+        const DVec3 a = mCoastPositions[0];
+        const double bend = chordBend(n);
         SegmentCast capsule;
         capsule.origin = toR(a);
         capsule.displacement = toF(mCoastPositions[n] - toD(capsule.origin));

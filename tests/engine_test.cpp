@@ -352,6 +352,20 @@ private:
     bool mAnswerTouch, mAnswerPlane;
 };
 
+// An engine's profile at 30, 60, 90 or 120 Hz, a sphere of 5 to 30 cm, restitution from
+// `lowestRestitution` to lowestRestitution + 0.6, friction 0 to 0.6.
+ProjectileSettings randomEngineSettings(ftest::Random& random, PhysicsEngine engine, double lowestRestitution) {
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(engine);
+    settings.engine.timestep = static_cast<float>(1.0 / (30 + 30 * random.below(4)));
+    settings.step = settings.engine.timestep;
+    settings.radius = static_cast<float>(random.uniform(0.05, 0.3));
+    settings.restitution = static_cast<float>(random.uniform(lowestRestitution, lowestRestitution + 0.6));
+    settings.friction = static_cast<float>(random.uniform(0, 0.6));
+    return settings;
+}
+
 StaticWorld randomScene(ftest::Random& random) {
     StaticWorld world;
     EXPECT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
@@ -383,14 +397,7 @@ TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
         for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
                                      PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
                                      PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
-            ProjectileSettings settings;
-            settings.method = ProjectileMethod::Engine;
-            settings.engine = engineProfile(engine);
-            settings.engine.timestep = static_cast<float>(1.0 / (30 + 30 * random.below(4)));
-            settings.step = settings.engine.timestep;
-            settings.radius = static_cast<float>(random.uniform(0.05, 0.3));
-            settings.restitution = static_cast<float>(random.uniform(0.2, 0.8));
-            settings.friction = static_cast<float>(random.uniform(0, 0.6));
+            const ProjectileSettings settings = randomEngineSettings(random, engine, 0.2);
             const RVec3 start(random.uniform(-1, 1), random.uniform(0.5, 2), random.uniform(-1, 1));
             const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(3, 15);
             const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(1, 9)),
@@ -457,15 +464,8 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
         for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
                                      PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
                                      PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
-            ProjectileSettings settings;
-            settings.method = ProjectileMethod::Engine;
-            settings.engine = engineProfile(engine);
-            settings.engine.timestep = static_cast<float>(1.0 / (30 + 30 * random.below(4)));
+            ProjectileSettings settings = randomEngineSettings(random, engine, 0.0);
             settings.engine.triangleMesh = tiled && random.below(2) == 1;
-            settings.step = settings.engine.timestep;
-            settings.radius = static_cast<float>(random.uniform(0.05, 0.3));
-            settings.restitution = static_cast<float>(random.uniform(0.0, 0.6));
-            settings.friction = static_cast<float>(random.uniform(0, 0.6));
             // Low, fast throws: most of the 4 s is rolling and sliding.
             const RVec3 start(random.uniform(-1, 1), random.uniform(0.3, 1), random.uniform(-1, 1));
             const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(2, 9);
@@ -497,9 +497,10 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
                 "tiles, largest difference %.2e m\n",
                 castsCoasting, castsEveryStep, promises, fell, worst);
     EXPECT_GT(fell, 0u) << "no ball left the tiled floor: its border was never tested";
-    // Most of these steps roll or slide in the open: contact coasting must save at least a third
-    // of the queries.
-    EXPECT_LT(static_cast<double>(castsCoasting), 0.67 * static_cast<double>(castsEveryStep))
+    // Many of these steps roll or slide in the open: contact coasting must save at least a fifth
+    // of the queries (a third today; Rapier and Box2D rarely coast: their resting sphere sits
+    // within the contact reach of the floor, where their grown probe sinks into it).
+    EXPECT_LT(static_cast<double>(castsCoasting), 0.8 * static_cast<double>(castsEveryStep))
         << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
 }
 

@@ -101,6 +101,29 @@ glm::vec<3, T, glm::defaultp> toVec(const btVector3& v) {
     return glm::vec<3, T, glm::defaultp>(static_cast<T>(v.x()), static_cast<T>(v.y()), static_cast<T>(v.z()));
 }
 
+// Bullet's primitive shapes as foresight's: a sphere (getRadius() includes the local scaling),
+// the outer box (margin and scaling included) with sharp edges (a box with the default margin
+// is rounded by it in Bullet's own tests), a static plane in world coordinates.
+Sphere sphereOf(const btSphereShape& s, const btTransform& transform) {
+    return Sphere{toVec<Real>(transform.getOrigin()), static_cast<float>(s.getRadius())};
+}
+OrientedBox boxOf(const btBoxShape& b, const btTransform& transform) {
+    const btQuaternion r = transform.getRotation();
+    OrientedBox box;
+    box.center = toVec<Real>(transform.getOrigin());
+    box.halfExtents = toVec<float>(b.getHalfExtentsWithMargin());
+    box.orientation.w = static_cast<float>(r.w());
+    box.orientation.x = static_cast<float>(r.x());
+    box.orientation.y = static_cast<float>(r.y());
+    box.orientation.z = static_cast<float>(r.z());
+    return box;
+}
+Plane planeOf(const btStaticPlaneShape& p, const btTransform& transform) {
+    const btVector3 normal = transform.getBasis() * p.getPlaneNormal();
+    const btScalar distance = p.getPlaneConstant() + normal.dot(transform.getOrigin());
+    return Plane{toVec<float>(normal), static_cast<Real>(distance)};
+}
+
 // Visits the objects whose bounds the cast's swept bounds overlap (Bullet's broadphase), as
 // btCollisionWorld::rayTest and convexSweepTest do, and tests each: Bullet's primitive shapes
 // (planes, spheres, boxes) with foresight's exact tests (ClosestHitCaster), every other shape
@@ -125,34 +148,15 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
         const btCollisionShape* shape = object->getCollisionShape();
         const btTransform& transform = object->getWorldTransform();
         switch (shape->getShapeType()) {
-        case SPHERE_SHAPE_PROXYTYPE: {
-            // getRadius() includes the shape's local scaling.
-            const auto* s = static_cast<const btSphereShape*>(shape);
-            caster->test(Sphere{toVec<Real>(transform.getOrigin()), static_cast<float>(s->getRadius())});
+        case SPHERE_SHAPE_PROXYTYPE:
+            caster->test(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
             return true;
-        }
-        case BOX_SHAPE_PROXYTYPE: {
-            // The outer box (margin and scaling included), with sharp edges: a box with the
-            // default margin is rounded by it in Bullet's own tests.
-            const auto* b = static_cast<const btBoxShape*>(shape);
-            const btQuaternion r = transform.getRotation();
-            OrientedBox box;
-            box.center = toVec<Real>(transform.getOrigin());
-            box.halfExtents = toVec<float>(b->getHalfExtentsWithMargin());
-            box.orientation.w = static_cast<float>(r.w());
-            box.orientation.x = static_cast<float>(r.x());
-            box.orientation.y = static_cast<float>(r.y());
-            box.orientation.z = static_cast<float>(r.z());
-            caster->test(box);
+        case BOX_SHAPE_PROXYTYPE:
+            caster->test(boxOf(*static_cast<const btBoxShape*>(shape), transform));
             return true;
-        }
-        case STATIC_PLANE_PROXYTYPE: {
-            const auto* p = static_cast<const btStaticPlaneShape*>(shape);
-            const btVector3 normal = transform.getBasis() * p->getPlaneNormal();
-            const btScalar distance = p->getPlaneConstant() + normal.dot(transform.getOrigin());
-            caster->test(Plane{toVec<float>(normal), static_cast<Real>(distance)});
+        case STATIC_PLANE_PROXYTYPE:
+            caster->test(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
             return true;
-        }
         default:
             break;
         }
@@ -174,7 +178,7 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
 
 // The shapes of the objects whose bounds meet an axis-aligned box (Bullet's broadphase, with
 // the casts' filter rule), as foresight's: spheres, boxes and planes as BroadphaseVisitor
-// reads them, a concave shape's triangles inside the box one by one (in world coordinates),
+// read them, a concave shape's triangles inside the box one by one (in world coordinates),
 // and `other` for any other shape. `Visit` returns false to stop.
 template <class Visit>
 struct ShapeVisitor final : btBroadphaseAabbCallback {
@@ -204,31 +208,15 @@ struct ShapeVisitor final : btBroadphaseAabbCallback {
         const btTransform& transform = object->getWorldTransform();
         bool go = true;
         switch (shape->getShapeType()) {
-        case SPHERE_SHAPE_PROXYTYPE: {
-            const auto* sphere = static_cast<const btSphereShape*>(shape);
-            go = (*visit)(Sphere{toVec<Real>(transform.getOrigin()), static_cast<float>(sphere->getRadius())});
+        case SPHERE_SHAPE_PROXYTYPE:
+            go = (*visit)(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
             break;
-        }
-        case BOX_SHAPE_PROXYTYPE: {
-            const auto* b = static_cast<const btBoxShape*>(shape);
-            const btQuaternion r = transform.getRotation();
-            OrientedBox box;
-            box.center = toVec<Real>(transform.getOrigin());
-            box.halfExtents = toVec<float>(b->getHalfExtentsWithMargin());
-            box.orientation.w = static_cast<float>(r.w());
-            box.orientation.x = static_cast<float>(r.x());
-            box.orientation.y = static_cast<float>(r.y());
-            box.orientation.z = static_cast<float>(r.z());
-            go = (*visit)(box);
+        case BOX_SHAPE_PROXYTYPE:
+            go = (*visit)(boxOf(*static_cast<const btBoxShape*>(shape), transform));
             break;
-        }
-        case STATIC_PLANE_PROXYTYPE: {
-            const auto* p = static_cast<const btStaticPlaneShape*>(shape);
-            const btVector3 normal = transform.getBasis() * p->getPlaneNormal();
-            const btScalar distance = p->getPlaneConstant() + normal.dot(transform.getOrigin());
-            go = (*visit)(Plane{toVec<float>(normal), static_cast<Real>(distance)});
+        case STATIC_PLANE_PROXYTYPE:
+            go = (*visit)(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
             break;
-        }
         default:
             if (shape->isConcave()) {
                 // The box in the shape's frame: the bounds of its corners taken there.
