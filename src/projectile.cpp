@@ -522,7 +522,16 @@ private:
         if (glm::length(v1) <= 1e-9) v1 = DVec3(0.0);
         mTime += duration;
         // Is the surface still under the new position? (An edge: fly off.)
-        if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
+        bool supported = mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit);
+        if (supported && glm::dot(toD(hit.normal), n) < 0.05) {
+            // The probe grazed a wall beside the surface (sliding along a concave edge, the probe
+            // runs in the wall's plane): probe again that far off the wall, for the surface
+            // under the body. The body stays there, clear of the wall.
+            const DVec3 off = toD(hit.normal) * lift;
+            supported = mWorld.castSegment(makeCast(p1 + off + n * lift, p1 + off - n * lift, mSettings.radius), hit) &&
+                        glm::dot(toD(hit.normal), n) >= 0.05;
+        }
+        if (supported) {
             const DVec3 support = toD(hit.normal);
             // The probe's hit point is rounded to Real, which may leave it a hair behind the
             // surface: put the body a skin in front, as after an impact (arriveAt). From behind,
