@@ -304,7 +304,7 @@ private:
     // a hair behind a surface the body is on (seenFromBehind) is cast again from its front.
     bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
                   CastHit& hit) const {
-        if (!mWorld.castSegment(makeChordCast(p0, p1, mSettings.radius), hit)) return false;
+        if (!mWorld.castSegment(makeChordCast(p0 + mCastOffset, p1 + mCastOffset, mSettings.radius), hit)) return false;
         if (!onSurface && !mHadImpact && !mHadContact) return true;  // in free flight
         return recastOffSurfaces(p0, p1, onSurface, surface, hit);
     }
@@ -319,7 +319,8 @@ private:
             const DVec3 nudge = *n * (2.0 * behindTolerance(start));
             start += nudge;
             end += nudge;
-            if (!mWorld.castSegment(makeChordCast(start, end, mSettings.radius), hit)) return false;
+            if (!mWorld.castSegment(makeChordCast(start + mCastOffset, end + mCastOffset, mSettings.radius), hit))
+                return false;
         }
         if (!onSurface) return true;
         // A hit is that surface when it lies in its plane with its normal.
@@ -338,7 +339,8 @@ private:
             hit.position = toR(start);
             return true;
         }
-        return mWorld.castSegment(makeChordCast(start + surface * lift, end + surface * lift, mSettings.radius), hit);
+        const DVec3 off = surface * lift + mCastOffset;
+        return mWorld.castSegment(makeChordCast(start + off, end + off, mSettings.radius), hit);
     }
 
     // How far behind a surface it is on rounding can leave the body: a few ulps of Real, and
@@ -499,11 +501,52 @@ private:
             }
         }
         const DVec3 p0 = mBody.position;
-        const DVec3 p1 = p0 + v0 * duration + 0.5 * a * duration * duration;
         const double lift = liftDistance();
+        // In a crease: the body slides on n and still touches the obstacle it hit last (a wall
+        // beside the floor), which gravity or the slide may press it into again. That obstacle
+        // would be reported at once by every cast from here, hiding whatever lies ahead (the
+        // end of the crease): the casts are lifted off it, and the return to its plane is
+        // solved here, as advanceBallistic does for the surface a bounce left.
+        bool returnsToObstacle = false;
+        mCastOffset = DVec3(0.0);
+        if (mSettings.radius > 0.0f && mHadImpact && glm::dot(mLastSurfaceNormal, n) < 0.999 &&
+            std::abs(glm::dot(mLastSurfaceNormal, p0 - mLastSurfacePoint)) <= 2.0 * lift) {
+            const DVec3& m = mLastSurfaceNormal;
+            const double c = glm::dot(m, p0 - mLastSurfacePoint);
+            const double b = glm::dot(m, v0), am = 0.5 * glm::dot(m, a);
+            if (c + b * duration + am * duration * duration < 0.0) {
+                const double s = firstEntry(c, b, am, duration, duration);
+                if (s < duration) {
+                    duration = s;
+                    stops = false;
+                    returnsToObstacle = true;
+                }
+            }
+            mCastOffset = m * lift;
+        }
+        const DVec3 p1 = p0 + v0 * duration + 0.5 * a * duration * duration;
         CastHit hit;
-        if (castPath(p0, p1, true, n, hit)) {
-            const Impact found = locateImpact(p0, v0, a, duration, hit, true, n);
+        const bool blocked = castPath(p0, p1, true, n, hit);
+        Impact found{};
+        if (blocked) found = locateImpact(p0, v0, a, duration, hit, true, n);
+        mCastOffset = DVec3(0.0);
+        if (!blocked && returnsToObstacle) {
+            // Back on the obstacle's plane: an impact if the obstacle is there (a probe), else
+            // the crease has ended and the slide goes on past it.
+            const DVec3& m = mLastSurfaceNormal;
+            if (mWorld.castSegment(makeCast(p1 + m * lift, p1 - m * lift, mSettings.radius), hit)) {
+                DVec3 p = backedOff(p1, v0 + a * duration);
+                p -= m * glm::dot(m, p - mLastSurfacePoint);
+                p += m * skinDistance(p);
+                keepInFront(p, m, mLastSurfacePoint);
+                mBody = {p, v0 + a * duration};
+                mTime += duration;
+                impact(m, duration);
+                return false;
+            }
+            mHadImpact = false;
+        }
+        if (blocked) {
             const double s = found.time;
             // Out of the obstacle if rounding left the body behind its plane, and a skin off
             // it; not onto its plane, which would lift the body off the surface it slides on
@@ -625,6 +668,7 @@ private:
     DVec3 mContactNormal{0.0};
     DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
     bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
+    DVec3 mCastOffset{0.0};    // added to the chord casts of castPath (a slide lifted off an obstacle)
     // The surfaces of the last impacts (keepInFront), and how far from where it touched one the
     // body still heeds it [m].
     static constexpr int kRecentSurfaces = 4;
