@@ -294,6 +294,7 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
     }
     // What the harnesses build: planes (as large thin boxes) and boxes.
     const bool planar = engine->engine == PhysicsEngine::Box2D;
+    const bool rounds = engine->engine == PhysicsEngine::Jolt || engine->engine == PhysicsEngine::Rapier;
     if (!scenario.world.spheres().empty())
         diagnostics.error("world.spheres", "compare --engine sends planes and boxes to the engine; spheres are not supported");
     if (!scenario.world.triangles().empty() || scenario.meshWorld)
@@ -316,6 +317,7 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         boxes.push_back(Json{{"center", {centre.x, centre.y, centre.z}},
                              {"half_extents", {kPlaneHalfWidth, kPlaneHalfThickness, kPlaneHalfWidth}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
+        if (rounds) boxes.back()["rounding"] = 0.0;  // a plane's box is sharp (Jolt would round it)
         boxMaterials.push_back(scenario.world.planeMaterials()[i]);
     }
     for (std::size_t i = 0; i < scenario.world.boxes().size(); ++i) {
@@ -326,9 +328,18 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
                               "box2d runs in the x-y plane: a box may only turn about z");
             continue;
         }
+        if (!rounds && box.rounding > 0.0f) {
+            diagnostics.error("world.boxes[" + std::to_string(i) + "].rounding",
+                              std::string(engine->name) + " builds sharp boxes here: the rounding must be 0 (jolt and "
+                              "rapier round them)");
+            continue;
+        }
         boxes.push_back(Json{{"center", {box.center.x, box.center.y, box.center.z}},
                              {"half_extents", {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
+        // The engine builds the box the scenario describes: Jolt's convex radius (0.05 m unless
+        // given) and Rapier's round cuboid take the box's own rounding, 0 included.
+        if (rounds) boxes.back()["rounding"] = box.rounding;
         boxMaterials.push_back(scenario.world.boxMaterials()[i]);
     }
 

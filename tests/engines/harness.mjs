@@ -128,7 +128,7 @@ function validateCase(raw, index) {
     boxes = raw.boxes.map((bx, j) => {
       const p = `boxes[${j}]`;
       if (bx === null || typeof bx !== 'object' || Array.isArray(bx)) C.bad(p, 'must be an object', bx);
-      C.known(bx, `${p}.`, ['center', 'half_extents', 'rotation', 'restitution', 'friction']);
+      C.known(bx, `${p}.`, ['center', 'half_extents', 'rotation', 'restitution', 'friction', 'rounding']);
       const rotation = C.vec(bx, `${p}.rotation`, 4, { optional: true, dflt: [0, 0, 0, 1] });
       const norm = Math.hypot(...rotation);
       if (Math.abs(norm - 1) > 1e-6) C.bad(`${p}.rotation`, 'must be a unit quaternion [x, y, z, w]', bx.rotation);
@@ -138,7 +138,17 @@ function validateCase(raw, index) {
         rotation,
         restitution: C.num(bx, `${p}.restitution`, { min: 0 }),
         friction: C.num(bx, `${p}.friction`, { min: 0 }),
+        // Radius of the rounded edges (the box keeps its outer size); absent: the engine's own
+        // default (Jolt's convex radius, sharp elsewhere).
+        rounding: C.num(bx, `${p}.rounding`, { min: 0, optional: true, dflt: undefined }),
       };
+    });
+    boxes.forEach((bx, j) => {
+      if (bx.rounding === undefined) return;
+      const p = `boxes[${j}].rounding`;
+      if (bx.rounding > Math.min(...bx.half_extents)) C.bad(p, 'must not exceed the smallest half extent', bx.rounding);
+      if (bx.rounding > 0 && raw.engine !== 'jolt' && raw.engine !== 'rapier')
+        C.bad(p, `must be 0: ${raw.engine} builds sharp boxes here`, bx.rounding);
     });
   }
   return { id: raw.id, engine: raw.engine, timestep, steps: raw.steps, gravity, body, boxes };
@@ -287,8 +297,11 @@ function runJolt(J, c) {
     for (const bx of c.boxes) {
       const he = new J.Vec3(...bx.half_extents);
       const minHalf = Math.min(...bx.half_extents);
-      // Default convex radius unless the box is too thin for it (Jolt requires radius <= half extent).
-      const shape = minHalf >= JOLT_DEFAULT_CONVEX_RADIUS ? new J.BoxShape(he) : new J.BoxShape(he, minHalf);
+      // The given rounding as the convex radius; else the default convex radius unless the box
+      // is too thin for it (Jolt requires radius <= half extent).
+      let radius = Math.min(JOLT_DEFAULT_CONVEX_RADIUS, minHalf);
+      if (bx.rounding !== undefined) radius = bx.rounding;
+      const shape = new J.BoxShape(he, radius);
       J.destroy(he);
       const pos = new J.RVec3(...bx.center);
       const rot = new J.Quat(...bx.rotation);
@@ -442,7 +455,10 @@ function runRapier(R, c) {
     world.timestep = c.timestep;
     for (const bx of c.boxes) {
       const [qx, qy, qz, qw] = bx.rotation;
-      const desc = R.ColliderDesc.cuboid(...bx.half_extents)
+      // A rounded box: Rapier's round cuboid is the inner box grown by its border radius.
+      const r = bx.rounding ?? 0;
+      const desc = (r > 0 ? R.ColliderDesc.roundCuboid(...bx.half_extents.map((h) => h - r), r)
+                          : R.ColliderDesc.cuboid(...bx.half_extents))
         .setTranslation(...bx.center)
         .setRotation({ x: qx, y: qy, z: qz, w: qw })
         .setFriction(bx.friction)
