@@ -886,6 +886,11 @@ inline HalfAngleChunk halfAngles(const double* timestamp, const double* halfRate
     return {static_cast<std::int32_t>(reduce), static_cast<std::int32_t>(beyond)};
 }
 
+// An angle for the vector pass: h itself below kReductionLimit, else 0 (a select, not a
+// product: infinity or NaN times 0 is NaN, whose conversion to the quadrant's int is undefined).
+// The entities beyond the limit are redone one by one (HalfAngleChunk::beyond).
+inline double inReduction(double h) { return h < kReductionLimit ? h : 0.0; }
+
 // Calls body(sinCos, firstQuadrant) with sinCosReduced and std::false_type, or, when no angle
 // needs the reduction, sinCosFirstQuadrant and std::true_type (the same bits, cheaper). Lambdas,
 // not function pointers, so that the loops inline and vectorise.
@@ -1067,7 +1072,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
             for (std::size_t j = 0; j < m; ++j) {
                 const std::size_t s = begin + j;
                 float sine, cosine, sinc;
-                sinCos(h[j] * static_cast<double>(h[j] < kReductionLimit), sine, cosine, sinc);
+                sinCos(inReduction(h[j]), sine, cosine, sinc);
                 const Quat o = turnedOrientation(quatAt(mTurnOrientation, s), quatAt(mTurnAxisTerm, s), cosine, sine);
                 ow[j] = o.w;
                 ox[j] = o.x;
@@ -1103,7 +1108,7 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                 const std::size_t s = begin + j;
                 const float t = age[j];
                 float sine, cosine, sincHalf;
-                sinCos(h[j] * static_cast<double>(h[j] < kReductionLimit), sine, cosine, sincHalf);
+                sinCos(inReduction(h[j]), sine, cosine, sincHalf);
                 const float sincX = sincHalf * cosine;
                 const auto xx = static_cast<float>(2.0 * h[j]);
                 const float c1 = 0.5f * sincHalf * sincHalf;

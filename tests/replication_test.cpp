@@ -1216,6 +1216,34 @@ TEST(Prepared, OverflowIsRefusedWithTheUpdateAsGiven) {
     }
 }
 
+// A frame whose age does not fit a float (time 1e300 s after the update, no extrapolation
+// limit) makes the half angle infinite, or NaN for an entity that does not turn (0 x inf): the
+// vectorised pass must not convert such an angle to its quadrant's int (undefined behaviour,
+// which the sanitizer build stops at; found by fuzz_predict), and every entity is refused or
+// finite, as extrapolateDeadReckoning says.
+TEST(Prepared, AnAgeBeyondFloatRangeIsRefusedOrFinite) {
+    for (DeadReckoningAlgorithm algorithm :
+         {DeadReckoningAlgorithm::Static, DeadReckoningAlgorithm::Fpw, DeadReckoningAlgorithm::Rpw,
+          DeadReckoningAlgorithm::Rvw, DeadReckoningAlgorithm::Fvw, DeadReckoningAlgorithm::Fpb,
+          DeadReckoningAlgorithm::Rpb, DeadReckoningAlgorithm::Rvb, DeadReckoningAlgorithm::Fvb}) {
+        for (const float spin : {0.0f, 0.5f}) {
+            DeadReckoningState s = makeState(algorithm, DVec3(1, 2, 3), DVec3(0, 0, 0));
+            s.angularVelocity = Vec3(0.0f, spin, 0.0f);
+            foresight::PreparedDeadReckoning p;
+            ASSERT_EQ(foresight::prepareDeadReckoning(s, 0.0, p), Status::Ok);
+            std::vector<foresight::PreparedDeadReckoning> entities(1, p);
+            std::vector<DeadReckoningResult> reference(1), out(1);
+            const std::size_t refused = foresight::extrapolateDeadReckoning(entities, 1e300, kInfinity, reference);
+            foresight::DeadReckoningBatch batch(1);
+            ASSERT_EQ(batch.set(0, p), Status::Ok);
+            EXPECT_EQ(batch.extrapolate(1e300, std::numeric_limits<float>::infinity(), out), refused)
+                << static_cast<int>(algorithm) << " " << spin;
+            const auto finite = [](const auto& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+            EXPECT_TRUE(finite(out[0].position) && finite(out[0].velocity)) << static_cast<int>(algorithm) << " " << spin;
+        }
+    }
+}
+
 TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
     const double now = 1.0e6 + 0.5;
     std::vector<DeadReckoningState> states;
