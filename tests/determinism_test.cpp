@@ -48,17 +48,6 @@ void hashPoints(ftest::Hasher& h, const std::vector<TrajectoryPoint>& points, st
     }
 }
 
-void hashResult(ftest::Hasher& h, const ProjectileResult& r) {
-    h.add(r.position);
-    h.add(r.velocity);
-    h.add(r.time);
-    h.add(static_cast<std::uint64_t>(r.bounces));
-    h.add(static_cast<std::uint64_t>(r.atRest));
-    h.add(static_cast<std::uint64_t>(r.stoppedAtHit));
-    h.add(r.hitNormal);
-    h.add(static_cast<std::uint64_t>(r.trajectorySize));
-    h.add(static_cast<std::uint64_t>(r.trajectoryNeeded));
-}
 
 /// Runs the whole scenario; returns the hash and fills `floats` with every output float.
 std::uint64_t runScenario(std::vector<double>& outputs) {
@@ -81,7 +70,7 @@ std::uint64_t runScenario(std::vector<double>& outputs) {
         EXPECT_EQ(foresight::predictProjectile(rv(0.1 * i, 1.5, 0.0), velocity, 4.0f, settings, &world, points, result),
                   Status::Ok);
         bounces += result.bounces;
-        hashResult(h, result);
+        h.add(result);
         hashPoints(h, points, result.trajectorySize);
         for (std::size_t k = 0; k < result.trajectorySize; ++k) {
             outputs.push_back(static_cast<double>(points[k].position.x));

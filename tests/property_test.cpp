@@ -591,15 +591,7 @@ std::uint64_t hashThrow(const Throw& t, const StaticWorld& world, std::vector<Tr
     ProjectileResult result;
     const Status status = foresight::predictProjectile(t.start, t.velocity, t.time, t.settings, &world, points, result);
     h.add(static_cast<std::uint64_t>(status));
-    h.add(result.position);
-    h.add(result.velocity);
-    h.add(result.time);
-    h.add(static_cast<std::uint64_t>(result.bounces));
-    h.add(static_cast<std::uint64_t>(result.atRest));
-    h.add(static_cast<std::uint64_t>(result.stoppedAtHit));
-    h.add(result.hitNormal);
-    h.add(static_cast<std::uint64_t>(result.trajectorySize));
-    h.add(static_cast<std::uint64_t>(result.trajectoryNeeded));
+    h.add(result);
     for (std::size_t k = 0; k < std::min(result.trajectorySize, points.size()); ++k) {
         h.add(points[k].time);
         h.add(static_cast<std::uint64_t>(points[k].event));

@@ -220,6 +220,18 @@ public:
         add(q.z);
     }
     void add(std::uint64_t v) { bytes(&v, sizeof v); }
+    /// Every field of a projectile prediction's result.
+    void add(const foresight::ProjectileResult& r) {
+        add(r.position);
+        add(r.velocity);
+        add(r.time);
+        add(static_cast<std::uint64_t>(r.bounces));
+        add(static_cast<std::uint64_t>(r.atRest));
+        add(static_cast<std::uint64_t>(r.stoppedAtHit));
+        add(r.hitNormal);
+        add(static_cast<std::uint64_t>(r.trajectorySize));
+        add(static_cast<std::uint64_t>(r.trajectoryNeeded));
+    }
     std::uint64_t value() const { return mHash; }
 
 private:

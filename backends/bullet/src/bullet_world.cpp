@@ -101,6 +101,12 @@ glm::vec<3, T, glm::defaultp> toVec(const btVector3& v) {
     return glm::vec<3, T, glm::defaultp>(static_cast<T>(v.x()), static_cast<T>(v.y()), static_cast<T>(v.z()));
 }
 
+// Bullet's filter rule (RayResultCallback::needsCollision) for the queries' group and mask.
+bool passesFilter(const BulletWorldSettings& settings, const btBroadphaseProxy& proxy) {
+    return (proxy.m_collisionFilterGroup & settings.collisionFilterMask) != 0 &&
+           (settings.collisionFilterGroup & proxy.m_collisionFilterMask) != 0;
+}
+
 // Bullet's primitive shapes as foresight's: a sphere (getRadius() includes the local scaling),
 // the outer box (margin and scaling included) with sharp edges (a box with the default margin
 // is rounded by it in Bullet's own tests), a static plane in world coordinates.
@@ -140,10 +146,7 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
     SweepCallback* sweepCallback = nullptr;
 
     bool process(const btBroadphaseProxy* proxy) override {
-        // Bullet's filter rule (RayResultCallback::needsCollision).
-        if ((proxy->m_collisionFilterGroup & settings->collisionFilterMask) == 0 ||
-            (settings->collisionFilterGroup & proxy->m_collisionFilterMask) == 0)
-            return true;
+        if (!passesFilter(*settings, *proxy)) return true;
         const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
         const btCollisionShape* shape = object->getCollisionShape();
         const btTransform& transform = object->getWorldTransform();
@@ -200,9 +203,7 @@ struct ShapeVisitor final : btBroadphaseAabbCallback {
 
     bool process(const btBroadphaseProxy* proxy) override {
         if (stopped) return false;
-        if ((proxy->m_collisionFilterGroup & settings->collisionFilterMask) == 0 ||
-            (settings->collisionFilterGroup & proxy->m_collisionFilterMask) == 0)
-            return true;
+        if (!passesFilter(*settings, *proxy)) return true;
         const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
         const btCollisionShape* shape = object->getCollisionShape();
         const btTransform& transform = object->getWorldTransform();
