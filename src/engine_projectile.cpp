@@ -508,9 +508,11 @@ private:
             if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D)
                 findNearby(freeMotion / length, reach);
         }
-        // Bullet's narrow phase (Godot 3 with Bullet too) tests every shape whose bounds overlap the
-        // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does.
-        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet)
+        // Bullet's narrow phase (native, ammo.js, Godot 3 with Bullet) tests every shape whose
+        // bounds overlap the sphere's: a sphere rolling on the floor finds the wall ahead as PhysX
+        // does (without this, a ball sliding into a wall of triangles went through it).
+        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet ||
+            mProfile.engine == PhysicsEngine::Bullet)
             slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
