@@ -92,7 +92,7 @@ const EngineInfo kEngines[] = {
     {"jolt", PhysicsEngine::Jolt, "node", 0.95, 0.95},
     {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9},
     {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9},
-    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.8},
+    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
     {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.75},
