@@ -535,8 +535,9 @@ private:
                 findNearby(freeMotion / length, reach);
         }
         // Bullet's narrow phase (Godot 3 with Bullet too) tests every shape whose bounds overlap the
-        // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does.
-        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet)
+        // sphere's: a sphere rolling on the floor finds the wall ahead as PhysX does. (ammo.js: with
+        // its manifolds; the bullet profile has not been measured to need it.)
+        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet || mManifold)
             slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
