@@ -40,6 +40,24 @@ constexpr std::uint64_t kMaxCoastSteps = 64;
 constexpr int kSolverIterations = 10;
 // PhysX position iterations that carry no friction (measured against the Cocos build).
 constexpr int kPhysXFrictionSkip = 0;
+// Points of one Bullet contact manifold (btPersistentManifold's cache).
+constexpr int kManifoldPoints = 4;
+// Bullet's warm-starting factor (btContactSolverInfo::m_warmstartingFactor) for normal impulses.
+constexpr double kBulletWarmStart = 0.85;
+
+// Bullet 2.83 (ammo.js): one point of a shape's contact manifold. The point stays fixed on the
+// static shape and on the sphere's material (its arm turns with the body); it carries its own
+// impulses from step to step.
+struct ManifoldPoint {
+    DVec3 arm{0.0};        // from the centre to the point on the sphere, turned with the body
+    DVec3 onSurface{0.0};  // the point on the static shape
+    DVec3 normal{0.0};     // the normal it was found with
+    double distance = 0.0; // along the normal, as of the last refresh [m]; negative: penetration
+    double normalImpulse = 0.0, lateral = 0.0;  // the last solve's accumulated impulses (per unit mass)
+    // This step's solve.
+    DVec3 direction{0.0};  // the friction direction
+    double target = 0.0, normalMass = 1.0, frictionMass = 1.0;
+};
 
 struct Surface {
     DVec3 normal{0.0};  // unit, towards the sphere
@@ -66,12 +84,15 @@ struct Surface {
     double pointGap = 0.0;   // the point's gap when it was found [m]
     DVec3 pointMotion{0.0};  // how far the sphere's material point moved since [m]
     double pointDistance = 0.0, pointSlip = 0.0;  // its distance along and across the normal now [m]
-    // Bullet up to 2.88 (EngineProfile::frictionWarmStart): the friction impulse along this
-    // step's friction direction, which the next step's solve starts from.
+    // Bullet up to 2.88 (EngineProfile::frictionWarmStart) against a triangle mesh: the friction
+    // impulse along this step's friction direction, which the next step's solve starts from.
     double lateral = 0.0;
     DVec3 lateralDir{0.0};
     DVec3 lateralArm{0.0};     // the manifold point on the sphere at the next step's start, from the centre
     DVec3 lateralCentre{0.0};  // the centre when the point was found
+    // Bullet 2.83 (ammo.js, see EngineRun::updateManifold): the shape's manifold points.
+    std::array<ManifoldPoint, kManifoldPoints> points{};
+    int pointCount = 0;
 };
 
 // The world that contactCoast steps against: one one-sided plane with a material, answered by
@@ -104,6 +125,10 @@ public:
         mRotates = mProfile.rotates && mRadius > 0.0;
         mAngularFactor = dampingFactor(mProfile.damping, mProfile.angularDamping, mRec.dt);
         mMeshContacts = mProfile.triangleMesh && mProfile.engine == PhysicsEngine::Bullet;
+        // Bullet 2.83 (ammo.js: the profile warm-starts friction): several points per manifold.
+        // Bullet 3.24 keeps them too, but its profile still solves one point per surface.
+        mManifold =
+            mProfile.engine == PhysicsEngine::Bullet && mProfile.frictionWarmStart > 0.0f && !mMeshContacts;
     }
 
     Status run(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps) {
@@ -423,7 +448,8 @@ private:
         else correctPositions();
         if (mProfile.engine == PhysicsEngine::Box2D) box2dTimeOfImpact(before);
         if (mMeshContacts) followManifoldPoints(mPosition - before);
-        if (mProfile.frictionWarmStart > 0.0f) dropDriftedPoints(mPosition - before);
+        if (mManifold) turnManifoldPoints();
+        else if (mProfile.frictionWarmStart > 0.0f) dropDriftedPoints(mPosition - before);
 
         bool bounced = false;
         mTouching = false;
@@ -524,6 +550,7 @@ private:
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
             if (mMeshContacts) meshContact(s, reach);
+            if (mManifold) updateManifold(s, reach);
         }
         if (mProfile.engine == PhysicsEngine::Godot3Bullet) predictiveContact();
     }
@@ -834,6 +861,95 @@ private:
         }
     }
 
+    // Bullet 2.83's persistent manifold (btPersistentManifold), for ammo.js. Each step the narrow
+    // phase (GJK for a sphere and a box: the dedicated sphere-box algorithm is compiled out) reports
+    // the closest point when it is within the contact breaking threshold. The manifold's first
+    // body is the static shape (added to the world before the sphere), so the new point replaces
+    // the cached point whose point on the shape lies nearest to its own (within the threshold),
+    // keeping that point's impulses, or is added beside the others (up to four; a fifth displaces
+    // one chosen by displacedPoint). Then every cached point is measured again where the body now
+    // stands: one whose distance along its normal exceeds the threshold, or whose material point
+    // on the sphere has slipped across the surface from its point on the shape by more than it,
+    // is dropped. A sphere that slides or rolls faster than the threshold per step so keeps older
+    // points (its material point turned away from the surface) beside the newest one, each with
+    // its own impulses; the surface acts while any point is left.
+    void updateManifold(Surface& s, double reach) {
+        if (s.acting) {
+            ManifoldPoint p;
+            p.arm = -mRadius * s.normal;
+            p.onSurface = mPosition - (mRadius + s.gap) * s.normal;  // the closest point, not the cast's
+            p.normal = s.normal;
+            p.distance = s.gap;
+            int nearest = -1;
+            double shortest = reach * reach;
+            for (int j = 0; j < s.pointCount; ++j) {
+                const DVec3 d = s.points[j].onSurface - p.onSurface;
+                const double d2 = glm::dot(d, d);
+                if (d2 < shortest) {
+                    shortest = d2;
+                    nearest = j;
+                }
+            }
+            if (nearest >= 0) {
+                p.normalImpulse = s.points[nearest].normalImpulse;
+                p.lateral = s.points[nearest].lateral;
+                s.points[nearest] = p;
+            } else if (s.pointCount < kManifoldPoints) {
+                s.points[s.pointCount++] = p;
+            } else {
+                s.points[displacedPoint(s, p)] = p;
+            }
+        }
+        for (int j = s.pointCount - 1; j >= 0; --j) {
+            ManifoldPoint& p = s.points[j];
+            const DVec3 onSphere = mPosition + p.arm;
+            p.distance = glm::dot(onSphere - p.onSurface, p.normal);
+            const DVec3 slip = p.onSurface - (onSphere - p.normal * p.distance);
+            if (p.distance > reach || glm::dot(slip, slip) > reach * reach) {
+                // The last point takes the removed one's place.
+                s.points[j] = s.points[s.pointCount - 1];
+                --s.pointCount;
+            }
+        }
+        s.acting = s.pointCount > 0;
+    }
+
+    // A full manifold keeps its deepest point (when deeper than the new one) and otherwise the
+    // points that span the largest area with the new one: the cached point whose replacement by
+    // the new one leaves the largest area (Bullet's three-point estimate, on the shape's points;
+    // the first of equal ones) gives way.
+    static int displacedPoint(const Surface& s, const ManifoldPoint& p) {
+        int deepest = -1;
+        double depth = p.distance;
+        for (int i = 0; i < kManifoldPoints; ++i) {
+            if (s.points[i].distance < depth) {
+                deepest = i;
+                depth = s.points[i].distance;
+            }
+        }
+        const auto& q = s.points;
+        const auto area = [&](const ManifoldPoint& other, const ManifoldPoint& a, const ManifoldPoint& b) {
+            const DVec3 cross = glm::cross(p.onSurface - other.onSurface, a.onSurface - b.onSurface);
+            return glm::dot(cross, cross);
+        };
+        double areas[kManifoldPoints] = {0.0, 0.0, 0.0, 0.0};
+        if (deepest != 0) areas[0] = area(q[1], q[3], q[2]);
+        if (deepest != 1) areas[1] = area(q[0], q[3], q[2]);
+        if (deepest != 2) areas[2] = area(q[0], q[3], q[1]);
+        if (deepest != 3) areas[3] = area(q[0], q[2], q[1]);
+        int largest = 0;
+        for (int i = 1; i < kManifoldPoints; ++i)
+            if (areas[i] > areas[largest]) largest = i;
+        return largest;
+    }
+
+    // The body's turn in this step carries every manifold point's material point with it.
+    void turnManifoldPoints() {
+        for (int i = 0; i < mCount; ++i)
+            for (int j = 0; j < mSurfaces[i].pointCount; ++j)
+                mSurfaces[i].points[j].arm = turnedByStep(mSurfaces[i].points[j].arm);
+    }
+
     // The largest gap that makes a contact. Bullet scales its contact breaking threshold by the
     // shape's bounding radius (sqrt(3) r for a sphere's box bound).
     double contactReach() const {
@@ -941,6 +1057,10 @@ private:
     // Jolt, Bullet, GodotPhysics, Box2D and custom profiles: targets set once, then sequential
     // impulses (friction first, bounded by the normal impulse so far, then the normal row).
     void solveSequential(const DVec3& v0, DVec3& v) {
+        if (mManifold) {
+            solveBulletManifold(v0, v);
+            return;
+        }
         const double dt = mRec.dt;
         const PhysicsEngine engine = mProfile.engine;
         for (int i = 0; i < mCount; ++i) {
@@ -1040,7 +1160,8 @@ private:
     // it; every iteration then solves all normal rows, and a friction row only while its
     // contact's normal impulse is positive. A contact that pushes no more (a sphere leaving the
     // surface, its point still in the manifold) so keeps the warm-started friction, and hands
-    // it on to the next step.
+    // it on to the next step. One point per surface: used against a triangle mesh; convex shapes
+    // have the manifold's several points (solveBulletManifold).
     void solveBulletWarmStarted(DVec3& v) {
         const double reach = contactReach();
         auto direction = [&](const Surface& s, const DVec3& arm) {
@@ -1078,6 +1199,108 @@ private:
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (s.acting) s.lateral = glm::dot(s.frictionImpulse, s.lateralDir);
+        }
+    }
+
+    // Bullet 2.83's solve over every manifold point (btSequentialImpulseConstraintSolver, default
+    // mode: one friction direction, warm starting). Each point is a contact of its own at its
+    // material point's arm (an older point's arm is turned away from the normal, so its impulses
+    // also turn the sphere): its restitution reflects the approach of that point before gravity,
+    // its target closes its own distance, and its friction direction follows that point's slip
+    // after gravity (before any impulse of this step). The stored normal and friction impulses of
+    // every point are applied first, times Bullet's warm-starting factor (0.85 for the normal;
+    // frictionWarmStart for friction); then every iteration solves all normal rows and after them
+    // every friction row whose point pushes (clamped to mu times that point's normal impulse). A
+    // point that ends with no normal impulse keeps its warm-started friction.
+    void solveBulletManifold(const DVec3& v0, DVec3& v) {
+        const double dt = mRec.dt;
+        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
+        const double warmNormal = kBulletWarmStart;
+        const double warmFriction = static_cast<double>(mProfile.frictionWarmStart);
+        const DVec3 before = v0 * mRec.d, after = v, spin = mAngular;
+        const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) {
+            v += impulse;
+            mAngular += invInertia * glm::cross(arm, impulse);
+        };
+        const auto massAlong = [&](const DVec3& arm, const DVec3& d) {
+            const DVec3 c = glm::cross(arm, d);
+            return 1.0 / (1.0 + invInertia * glm::dot(c, c));
+        };
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            double push = 0.0;
+            for (int j = 0; j < s.pointCount; ++j) {
+                ManifoldPoint& p = s.points[j];
+                const DVec3 n = p.normal;
+                const double approach = glm::dot(before + glm::cross(spin, p.arm), n);
+                // No bounce below the restitution threshold (Bullet 2.87 and later; ammo.js: 0).
+                const bool slow = std::abs(approach) < mProfile.restitutionThreshold;
+                double target = slow ? 0.0 : std::max(0.0, -s.e * approach);
+                // A gap is the most the point may close; a shallow penetration is pushed out
+                // through the velocity (erp), a deeper one by the split impulse, which moves the body
+                // without staying in its velocity (the deepest point's, once per surface).
+                if (p.distance > 0.0) target -= p.distance / dt;
+                else if (p.distance > -0.04) target += mProfile.positionCorrection * -p.distance / dt;
+                else push = std::max(push, mProfile.splitImpulseCorrection * -p.distance / dt);
+                p.target = target;
+                p.normalMass = massAlong(p.arm, n);
+                DVec3 slip = after + glm::cross(spin, p.arm);
+                slip -= glm::dot(slip, n) * n;
+                const double length2 = glm::dot(slip, slip);
+                if (length2 > 1.1920929e-07) {  // SIMD_EPSILON (float)
+                    p.direction = slip / std::sqrt(length2);
+                } else if (std::abs(n.z) > 0.70710678) {  // btPlaneSpace1's first axis
+                    p.direction = glm::normalize(DVec3(0.0, -n.z, n.y));
+                } else {
+                    p.direction = glm::normalize(DVec3(-n.y, n.x, 0.0));
+                }
+                p.frictionMass = massAlong(p.arm, p.direction);
+            }
+            mPushVelocity += s.normal * push;
+            for (int j = 0; j < s.pointCount; ++j) {
+                ManifoldPoint& p = s.points[j];
+                p.normalImpulse *= warmNormal;
+                p.lateral *= warmFriction;
+                applyAt(p.normalImpulse * p.normal, p.arm);
+                applyAt(p.lateral * p.direction, p.arm);
+            }
+        }
+        for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                for (int j = 0; j < s.pointCount; ++j) {
+                    ManifoldPoint& p = s.points[j];
+                    const double vn = glm::dot(v + glm::cross(mAngular, p.arm), p.normal);
+                    const double total = std::max(0.0, p.normalImpulse + p.normalMass * (p.target - vn));
+                    applyAt((total - p.normalImpulse) * p.normal, p.arm);
+                    p.normalImpulse = total;
+                }
+            }
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting) continue;
+                for (int j = 0; j < s.pointCount; ++j) {
+                    ManifoldPoint& p = s.points[j];
+                    if (p.normalImpulse <= 0.0) continue;
+                    const double limit = s.mu * p.normalImpulse;
+                    const double vt = glm::dot(v + glm::cross(mAngular, p.arm), p.direction);
+                    const double total = std::clamp(p.lateral - p.frictionMass * vt, -limit, limit);
+                    applyAt((total - p.lateral) * p.direction, p.arm);
+                    p.lateral = total;
+                }
+            }
+        }
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            s.normalImpulse = 0.0;
+            s.frictionImpulse = DVec3(0.0);
+            for (int j = 0; j < s.pointCount; ++j) {
+                s.normalImpulse += s.points[j].normalImpulse;
+                s.frictionImpulse += s.points[j].lateral * s.points[j].direction;
+            }
         }
     }
 
@@ -1697,6 +1920,7 @@ private:
     double mRadius = 0.0;
     bool mRotates = false;
     bool mMeshContacts = false;  // Bullet's rules for a triangle mesh (EngineProfile::triangleMesh)
+    bool mManifold = false;      // Bullet 2.83's multi-point manifolds (updateManifold)
     double mAngularFactor = 1.0;
     DVec3 mPosition{0.0}, mVelocity{0.0}, mAngular{0.0};
     std::array<Surface, kMaxSurfaces> mSurfaces{};

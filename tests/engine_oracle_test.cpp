@@ -92,7 +92,7 @@ const EngineInfo kEngines[] = {
     {"jolt", PhysicsEngine::Jolt, "node", 0.95, 0.95},
     {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9},
     {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9},
-    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.8},
+    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
     {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.75},
@@ -253,7 +253,9 @@ Prediction predict(const Throw& t, ProjectileMethod method) {
             box.rounding = static_cast<float>(std::min({0.05, b.half.x, b.half.y, b.half.z}));
         // Godot 3's Bullet shapes have a 0.04 m collision margin: a btBoxShape keeps its faces and
         // rounds its edges and corners by the margin (btSphereBoxCollisionAlgorithm, the sweeps).
-        if (t.engine == PhysicsEngine::Godot3Bullet)
+        // ammo.js's btBoxShape has the same default margin, and its sphere-box pairs go through
+        // GJK (the dedicated sphere-box algorithm is compiled out), which rounds alike.
+        if (t.engine == PhysicsEngine::Godot3Bullet || t.harnessEngine == "ammo")
             box.rounding = static_cast<float>(std::min({0.04, b.half.x, b.half.y, b.half.z}));
         SurfaceMaterial material;
         material.restitution = static_cast<float>(b.restitution);

@@ -123,7 +123,9 @@ struct EngineProfile {
     /// contact persists into the next step (warm starting of friction), along that step's new
     /// friction direction; a contact whose normal impulse then comes out zero keeps it
     /// uncorrected. Bullet up to 2.88 (ammo.js 0.0.10 carries 2.83): 0.85; Bullet 2.89 and later
-    /// and the other engines' profiles: 0 [Limit: 0 .. 1].
+    /// and the other engines' profiles: 0 [Limit: 0 .. 1]. A Bullet profile with it above 0 also
+    /// keeps Bullet 2.83's contact manifolds against convex shapes: up to four points per surface,
+    /// each with its own warm-started normal and friction impulses (docs/engines.md, ammo.js).
     float frictionWarmStart = 0.0f;
     /// Largest linear speed the engine allows; faster bodies are slowed to it each step
     /// (Jolt: 500) [Units: m/s] [Limit: > 0].
