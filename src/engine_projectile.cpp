@@ -125,10 +125,12 @@ public:
         mRotates = mProfile.rotates && mRadius > 0.0;
         mAngularFactor = dampingFactor(mProfile.damping, mProfile.angularDamping, mRec.dt);
         mMeshContacts = mProfile.triangleMesh && mProfile.engine == PhysicsEngine::Bullet;
-        // Bullet 2.83 (ammo.js: the profile warm-starts friction): several points per manifold.
-        // Bullet 3.24 keeps them too, but its profile still solves one point per surface.
-        mManifold =
-            mProfile.engine == PhysicsEngine::Bullet && mProfile.frictionWarmStart > 0.0f && !mMeshContacts;
+        // Bullet 2.83 (ammo.js: the profile warm-starts friction) and Godot 3's Bullet 2.89:
+        // several points per manifold. Bullet 3.24 keeps them too, but its profile still solves
+        // one point per surface.
+        const bool warmFriction = mProfile.frictionWarmStart > 0.0f;
+        mManifold = (mProfile.engine == PhysicsEngine::Bullet && warmFriction && !mMeshContacts) ||
+                    mProfile.engine == PhysicsEngine::Godot3Bullet;
     }
 
     Status run(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps) {
@@ -585,6 +587,14 @@ private:
         s.restitution = 0.0f;
         s.friction = hit.friction;
         s.acting = true;
+        if (mManifold) {
+            // Its manifold lives for this step only: one point at the centre, no stored impulse.
+            s.pointCount = 1;
+            ManifoldPoint& p = s.points[0];
+            p.normal = n;
+            p.distance = s.gap;
+            p.onSurface = s.touch - n * mRadius;
+        }
     }
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
@@ -1108,37 +1118,6 @@ private:
                 break;
             }
         }
-        if (engine == PhysicsEngine::Godot3Bullet) {
-            // btSequentialImpulseConstraintSolver: every normal row, then every friction row,
-            // clamped by its normal row's impulse so far; a friction row whose normal impulse is
-            // 0 is skipped and keeps what it applied. The predictive contact comes first (its
-            // manifold is made before the narrow phase's).
-            int order[kMaxSurfaces] = {}, n = 0;
-            for (int i = 0; i < mCount; ++i)
-                if (mSurfaces[i].predictive) order[n++] = i;
-            for (int i = 0; i < mCount; ++i)
-                if (!mSurfaces[i].predictive) order[n++] = i;
-            // One friction row per contact (Bullet's default solver mode), along the slip of the
-            // sphere's contact point when the contacts are set up (after gravity).
-            for (int q = 0; q < n; ++q) {
-                Surface& s = mSurfaces[order[q]];
-                if (!s.acting) continue;
-                const DVec3 slip = v + glm::cross(mAngular, -contactArm(s) * s.normal);
-                const DVec3 tangential = slip - glm::dot(slip, s.normal) * s.normal;
-                s.tangent = glm::dot(tangential, tangential) > 1e-30 ? glm::normalize(tangential) : DVec3(0.0);
-            }
-            for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
-                for (int q = 0; q < n; ++q) {
-                    Surface& s = mSurfaces[order[q]];
-                    if (s.acting) normalRow(s, v, s.target);
-                }
-                for (int q = 0; q < n; ++q) {
-                    Surface& s = mSurfaces[order[q]];
-                    if (s.acting && s.normalImpulse > 0.0) frictionRowBullet(s, v);
-                }
-            }
-            return;
-        }
         if (mProfile.frictionWarmStart > 0.0f && engine == PhysicsEngine::Bullet) {
             solveBulletWarmStarted(v);
             return;
@@ -1218,6 +1197,13 @@ private:
         const double warmNormal = kBulletWarmStart;
         const double warmFriction = static_cast<double>(mProfile.frictionWarmStart);
         const DVec3 before = v0 * mRec.d, after = v, spin = mAngular;
+        // Godot 3 with Bullet: the predictive contact's manifold is made before the narrow
+        // phase's, so the solver meets its rows first.
+        int order[kMaxSurfaces] = {}, count = 0;
+        for (int i = 0; i < mCount; ++i)
+            if (mSurfaces[i].acting && mSurfaces[i].predictive) order[count++] = i;
+        for (int i = 0; i < mCount; ++i)
+            if (mSurfaces[i].acting && !mSurfaces[i].predictive) order[count++] = i;
         const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) {
             v += impulse;
             mAngular += invInertia * glm::cross(arm, impulse);
@@ -1226,9 +1212,10 @@ private:
             const DVec3 c = glm::cross(arm, d);
             return 1.0 / (1.0 + invInertia * glm::dot(c, c));
         };
-        for (int i = 0; i < mCount; ++i) {
-            Surface& s = mSurfaces[i];
-            if (!s.acting) continue;
+        for (int q = 0; q < count; ++q) {
+            Surface& s = mSurfaces[order[q]];
+            // The predictive contact never bounces (restitution 0).
+            const double e = s.predictive ? 0.0 : s.e;
             double push = 0.0;
             for (int j = 0; j < s.pointCount; ++j) {
                 ManifoldPoint& p = s.points[j];
@@ -1236,7 +1223,7 @@ private:
                 const double approach = glm::dot(before + glm::cross(spin, p.arm), n);
                 // No bounce below the restitution threshold (Bullet 2.87 and later; ammo.js: 0).
                 const bool slow = std::abs(approach) < mProfile.restitutionThreshold;
-                double target = slow ? 0.0 : std::max(0.0, -s.e * approach);
+                double target = slow ? 0.0 : std::max(0.0, -e * approach);
                 // A gap is the most the point may close; a shallow penetration is pushed out
                 // through the velocity (erp), a deeper one by the split impulse, which moves the body
                 // without staying in its velocity (the deepest point's, once per surface).
@@ -1267,9 +1254,8 @@ private:
             }
         }
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
-            for (int i = 0; i < mCount; ++i) {
-                Surface& s = mSurfaces[i];
-                if (!s.acting) continue;
+            for (int q = 0; q < count; ++q) {
+                Surface& s = mSurfaces[order[q]];
                 for (int j = 0; j < s.pointCount; ++j) {
                     ManifoldPoint& p = s.points[j];
                     const double vn = glm::dot(v + glm::cross(mAngular, p.arm), p.normal);
@@ -1278,9 +1264,8 @@ private:
                     p.normalImpulse = total;
                 }
             }
-            for (int i = 0; i < mCount; ++i) {
-                Surface& s = mSurfaces[i];
-                if (!s.acting) continue;
+            for (int q = 0; q < count; ++q) {
+                Surface& s = mSurfaces[order[q]];
                 for (int j = 0; j < s.pointCount; ++j) {
                     ManifoldPoint& p = s.points[j];
                     if (p.normalImpulse <= 0.0) continue;
@@ -1755,21 +1740,6 @@ private:
         if (size > limit) total *= size > 0.0 ? limit / size : 0.0;
         applyTangential(total - s.frictionImpulse, s.normal, radius, v);
         s.frictionImpulse = total;
-    }
-
-    // Bullet's single friction row along s.tangent, clamped to +- mu times the normal impulse.
-    void frictionRowBullet(Surface& s, DVec3& v) {
-        if (glm::dot(s.tangent, s.tangent) <= 0.0) return;
-        const double radius = contactArm(s);
-        const DVec3 arm = -radius * s.normal;
-        const double mass =
-            mRotates ? 1.0 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 1.0;
-        const double applied = glm::dot(s.frictionImpulse, s.tangent);
-        const double slip = glm::dot(v + glm::cross(mAngular, arm), s.tangent);
-        const double limit = s.mu * s.normalImpulse;
-        const double total = std::clamp(applied - mass * slip, -limit, limit);
-        applyTangential((total - applied) * s.tangent, s.normal, radius, v);
-        s.frictionImpulse += (total - applied) * s.tangent;
     }
 
     // PhysX 4.1 patch friction (DyContactPrep.cpp): two 1-D rows along orthogonal tangents t0 and

@@ -126,6 +126,8 @@ struct EngineProfile {
     /// and the other engines' profiles: 0 [Limit: 0 .. 1]. A Bullet profile with it above 0 also
     /// keeps Bullet 2.83's contact manifolds against convex shapes: up to four points per surface,
     /// each with its own warm-started normal and friction impulses (docs/engines.md, ammo.js).
+    /// The Godot 3 with Bullet profile always keeps them, with the normal impulses warm-started
+    /// and friction by this factor (0 for its Bullet 2.89).
     float frictionWarmStart = 0.0f;
     /// Largest linear speed the engine allows; faster bodies are slowed to it each step
     /// (Jolt: 500) [Units: m/s] [Limit: > 0].
