@@ -438,6 +438,7 @@ private:
         else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
         if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
+        if (mProfile.engine == PhysicsEngine::Godot3Bullet) clampMotionCcd(before);
         if (mProfile.engine == PhysicsEngine::Box2D) {
             // The impulses this step's discrete solve stores for the next step's warm start.
             for (int i = 0; i < mCount; ++i) {
@@ -595,6 +596,25 @@ private:
             p.distance = s.gap;
             p.onSurface = s.touch - n * mRadius;
         }
+    }
+
+    // Godot 3 with Bullet, after the solve: btDiscreteDynamicsWorld::integrateTransforms sweeps
+    // the same small CCD sphere along the step's solved motion (from where the split impulse
+    // left the body) and, when it hits a surface it approaches by more than the allowed 0.04 m,
+    // moves the body only up to the hit. The velocity is left as the solver made it.
+    void clampMotionCcd(const DVec3& before) {
+        if (mRadius <= 0.0) return;
+        const DVec3 from = before + mPushVelocity * mRec.dt;
+        const DVec3 motion = mPosition - from;
+        if (glm::dot(motion, motion) <= 1e-14) return;
+        SegmentCast c;
+        c.origin = toR(from);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
+        CastHit hit;
+        if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return;
+        if (glm::dot(glm::normalize(toD(hit.normal)), motion) >= -0.04) return;
+        mPosition = from + motion * static_cast<double>(hit.fraction);
     }
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
