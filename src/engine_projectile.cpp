@@ -571,14 +571,9 @@ private:
         const DVec3 motion = mVelocity * mRec.d * mRec.dt;
         const double length = glm::length(motion);
         if (length <= 0.0) return;
-        SegmentCast c;
-        c.origin = toR(mPosition);
-        c.displacement = toF(motion);
-        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
         CastHit hit;
-        if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return;
-        const DVec3 n = glm::normalize(toD(hit.normal));
-        if (glm::dot(n, motion) >= -0.04) return;  // btClosestNotMeConvexResultCallback's allowed penetration
+        DVec3 n;
+        if (!ccdSweep(mPosition, motion, hit, n)) return;
         Surface& s = mSurfaces[mCount++];
         s = Surface{};
         s.predictive = true;
@@ -598,6 +593,20 @@ private:
         }
     }
 
+    // Bullet's continuous-collision sweep for Godot 3's bodies: the small CCD sphere (0.2 of the
+    // shape's bounding sphere) cast along `motion` from `from`. True when it hits a surface within
+    // the motion that it approaches by more than btClosestNotMeConvexResultCallback's allowed
+    // penetration (0.04 m along the normal); `normal` is that surface's unit normal.
+    bool ccdSweep(const DVec3& from, const DVec3& motion, CastHit& hit, DVec3& normal) const {
+        SegmentCast c;
+        c.origin = toR(from);
+        c.displacement = toF(motion);
+        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
+        if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return false;
+        normal = glm::normalize(toD(hit.normal));
+        return glm::dot(normal, motion) < -0.04;
+    }
+
     // Godot 3 with Bullet, after the solve: btDiscreteDynamicsWorld::integrateTransforms sweeps
     // the same small CCD sphere along the step's solved motion (from where the split impulse
     // left the body) and, when it hits a surface it approaches by more than the allowed 0.04 m,
@@ -607,13 +616,9 @@ private:
         const DVec3 from = before + mPushVelocity * mRec.dt;
         const DVec3 motion = mPosition - from;
         if (glm::dot(motion, motion) <= 1e-14) return;
-        SegmentCast c;
-        c.origin = toR(from);
-        c.displacement = toF(motion);
-        c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
         CastHit hit;
-        if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return;
-        if (glm::dot(glm::normalize(toD(hit.normal)), motion) >= -0.04) return;
+        DVec3 n;
+        if (!ccdSweep(from, motion, hit, n)) return;
         mPosition = from + motion * static_cast<double>(hit.fraction);
     }
 
