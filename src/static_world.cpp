@@ -484,6 +484,107 @@ bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
 
 namespace {
 
+// The parameters t in [lo, hi] of a segment's points a + t (b - a), narrowed by slabs.
+struct Span {
+    double lo = 0.0, hi = 1.0;
+    bool unknown = false;  // a non-finite input: the answer is "touches at once"
+};
+
+// Narrows `span` to where s0 + t (s1 - s0) lies within [low, high].
+void clip(Span& span, double s0, double s1, double low, double high) {
+    if (!std::isfinite(s0) || !std::isfinite(s1) || !std::isfinite(low) || !std::isfinite(high)) {
+        span.unknown = true;
+        return;
+    }
+    const double ds = s1 - s0;
+    if (ds == 0.0) {
+        if (s0 < low || s0 > high) span.hi = -1.0;
+        return;
+    }
+    double t0 = (low - s0) / ds, t1 = (high - s0) / ds;
+    if (t0 > t1) std::swap(t0, t1);
+    span.lo = std::max(span.lo, t0);
+    span.hi = std::min(span.hi, t1);
+}
+
+// The answer of a first-touch test: the span's start, rounded down to float.
+bool touchAt(const Span& span, float& fraction) {
+    fraction = 0.0f;
+    if (span.unknown) return true;
+    if (!(span.lo <= span.hi)) return false;
+    float f = static_cast<float>(span.lo);
+    if (static_cast<double>(f) > span.lo) f = std::nextafter(f, 0.0f);
+    fraction = std::clamp(f, 0.0f, 1.0f);
+    return true;
+}
+
+}  // namespace
+
+bool firstTouch(const SegmentCast& capsule, const Plane& plane, float& fraction) {
+    fraction = 0.0f;
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dvec3 n(plane.normal);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) return true;
+    const double d = static_cast<double>(plane.distance);
+    Span span;
+    clip(span, (glm::dot(n, c.a) - d) / length, (glm::dot(n, c.b) - d) / length, -c.radius, c.radius);
+    return touchAt(span, fraction);
+}
+
+bool firstTouch(const SegmentCast& capsule, const Sphere& sphere, float& fraction) {
+    fraction = 0.0f;
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    // |a + t (b - a) - centre| <= reach: A t^2 + 2 B t + C <= 0.
+    const glm::dvec3 centre(sphere.center), ab = c.b - c.a, offset = c.a - centre;
+    const double reach = c.radius + static_cast<double>(sphere.radius) * (1.0 + 1e-6);
+    const double A = glm::dot(ab, ab), B = glm::dot(ab, offset), C = glm::dot(offset, offset) - reach * reach;
+    if (!std::isfinite(A + B + C)) return true;
+    if (C <= 0.0) return true;  // touching at the start
+    const double discriminant = B * B - A * C;
+    if (!(A > 0.0) || discriminant < 0.0) return false;
+    const double root = std::sqrt(discriminant);
+    Span span;
+    span.lo = std::max(0.0, (-B - root) / A);
+    span.hi = std::min(1.0, (-B + root) / A);
+    return touchAt(span, fraction);
+}
+
+bool firstTouch(const SegmentCast& capsule, const OrientedBox& box, float& fraction) {
+    fraction = 0.0f;
+    Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dquat q(box.orientation);
+    const double norm = glm::length(q);
+    if (!(norm > 0.0)) return true;
+    const glm::dquat inverse = glm::conjugate(q / norm);
+    const glm::dvec3 centre(box.center);
+    c.a = inverse * (c.a - centre);
+    c.b = inverse * (c.b - centre);
+    const glm::dvec3 half = glm::dvec3(box.halfExtents) * (1.0 + 1e-6) + c.radius;
+    Span span;
+    for (int axis = 0; axis < 3; ++axis) clip(span, c.a[axis], c.b[axis], -half[axis], half[axis]);
+    return touchAt(span, fraction);
+}
+
+bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fraction) {
+    fraction = 0.0f;
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    const glm::dvec3 p(triangle.a), q(triangle.b), r(triangle.c);
+    const glm::dvec3 lo = glm::min(p, glm::min(q, r)) - c.radius, hi = glm::max(p, glm::max(q, r)) + c.radius;
+    Span span;
+    for (int axis = 0; axis < 3; ++axis) clip(span, c.a[axis], c.b[axis], lo[axis], hi[axis]);
+    const glm::dvec3 n = glm::cross(q - p, r - p);
+    const double area2 = glm::length(n);
+    if (area2 > 0.0) clip(span, glm::dot(n, c.a - p) / area2, glm::dot(n, c.b - p) / area2, -c.radius, c.radius);
+    return touchAt(span, fraction);
+}
+
+namespace {
+
 // The smallest distance between the segments [p0, p1] and [q0, q1] (Ericson, Real-Time
 // Collision Detection, 5.1.9).
 double segmentDistance(const DVec3& p0, const DVec3& p1, const DVec3& q0, const DVec3& q1) {
@@ -680,6 +781,23 @@ bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     for (const Triangle& t : mTriangles)
         if (foresight::mayTouch(capsule, t)) return true;
     return false;
+}
+
+bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+    fraction = 1.0f;
+    bool touched = false;
+    const auto offer = [&](const auto& shape) {
+        float f = 1.0f;
+        if (!foresight::firstTouch(capsule, shape, f)) return;
+        touched = true;
+        fraction = std::min(fraction, f);
+    };
+    for (const Plane& p : mPlanes) offer(p);
+    for (const Sphere& s : mSpheres) offer(s);
+    for (const OrientedBox& b : mBoxes) offer(b);
+    for (const Triangle& t : mTriangles) offer(t);
+    if (!touched) fraction = 0.0f;
+    return touched;
 }
 
 FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {

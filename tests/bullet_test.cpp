@@ -652,12 +652,12 @@ TEST(BulletWorld, CollisionFilter) {
 }
 
 // BulletScene refuses what StaticWorld refuses, with the same Status, and adds nothing then.
-// mayTouch and isOnlyPlane find their candidates with Bullet's broadphase (and a mesh's own
+// mayTouch, firstTouch and isOnlyPlane find their candidates with Bullet's broadphase (and a mesh's own
 // BVH) and test them as StaticWorld does: the same answers as StaticWorld on the same shapes,
 // and the promises hold against BulletWorld's own casts. The yard (planes, spheres, boxes, a
 // mesh), and a floor of 1 m tiles with a hole and a box on it (a Bullet mesh: isOnlyPlane makes
 // no promise there, Bullet's own sweep answers for it).
-TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
+TEST(BulletWorld, MayTouchFirstTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
     TwinWorld yard;
     buildYard(yard);
     TwinWorld tiles;
@@ -674,6 +674,7 @@ TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
     ASSERT_EQ(floor.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
     Random random(515);
     int touchAgree = 0, touchCases = 0, planeAgree = 0, planeCases = 0, yardPlaneCases = 0, promises = 0, clear = 0;
+    int firstCuts = 0;
     for (TwinWorld* w : {&yard, &tiles}) {
         const BulletWorld bullet(w->scene.world());
         for (int i = 0; i < 4000; ++i) {
@@ -702,6 +703,28 @@ TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
                     CastHit hit;
                     ASSERT_FALSE(bullet.castSegment(inside, hit)) << "case " << i;
                 }
+            }
+            float fraction = -1.0f;
+            if (bullet.firstTouch(capsule, fraction)) {
+                ASSERT_TRUE(fraction >= 0.0f && fraction <= 1.0f) << "case " << i;
+                EXPECT_TRUE(touch) << "a first touch that mayTouch rules out, case " << i;
+                firstCuts += fraction > 0.0f ? 1 : 0;
+            } else {
+                fraction = 1.0f;
+            }
+            // firstTouch's promise: swept spheres inside the capsule cut at the fraction (0.999 of
+            // it: its end is where a surface may touch) hit nothing.
+            for (int k = 0; k < 4 && fraction > 0.0f; ++k) {
+                const DVec3 cut = d * (0.999 * static_cast<double>(fraction));
+                const DVec3 from = a + cut * random.uniform(0, 1) +
+                                   random.direction() * random.uniform(0, 0.3) * static_cast<double>(capsule.radius);
+                const DVec3 to = a + cut * random.uniform(0, 1);
+                SegmentCast inside;
+                inside.origin = toR(from);
+                inside.displacement = toF(to - from);
+                inside.radius = capsule.radius * 0.5f;
+                CastHit hit;
+                ASSERT_FALSE(bullet.castSegment(inside, hit)) << "case " << i << " cast " << k;
             }
             if (onFloor) {
                 foresight::PlaneRegion region;
@@ -754,6 +777,7 @@ TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
     EXPECT_GT(promises, yardPlaneCases / 4);
     EXPECT_GT(planeCases, yardPlaneCases);
     EXPECT_GT(clear, touchCases / 20);
+    EXPECT_GT(firstCuts, touchCases / 20);
 }
 
 TEST(BulletScene, RefusesInvalidShapes) {

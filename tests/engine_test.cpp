@@ -323,8 +323,8 @@ TEST(EngineProjectile, RenderedPositionBetweenSteps) {
 namespace {
 
 // Forwards to a world and counts the queries; with `answerTouch` false it leaves mayTouch at
-// CollisionWorld's default (always true), so the Engine method casts every free-flight step;
-// with `answerPlane` false it leaves isOnlyPlane at its default (false), so it casts every step
+// CollisionWorld's default (always true), so the Engine method casts every free-flight step
+// (and firstTouch says "at once"); with `answerPlane` false it leaves isOnlyPlane at its default (false), so it casts every step
 // in contact.
 class CountingWorld final : public CollisionWorld {
 public:
@@ -337,6 +337,11 @@ public:
     bool mayTouch(const SegmentCast& capsule) const override {
         ++touches;
         return mAnswerTouch ? mWorld.mayTouch(capsule) : true;
+    }
+    bool firstTouch(const SegmentCast& capsule, float& fraction) const override {
+        ++touches;
+        fraction = 0.0f;
+        return mAnswerTouch ? mWorld.firstTouch(capsule, fraction) : true;
     }
     bool isOnlyPlane(const PlaneRegion& region) const override {
         if (!mAnswerPlane) return false;
@@ -387,7 +392,7 @@ StaticWorld randomScene(ftest::Random& random) {
 
 }  // namespace
 
-// Coasting (one mayTouch query for many free-flight steps) must give exactly the steps of casting
+// Coasting (one firstTouch query for many free-flight steps) must give exactly the steps of casting
 // every step: the same arithmetic, only the queries are skipped. Random scenes, every profile.
 TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
     ftest::Random random(2026);
@@ -607,6 +612,122 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
     // Both answers occur (the test exercises both sides).
     EXPECT_GT(clear, 1000);
     EXPECT_GT(touched, 1000);
+}
+
+// firstTouch's promise, checked against the casts: no sphere cast inside the capsule cut at the
+// fraction it gives (along it, across it, back) hits anything; when it says false, none inside
+// the whole capsule does.
+TEST(StaticWorldTouch, NoCastBeforeTheFirstTouchHits) {
+    ftest::Random random(78);
+    int clear = 0, cut = 0, atOnce = 0;
+    for (int round = 0; round < 200; ++round) {
+        const StaticWorld world = randomScene(random);
+        for (int i = 0; i < 50; ++i) {
+            SegmentCast capsule;
+            capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));
+            capsule.displacement = Vec3(static_cast<float>(random.uniform(-6, 6)), static_cast<float>(random.uniform(-6, 6)),
+                                        static_cast<float>(random.uniform(-6, 6)));
+            capsule.radius = static_cast<float>(random.uniform(0, 0.8));
+            float fraction = -1.0f;
+            double reach = 1.0;
+            if (world.firstTouch(capsule, fraction)) {
+                ASSERT_GE(fraction, 0.0f);
+                ASSERT_LE(fraction, 1.0f);
+                EXPECT_TRUE(world.mayTouch(capsule)) << "a touch that mayTouch rules out";
+                reach = fraction;
+                if (fraction == 0.0f) {
+                    ++atOnce;
+                    continue;
+                }
+                ++cut;
+            } else {
+                ++clear;
+            }
+            const ftest::DVec3 a = ftest::toD(capsule.origin), d = ftest::toD(capsule.displacement) * reach;
+            for (int k = 0; k < 8; ++k) {
+                const double r = capsule.radius * random.uniform(0, 0.9);
+                const double slack = (capsule.radius - r) * 0.9;
+                const ftest::DVec3 side = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
+                                   random.uniform(0, slack);
+                // 0.999: the cut's own end is where the first surface may touch.
+                const ftest::DVec3 from = a + d * random.uniform(0, 0.999) + side, to = a + d * random.uniform(0, 0.999) + side;
+                SegmentCast cast;
+                cast.origin = RVec3(from);
+                cast.displacement = Vec3(to - from);
+                cast.radius = static_cast<float>(r);
+                CastHit hit;
+                EXPECT_FALSE(world.castSegment(cast, hit)) << "round " << round << " capsule " << i << " cast " << k;
+            }
+        }
+    }
+    // Every answer occurs (the test exercises each).
+    EXPECT_GT(clear, 500);
+    EXPECT_GT(cut, 500);
+    EXPECT_GT(atOnce, 500);
+}
+
+// firstTouch is exact for spheres and planes, and for a box or a triangle met face on: the
+// fraction where the segment's point first comes within the radius, computed here in closed form
+// (the distance to a sphere's centre, a plane's height), less the tests' documented margin of
+// 1e-4 m (and 1e-6 of the coordinates) for rounding.
+TEST(StaticWorldTouch, FirstTouchIsExactForSpheresPlanesAndFacesMetHeadOn) {
+    ftest::Random random(79);
+    for (int i = 0; i < 2000; ++i) {
+        const double radius = random.uniform(0.0, 0.5), length = random.uniform(1.0, 10.0);
+        const ftest::DVec3 direction = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, -0.2), random.uniform(-1, 1)));
+        const ftest::DVec3 start(random.uniform(-2, 2), random.uniform(3, 6), random.uniform(-2, 2));
+        SegmentCast capsule;
+        capsule.origin = RVec3(start);
+        capsule.displacement = Vec3(direction * length);
+        capsule.radius = static_cast<float>(radius);
+        const ftest::DVec3 a = ftest::toD(capsule.origin), d = ftest::toD(capsule.displacement);
+        const double margin = 1e-4 + 1e-6 * 16.0 + 1e-9;
+
+        // The floor plane y = 0: the height a.y + t d.y falls to the radius.
+        const Plane plane{Vec3(0, 1, 0), 0};
+        float fraction = -1.0f;
+        const double planeEntry = (a.y - radius) / -d.y;
+        if (planeEntry <= 1.0) {
+            ASSERT_TRUE(firstTouch(capsule, plane, fraction));
+            EXPECT_NEAR(fraction, std::max(0.0, planeEntry), margin / -d.y + 1e-6) << i;
+            EXPECT_LE(fraction, std::max(0.0, planeEntry) + 1e-6) << i;
+        }
+
+        // A sphere on the segment's way, 0.3 m off its line: |a + t d - c| = R + s.
+        const Sphere sphere{RVec3(a + d * random.uniform(0.3, 0.9) + ftest::DVec3(0.3, 0, 0)), static_cast<float>(random.uniform(0.1, 1))};
+        const ftest::DVec3 c = ftest::toD(sphere.center), offset = a - c;
+        const double reach = radius + static_cast<double>(sphere.radius);
+        const double A = glm::dot(d, d), B = glm::dot(d, offset), C = glm::dot(offset, offset) - reach * reach;
+        const double disc = B * B - A * C;
+        if (disc > 0.0) {
+            const double entry = (-B - std::sqrt(disc)) / A;
+            ASSERT_TRUE(firstTouch(capsule, sphere, fraction)) << i;
+            // A margin m in the reach moves the entry by about m / (the distance's rate of
+            // change there, sqrt(disc) / reach per unit of t); twice that for the second order.
+            const double rate = std::sqrt(disc) / reach;
+            EXPECT_LE(fraction, std::max(0.0, entry) + 1e-6) << i;
+            EXPECT_GE(fraction, std::max(0.0, entry) - 2.0 * (margin + 1e-6 * reach) / rate - 1e-6) << i;
+        }
+
+        // A box below, its top face at y = 0.5, and a triangle in the plane y = 1, both far wider
+        // than the path: met face on, their first touch is the plane's.
+        const OrientedBox box{RVec3(0, 0, 0), Vec3(100, 0.5f, 100), Quat(1, 0, 0, 0)};
+        const double boxEntry = (a.y - 0.5 - radius) / -d.y;
+        if (boxEntry <= 1.0) {
+            ASSERT_TRUE(firstTouch(capsule, box, fraction));
+            EXPECT_NEAR(fraction, std::max(0.0, boxEntry), margin / -d.y + 1e-5) << i;
+            EXPECT_LE(fraction, std::max(0.0, boxEntry) + 1e-6) << i;
+        }
+        const Triangle triangle{RVec3(-100, 1, -100), RVec3(0, 1, 100), RVec3(100, 1, -100)};
+        const double triangleEntry = (a.y - 1.0 - radius) / -d.y;
+        if (triangleEntry <= 1.0) {
+            ASSERT_TRUE(firstTouch(capsule, triangle, fraction));
+            EXPECT_NEAR(fraction, std::max(0.0, triangleEntry), margin / -d.y + 1e-5) << i;
+            EXPECT_LE(fraction, std::max(0.0, triangleEntry) + 1e-6) << i;
+        } else {
+            EXPECT_FALSE(firstTouch(capsule, triangle, fraction)) << i;
+        }
+    }
 }
 
 // A shape's own material reaches the cast that hits it (and only that one), and the engine

@@ -145,6 +145,21 @@ bool mayTouch(const SegmentCast& capsule, const OrientedBox& box);
 /// See mayTouch(const SegmentCast&, const Plane&). The bounds, then the triangle's plane.
 bool mayTouch(const SegmentCast& capsule, const Triangle& triangle);
 
+/// Conservative first-touch tests, for CollisionWorld::firstTouch of worlds that find their
+/// candidate shapes themselves: false only when the shape is certainly farther than
+/// `capsule.radius` from the whole segment; true sets `fraction` [Limit: 0 .. 1] no later than the
+/// first point of the segment within that distance of the shape (with a margin for rounding).
+/// Planes and spheres are exact; boxes use the box grown by the radius, triangles their bounds
+/// grown by the radius and the slab of their plane. Unvalidated shapes give unspecified answers
+/// but never undefined behaviour. No allocation.
+bool firstTouch(const SegmentCast& capsule, const Plane& plane, float& fraction);
+/// See firstTouch(const SegmentCast&, const Plane&, float&).
+bool firstTouch(const SegmentCast& capsule, const Sphere& sphere, float& fraction);
+/// See firstTouch(const SegmentCast&, const Plane&, float&).
+bool firstTouch(const SegmentCast& capsule, const OrientedBox& box, float& fraction);
+/// See firstTouch(const SegmentCast&, const Plane&, float&).
+bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fraction);
+
 /// The test behind CollisionWorld::isOnlyPlane, offered one shape at a time, for worlds that find
 /// their candidate shapes themselves (as ClosestHitCaster is for casts). A shape that reaches
 /// into the region must lie in the plane with the region's material: an infinite plane covers
@@ -246,6 +261,9 @@ public:
 
     /// Every shape through the conservative mayTouch tests above (a linear scan).
     bool mayTouch(const SegmentCast& capsule) const override;
+
+    /// Every shape through the conservative firstTouch tests above (a linear scan): the earliest.
+    bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
 
     /// Every shape through PlaneRegionTester (a linear scan). False unless the world has the
     /// default surface tolerance (the promise is about a plane with that tolerance).

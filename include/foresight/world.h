@@ -70,6 +70,20 @@ public:
         return true;
     }
 
+    /// How far along `capsule` nothing may touch it: mayTouch's question, answered with a place.
+    /// False is mayTouch's promise (nothing within the whole capsule). True sets `fraction`
+    /// [Limit: 0 .. 1] so that no surface comes within `capsule.radius` of the segment's points
+    /// `origin + t * displacement` for t < fraction: the capsule cut at `fraction` is clear, and a
+    /// castSegment whose swept sphere stays inside that part hits nothing. A fraction earlier than
+    /// the real first touch only costs speed. ProjectileMethod::Engine asks it to clear the free
+    /// flight up to the step before the first possible contact with one query. The default answers
+    /// from mayTouch (fraction 0 when it says true), so a world that implements only mayTouch, or
+    /// only castSegment, stays correct.
+    virtual bool firstTouch(const SegmentCast& capsule, float& fraction) const {
+        fraction = 0.0f;
+        return mayTouch(capsule);
+    }
+
     /// Whether, inside `region.capsule`, the world is the plane of `region` and nothing else: every
     /// surface that reaches into the capsule lies in that plane and has the region's material, and
     /// together they cover the plane's whole cross-section with the capsule. True is a promise: a

@@ -723,4 +723,68 @@ bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
     return q.touched;
 }
 
+namespace {
+
+struct FirstTouchQuery {
+    const Triangle* triangles = nullptr;
+    SegmentCast capsule;
+    bool touched = false;
+    float fraction = 1.0f;
+};
+
+bool firstTouchCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<FirstTouchQuery*>(args->userPtr);
+    float f = 1.0f;
+    if (!firstTouch(q->capsule, q->triangles[args->primID], f)) return false;
+    q->touched = true;
+    q->fraction = std::min(q->fraction, f);
+    if (q->fraction > 0.0f) return false;
+    args->query->radius = 0.0f;  // touching at the start: nothing can come earlier
+    return true;
+}
+
+}  // namespace
+
+bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+    FirstTouchQuery q;
+    q.touched = mPrimitives.firstTouch(capsule, q.fraction);
+    if (!q.touched) q.fraction = 1.0f;
+    const Impl* impl = mImpl.get();
+    if (impl && !impl->triangles.empty() && q.fraction > 0.0f) {
+        q.triangles = impl->triangles.data();
+        q.capsule = capsule;
+        RTCPointQuery query;
+        if (!impl->committed || !impl->scene) {
+            for (const Triangle& t : impl->triangles) {
+                float f = 1.0f;
+                if (!foresight::firstTouch(capsule, t, f)) continue;
+                q.touched = true;
+                q.fraction = std::min(q.fraction, f);
+            }
+        } else {
+            // Piece by piece from the start (each point query's sphere holds one piece): a shape
+            // whose first touch lies in a piece is within that piece's sphere, so the pieces
+            // that start after the earliest touch found so far cannot hold an earlier one.
+            const double length = glm::length(DVec3(capsule.displacement));
+            const double radius = std::max(1e-3, 2.0 * static_cast<double>(capsule.radius));
+            const int pieces = static_cast<int>(std::clamp(std::ceil(length / radius), 1.0, 8.0));
+            for (int i = 0; i < pieces && static_cast<double>(q.fraction) > static_cast<double>(i) / pieces; ++i) {
+                SegmentCast piece = capsule;
+                piece.origin = RVec3(toD(capsule.origin) + DVec3(capsule.displacement) * (double(i) / pieces));
+                piece.displacement = capsule.displacement * (1.0f / static_cast<float>(pieces));
+                if (!capsuleQuery(piece, query)) {
+                    q.touched = true;  // beyond Embree's float range: "maybe, at once"
+                    q.fraction = 0.0f;
+                    break;
+                }
+                RTCPointQueryContext context;
+                rtcInitPointQueryContext(&context);
+                rtcPointQuery(impl->scene, &query, &context, firstTouchCallback, &q);
+            }
+        }
+    }
+    fraction = q.touched ? q.fraction : 0.0f;
+    return q.touched;
+}
+
 FORESIGHT_NAMESPACE_END

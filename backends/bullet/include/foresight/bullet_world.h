@@ -95,6 +95,9 @@ public:
     /// 2 mm closer, as Bullet's own sweep stops up to 1 mm early) through foresight's
     /// conservative tests; any other shape answers "maybe".
     bool mayTouch(const SegmentCast& capsule) const override;
+    /// The same objects through foresight's conservative firstTouch tests: the earliest; any
+    /// other shape answers "maybe, at once" (fraction 0).
+    bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
     /// The same objects: planes, spheres and boxes through PlaneRegionTester. A concave shape's
     /// triangle within reach, any other shape, or a surface tolerance other than the default
     /// answers false: Bullet's own sweeps answer for those, up to 1 mm and a few degrees off

@@ -175,6 +175,9 @@ public:
     /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
     /// capsule) whose candidates go through mayTouch(capsule, triangle); it stops at the first.
     bool mayTouch(const SegmentCast& capsule) const override;
+    /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
+    /// capsule) whose candidates go through firstTouch(capsule, triangle, fraction): the earliest.
+    bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
     /// The primitives and the mesh triangles that one Embree point query (a sphere holding the
     /// capsule) finds, through PlaneRegionTester; it stops at the first that rules the region out.
     bool isOnlyPlane(const PlaneRegion& region) const override;
