@@ -213,7 +213,7 @@ class App;
 
 namespace foresight_cli {
 
-/// The options of `foresight netsim` as given (checked by netsimCommand; tools/README.md).
+/// The options of `foresight netsim` as given (checked by netsimCommand; docs/netsim.md).
 struct NetsimOptions {
     std::vector<std::string> trajectories;   ///< built-in names or "all"; empty: all (none with --csv).
     std::string csvFile;                     ///< a CSV trajectory (netsim::parseTrajectoryCsv).
