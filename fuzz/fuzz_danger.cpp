@@ -1,4 +1,4 @@
-// `foresight danger`: a scenario with danger keys (tools/README.md) through buildDangerInput and
+// `foresight danger`: a scenario with danger keys (docs/danger-format.md) through buildDangerInput and
 // runDanger, as dangerCommand runs them.
 #include "fuzz_json.h"
 

@@ -1,4 +1,4 @@
-// `foresight plan`: a world and throws (tools/README.md) through buildPlanDocument, runPlans and
+// `foresight plan`: a world and throws (docs/plan-format.md) through buildPlanDocument, runPlans and
 // the result document, as planCommand runs them.
 #include "fuzz_json.h"
 

@@ -725,7 +725,7 @@ TEST(AimScan, QuarticSolverAgreesWithABruteForceTimeScan) {
     EXPECT_EQ(r.unmatched, 0u);
 }
 
-// The million of the issue: `foresight_aim_tests --gtest_also_run_disabled_tests
+// The long run, a million problems: `foresight_aim_tests --gtest_also_run_disabled_tests
 // --gtest_filter='AimScan.DISABLED_*'` (about a minute in Release).
 TEST(AimScan, DISABLED_MillionRandomProblems) {
     const ScanReport r = compareWithScan(1000000, 1000, 0x1234567);

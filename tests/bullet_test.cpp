@@ -570,7 +570,7 @@ TEST(BulletWorld, ProjectilesStayInAClosedRoom) {
     // trajectories (bounces off the boulder, corners) amplify it, so the bound is on most
     // throws, not all. Not in a FORESIGHT_DOUBLE_PRECISION build: there (with Bullet in float)
     // 10 to 20% of the throws end elsewhere (90th percentile 0.5 to 0.7 m), which is not
-    // understood yet (all still stay inside): an open issue of foresight::bullet.
+    // understood yet (all still stay inside): an open problem of foresight::bullet.
     if (!foresight::kDoublePrecision) {
         EXPECT_LE(quantile(0.9), 1e-3);
     }

@@ -1401,7 +1401,7 @@ TEST_F(cli, DemoHtmlIsOneSelfContainedPageWithThePictureDocument) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// plan: throw planning (tools/README.md). Every plan is checked with `foresight predict`: its
+// plan: throw planning (docs/plan-format.md). Every plan is checked with `foresight predict`: its
 // velocity, thrown with the same settings, ends within the acceptance radius of the target.
 
 namespace {
@@ -1802,7 +1802,7 @@ TEST_F(cli, DeadReckoningFieldsAreRequiredWhenTheAlgorithmUsesThem) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// danger: grenade danger zones and vehicles against characters (tools/README.md)
+// danger: grenade danger zones and vehicles against characters (docs/danger-format.md)
 
 namespace {
 
@@ -1910,7 +1910,7 @@ TEST_F(cli, DangerPicturesDrawTheDangerZones) {
     EXPECT_NE(bad.err.find("x.svg"), std::string::npos) << bad.err;
 }
 
-// tools/README.md's grenade with contact_radius 0.3: at the throw point it is unsafe from the
+// docs/examples/danger.json's grenade with contact_radius 0.3: at the throw point it is unsafe from the
 // throw (time 0) on, and safe before it (not thrown yet), as danger_start (0) says.
 TEST_F(cli, DangerBeforeTheThrowIsSafe) {
     const CliRun run = runCli({"danger", "-"}, R"({"world": {"planes": [{"normal": [0, 1, 0], "distance": 0}]},

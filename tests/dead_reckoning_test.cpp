@@ -419,7 +419,7 @@ TEST(DeadReckoning, CoordinatedTurnCirclesCloseOnThemselves) {
             SCOPED_TRACE(std::string(name(algorithm)) + " centre x " + std::to_string(centre.x));
             const DeadReckoningState s = circle.state(algorithm, centre);
             // The rate and the times are floats (6e-8 relative): on a 5 km radius the angle is
-            // off by about 2 pi 1e-7, 3e-3 m of arc. 0.01 m is the brief's bar.
+            // off by about 2 pi 1e-7, 3e-3 m of arc. 0.01 m is the bar this test sets.
             for (int eighth = 1; eighth <= 8; ++eighth) {
                 const double angle = eighth * kPi / 4.0;
                 const DeadReckoningResult out = predict(s, static_cast<float>(circle.period() * eighth / 8.0));

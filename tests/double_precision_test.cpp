@@ -32,7 +32,7 @@ TEST(DoublePrecision, CharacterAtGeocentricScaleResolvesMicrometres) {
     foresight::PointState out;
     ASSERT_EQ(foresight::predictLinear(start, 1.0f, out), Status::Ok);
     // double positions at 6.4e6 m have a spacing of 9.3e-10 m; the float velocity 0.01f is
-    // 0.01 to 2.2e-10 m/s. 1e-6 m is what the brief asks and is 1000 spacings.
+    // 0.01 to 2.2e-10 m/s. 1e-6 m, the bar here, is 1000 spacings.
     EXPECT_NEAR(out.position.x - kEarth, static_cast<double>(0.01f), 1e-6);
     EXPECT_NE(out.position.x, start.position.x); // it moved at all (a float position would not)
     EXPECT_EQ(out.position.y, start.position.y);

@@ -212,7 +212,7 @@ struct Throw {
 };
 
 const Throw kThrows[] = {
-    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.0f}, // the spec's grenade
+    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.0f}, // the scenario format's example grenade
     {{1, 2, -1}, {3, 8, -2}, 3.0f, 0.7f, 0.0f},
     {{0, 1, 0}, {0, 0, 0}, 2.0f, 0.5f, 0.0f},    // a drop
     {{0, 1, 8}, {0, 2, 15}, 2.0f, 0.9f, 0.0f},   // into the wall early

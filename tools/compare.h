@@ -27,7 +27,7 @@ inline constexpr double kBounceSpeed = 0.5;
 struct CompareOptions {
     float frequency = 960.0f;  ///< Bullet's internal step rate [Units: Hz] [Limit: 240 .. 100000].
     bool spin = false;         ///< let the simulated sphere rotate (default: locked, like a point mass).
-    bool builtin = false;      ///< the built-in scenes instead of a file; prints the README's table.
+    bool builtin = false;      ///< the built-in scenes instead of a file; prints the table of docs/results.md.
     std::string jsonFile;      ///< also write the full comparison as JSON here ("-": standard output).
     /// With a name (jolt, physx, rapier, ammo, bullet, godot3, godot3-bullet, box2d): run the
     /// scenario's projectiles in that real engine instead of Bullet (compareEngineCommand).

@@ -4,7 +4,7 @@
 ///
 /// The input is a scenario (the format of `foresight predict`, validated by the same code, so
 /// its problems have the same paths) whose projectile and vehicle predictions carry danger keys
-/// (tools/README.md documents them): projectiles `blast_radius` (required), `contact_radius` and
+/// (see docs/danger-format.md): projectiles `blast_radius` (required), `contact_radius` and
 /// `points`; vehicles `half_extents`, `box_center` and `characters`; the root `tolerance`.
 /// The output is one JSON document: per prediction its danger zone and per-point answers
 /// (projectiles), or per character its first contact and closest approach (vehicles).

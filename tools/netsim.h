@@ -12,7 +12,7 @@
 /// - simulateTrajectory: for each dead-reckoning model a DeadReckoningSender ticking at the send
 ///   rate, its updates through the link, and one DeadReckoningReceiver per smoothing rendering at
 ///   the render rate; the per-frame errors summarised.
-/// - Reports: textTable (the default output), markdownTable (the README's table), svgChart
+/// - Reports: textTable (the default output), markdownTable (the table of docs/results.md), svgChart
 ///   (position error over time). The JSON report is in the command (netsim_command.cpp).
 /// Everything is deterministic: the same settings give the same bytes.
 
@@ -198,7 +198,7 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
 std::string settingsLine(const SimulationSettings& settings);
 /// The default output: one row per trajectory, model and display, aligned columns.
 std::string textTable(const std::vector<TrajectoryResult>& results, const SimulationSettings& settings);
-/// The README's table (Markdown): one row per trajectory and model, one column per display,
+/// docs/results.md's table (Markdown): one row per trajectory and model, one column per display,
 /// cells "p95 / max [m] / jumps", followed by the settings line.
 std::string markdownTable(const std::vector<TrajectoryResult>& results, const SimulationSettings& settings);
 /// An SVG chart of position error over time for one trajectory's model: one line per display,
@@ -213,7 +213,7 @@ class App;
 
 namespace foresight_cli {
 
-/// The options of `foresight netsim` as given (checked by netsimCommand; tools/README.md).
+/// The options of `foresight netsim` as given (checked by netsimCommand; docs/netsim.md).
 struct NetsimOptions {
     std::vector<std::string> trajectories;   ///< built-in names or "all"; empty: all (none with --csv).
     std::string csvFile;                     ///< a CSV trajectory (netsim::parseTrajectoryCsv).
@@ -241,7 +241,7 @@ struct NetsimOptions {
     double teleportDistance = 10;            ///< [Units: m] > 0: receivers snap beyond it.
     bool csvGiven = false;                   ///< --csv was given (an empty name is refused).
     bool json = false;                       ///< JSON on standard output instead of the table.
-    bool markdown = false;                   ///< the README's Markdown table instead.
+    bool markdown = false;                   ///< the Markdown table of docs/results.md instead.
     std::string svgFile;                     ///< also write the error chart here.
 };
 

@@ -4,7 +4,7 @@
 /// a scenario's `gravity` and `world` and a list of `throws` (start, target, fuse, speed cap,
 /// ...); the output lists, per throw, the plans found (launch velocity, final position,
 /// distance, bounces, first impact and, on request, the trajectory). Format and rules:
-/// tools/README.md. Validation as `foresight predict` (scenario.h): one line `path: message`
+/// docs/plan-format.md. Validation as `foresight predict` (scenario.h): one line `path: message`
 /// per problem, all of them in one run, exit status 2 with nothing on standard output.
 
 #include "scenario.h"

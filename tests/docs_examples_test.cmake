@@ -1,0 +1,166 @@
+# ctest's cli.docs_examples: the documentation's examples are real.
+#
+# 1. Every fenced block that a page marks with `<!-- example: PATH -->` on the line before it
+#    (README.md and docs/*.md; PATH relative to the repository's root) must equal the file PATH,
+#    byte for byte, so that a page and its example file cannot drift apart; and every file in
+#    docs/examples/ must be shown by some page.
+# 2. The CLI runs every example file the way its page says; each run must exit with status 0
+#    and print well-formed JSON (or a well-formed SVG) with the expected top-level members.
+# 3. With the viewer built, the picture document the CLI embeds in its HTML page for
+#    docs/examples/picture-scenario.json must equal docs/examples/picture.json as JSON.
+#
+# Variables: CLI (the foresight binary), SOURCE_DIR (the repository), WORK_DIR (scratch),
+# VIEWER (ON when the CLI can write --html pages).
+cmake_minimum_required(VERSION 3.19)
+
+set(failures 0)
+macro(fail message)
+    message(SEND_ERROR "${message}")
+    math(EXPR failures "${failures} + 1")
+endmacro()
+
+# --- 1. Pages against their example files ------------------------------------------------------
+file(GLOB pages RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/README.md" "${SOURCE_DIR}/docs/*.md")
+set(shown "")
+foreach(page IN LISTS pages)
+    file(READ "${SOURCE_DIR}/${page}" text)
+    set(marker "<!-- example: ")
+    while(TRUE)
+        string(FIND "${text}" "${marker}" at)
+        if(at EQUAL -1)
+            break()
+        endif()
+        string(LENGTH "${marker}" markerLength)
+        math(EXPR pathStart "${at} + ${markerLength}")
+        string(SUBSTRING "${text}" ${pathStart} -1 text)
+        string(FIND "${text}" " -->" pathEnd)
+        string(SUBSTRING "${text}" 0 ${pathEnd} path)
+        list(APPEND shown "${path}")
+        # The fence must open on the next line; the block runs to the next line that is a fence.
+        string(FIND "${text}" "\n" lineEnd)
+        math(EXPR next "${lineEnd} + 1")
+        string(SUBSTRING "${text}" ${next} -1 text)
+        string(SUBSTRING "${text}" 0 3 fence)
+        if(NOT fence STREQUAL "```")
+            fail("${page}: the example marker for ${path} is not followed by a fenced block")
+            continue()
+        endif()
+        string(FIND "${text}" "\n" lineEnd)
+        math(EXPR next "${lineEnd} + 1")
+        string(SUBSTRING "${text}" ${next} -1 text)
+        string(FIND "${text}" "\n```" close)
+        if(close EQUAL -1)
+            fail("${page}: the block for ${path} is not closed")
+            break()
+        endif()
+        math(EXPR blockLength "${close} + 1")
+        string(SUBSTRING "${text}" 0 ${blockLength} block)
+        if(NOT EXISTS "${SOURCE_DIR}/${path}")
+            fail("${page}: shows ${path}, which does not exist")
+        else()
+            file(READ "${SOURCE_DIR}/${path}" expected)
+            if(NOT block STREQUAL expected)
+                fail("${page}: the block shown for ${path} differs from the file (copy the file into the page)")
+            endif()
+        endif()
+        string(SUBSTRING "${text}" ${blockLength} -1 text)
+    endwhile()
+endforeach()
+file(GLOB examples RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/docs/examples/*")
+foreach(example IN LISTS examples)
+    if(NOT example IN_LIST shown)
+        fail("${example} is shown by no page (mark its block with <!-- example: ${example} -->)")
+    endif()
+endforeach()
+
+# --- 2. The CLI on every example ---------------------------------------------------------------
+set(dir "${SOURCE_DIR}/docs/examples")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+
+# run(NAME MEMBER ARGS...): runs the CLI with ARGS; the output must be JSON with MEMBER (an array
+# or object at the top level).
+function(run name member)
+    execute_process(COMMAND "${CLI}" ${ARGN}
+        RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT status EQUAL 0)
+        message(SEND_ERROR "${name}: foresight ${ARGN} exited with ${status}:\n${err}")
+        set(failed 1 PARENT_SCOPE)
+        return()
+    endif()
+    string(JSON type ERROR_VARIABLE jsonError TYPE "${out}" ${member})
+    if(jsonError)
+        message(SEND_ERROR "${name}: the output is not JSON with \"${member}\": ${jsonError}\n${out}")
+        set(failed 1 PARENT_SCOPE)
+        return()
+    endif()
+    set(output "${out}" PARENT_SCOPE)
+    message(STATUS "${name}: ok (${member} is ${type})")
+endfunction()
+
+# Every input prediction, shot or throw gets one result, in order.
+function(same_length name input member output)
+    file(READ "${input}" text)
+    string(JSON wanted LENGTH "${text}" ${member})
+    string(JSON got LENGTH "${output}" ${member})
+    if(NOT wanted EQUAL got)
+        message(SEND_ERROR "${name}: ${got} results for ${wanted} inputs")
+        set(failed 1 PARENT_SCOPE)
+    endif()
+endfunction()
+
+set(failed 0)
+run(predict predictions predict "${dir}/scenario.json")
+same_length(predict "${dir}/scenario.json" predictions "${output}")
+run(predict.engine predictions predict "${dir}/engine.json")
+same_length(predict.engine "${dir}/engine.json" predictions "${output}")
+run(aim shots aim "${dir}/aim.json")
+same_length(aim "${dir}/aim.json" shots "${output}")
+run(plan throws plan "${dir}/plan.json")
+same_length(plan "${dir}/plan.json" throws "${output}")
+run(danger predictions danger "${dir}/danger.json")
+same_length(danger "${dir}/danger.json" predictions "${output}")
+run(netsim.csv trajectories netsim --csv "${dir}/netsim-car.csv" --duration 6 --models FPW,RPB --json)
+run(netsim.builtin trajectories netsim --trajectory circuit --duration 20 --models RPB --smoothing snap,pvb --json)
+run(picture predictions predict "${dir}/picture-scenario.json" --svg "${WORK_DIR}/picture.svg")
+if(failed)
+    math(EXPR failures "${failures} + 1")
+endif()
+file(READ "${WORK_DIR}/picture.svg" svg LIMIT 200)
+string(FIND "${svg}" "<svg" svgAt)
+if(svgAt EQUAL -1)
+    fail("picture: ${WORK_DIR}/picture.svg is not an SVG")
+endif()
+
+# --- 3. The picture document ------------------------------------------------------------------
+if(VIEWER)
+    set(page "${WORK_DIR}/picture.html")
+    # From the repository's root with a relative path: the document's title names the file as given.
+    execute_process(COMMAND "${CLI}" predict docs/examples/picture-scenario.json --html "${page}"
+        WORKING_DIRECTORY "${SOURCE_DIR}"
+        RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+    if(NOT status EQUAL 0)
+        fail("picture: foresight predict --html exited with ${status}:\n${err}")
+    else()
+        file(READ "${page}" html)
+        set(open "<script type=\"application/json\" id=\"foresight-data\">")
+        string(FIND "${html}" "${open}" start)
+        string(LENGTH "${open}" openLength)
+        math(EXPR start "${start} + ${openLength}")
+        string(SUBSTRING "${html}" ${start} -1 html)
+        string(FIND "${html}" "</script>" end)
+        string(SUBSTRING "${html}" 0 ${end} document)
+        file(READ "${dir}/picture.json" expected)
+        string(JSON same ERROR_VARIABLE jsonError EQUAL "${document}" "${expected}")
+        if(jsonError OR NOT same)
+            fail("picture: the document in the page differs from docs/examples/picture.json ${jsonError}; the page holds:\n${document}")
+        else()
+            message(STATUS "picture: the page's document equals docs/examples/picture.json")
+        endif()
+    endif()
+else()
+    message(STATUS "picture: no viewer in this build, the page's document is not compared")
+endif()
+
+if(failures GREATER 0)
+    message(FATAL_ERROR "${failures} documentation example check(s) failed")
+endif()
