@@ -565,22 +565,26 @@ private:
         if (glm::length(v1) <= 1e-9) v1 = DVec3(0.0);
         mTime += duration;
         // Is the surface still under the new position? (An edge: fly off.)
+        DVec3 probed = p1;  // where the probe ran
         bool supported = mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit);
         if (supported && glm::dot(toD(hit.normal), n) < 0.05) {
             // The probe grazed a wall beside the surface (sliding along a concave edge, the probe
             // runs in the wall's plane): probe again that far off the wall, for the surface
             // under the body. The body stays there, clear of the wall.
-            const DVec3 off = toD(hit.normal) * lift;
-            supported = mWorld.castSegment(makeCast(p1 + off + n * lift, p1 + off - n * lift, mSettings.radius), hit) &&
+            probed = p1 + toD(hit.normal) * lift;
+            supported = mWorld.castSegment(makeCast(probed + n * lift, probed - n * lift, mSettings.radius), hit) &&
                         glm::dot(toD(hit.normal), n) >= 0.05;
         }
         if (supported) {
             const DVec3 support = toD(hit.normal);
-            // The probe's hit point is rounded to Real, which may leave it a hair behind the
-            // surface: put the body a skin in front, as after an impact (arriveAt). From behind,
-            // the next chord would slip through the crack where this surface meets the next
-            // one in a concave edge (a triangle met from behind beyond its edge is not hit).
-            mBody.position = toD(hit.position);
+            // Onto the surface the probe found, along its normal only: the probe's hit point is
+            // rounded to Real across the surface too, which could carry the body a hair behind a
+            // wall it slides along a few micrometres off. The hit point's rounding along the
+            // normal may leave it a hair behind the surface: put the body a skin in front, as
+            // after an impact (arriveAt). From behind, the next chord would slip through the
+            // crack where this surface meets the next one in a concave edge (a triangle met from
+            // behind beyond its edge is not hit).
+            mBody.position = probed - support * glm::dot(support, probed - toD(hit.position));
             mBody.position += support * skinDistance(mBody.position);
             keepInFront(mBody.position, support, toD(hit.position));
             mContactPoint = mBody.position;
