@@ -15,7 +15,8 @@ if [[ "${FORESIGHT_SKIP_DEPS:-0}" == "1" ]]; then
     exit 0
 fi
 
-# Build tools (clang-14 and its runtime libraries for the libFuzzer harnesses, scripts/fuzz.sh),
+# Build tools (clang-14 and its runtime libraries for the libFuzzer harnesses, scripts/fuzz.sh;
+# clang-format-14 for the layout check of scripts/test.sh),
 # then libraries, then the HTML viewer's: Node.js and npm to bundle it (only when
 # `node`/`npm` are not already on PATH, e.g. from nodesource) and chromium for its browser tests;
 # then the real engines the engine-matched predictions are tested against: headless Godot 3 and
@@ -23,7 +24,7 @@ fi
 # Keep in sync with CONTRIBUTING.md.
 packages=(
     cmake ninja-build g++ pkg-config
-    clang-14 libclang-rt-14-dev
+    clang-14 libclang-rt-14-dev clang-format-14
     libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libtinygltf-dev
     libembree-dev libbullet-dev
     libgtest-dev libgmock-dev libbenchmark-dev

@@ -2,6 +2,7 @@
 # The README's test command: builds and tests everything CI checks, and stops at the first
 # failure with a message saying which step failed.
 #
+#   0. layout       every tracked C++ file as clang-format-14 lays it out (.clang-format)
 #   1. build/       release build, warnings as errors; ctest
 #   2. install      `cmake --install build` into a temporary prefix; the standalone project in
 #                   examples/ is configured against it with find_package(foresight CONFIG),
@@ -69,6 +70,15 @@ run_ctest() {
 
 step "installing dependencies"
 ./scripts/install-deps.sh
+
+step "checking the C++ layout (clang-format-14 with .clang-format)"
+# Every tracked C++ file as clang-format lays it out; the diff names the files to format with
+# `clang-format-14 -i FILE`.
+mapfile -t cpp_files < <(git ls-files '*.cpp' '*.h' 2>/dev/null || find include src backends tools tests bench examples fuzz -name '*.cpp' -o -name '*.h')
+if ! clang-format-14 --dry-run --Werror "${cpp_files[@]}"; then
+    echo "test.sh: C++ files differ from .clang-format's layout (above); run clang-format-14 -i on them" >&2
+    exit 1
+fi
 
 step "building build/ (Release, -Werror)"
 configure_and_build build -DCMAKE_BUILD_TYPE=Release -DFORESIGHT_WERROR=ON -DFORESIGHT_SANITIZE= \
