@@ -56,33 +56,8 @@ using ftest::toD;
 using ftest::toF;
 using ftest::toR;
 
-// Small deterministic generator (no <random> distributions: CONTRIBUTING.md).
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : mState(seed) {}
-    std::uint64_t next() {
-        mState ^= mState << 13;
-        mState ^= mState >> 7;
-        mState ^= mState << 17;
-        return mState;
-    }
-    double uniform(double lo, double hi) {
-        return lo + (hi - lo) * static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0);
-    }
-    DVec3 inBox(const DVec3& lo, const DVec3& hi) {
-        return DVec3(uniform(lo.x, hi.x), uniform(lo.y, hi.y), uniform(lo.z, hi.z));
-    }
-    DVec3 direction() {
-        for (;;) {
-            const DVec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-            const double l = glm::length(v);
-            if (l > 0.1 && l <= 1.0) return v / l;
-        }
-    }
-
-private:
-    std::uint64_t mState;
-};
+// The cases were drawn with xorshift64 (ftest::Random, test_util.h); keep the step.
+constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::XorShift64;
 
 // Both worlds built from the same shapes, with the same validation.
 struct TwinWorld {
@@ -246,7 +221,7 @@ TEST(BulletWorld, RaysMatchStaticWorld) {
     TwinWorld w;
     buildYard(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(12345);
+    ftest::Random random(12345, kRandomStep);
     Deviation dev;
     int made = 0;
     while (made < 10000) {
@@ -302,7 +277,7 @@ TEST(BulletWorld, SweptSpheresMatchStaticWorldOnPrimitives) {
     TwinWorld w;
     buildPrimitiveYard(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(424242);
+    ftest::Random random(424242, kRandomStep);
     Deviation dev;
     int made = 0;
     while (made < 10000) {
@@ -331,7 +306,7 @@ TEST(BulletWorld, SweptSpheresAgainstMeshesWithinBulletsSweepTolerance) {
     TwinWorld w;
     buildTerrain(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(99);
+    ftest::Random random(99, kRandomStep);
     long casts = 0, hits = 0, grazes = 0;
     double minGap = 1e30, maxGap = 0, maxNormal = 0, maxPosition = 0;
     while (casts < 10000) {
@@ -399,7 +374,7 @@ TEST(BulletWorld, RaysAgainstMeshesMatchStaticWorld) {
     TwinWorld w;
     buildTerrain(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(31337);
+    ftest::Random random(31337, kRandomStep);
     Deviation dev;
     for (int i = 0; i < 10000; ++i) {
         const DVec3 origin = random.inBox(DVec3(-8.5, 0.0, -8.5), DVec3(8.5, 6.0, 8.5));
@@ -489,7 +464,7 @@ TEST(BulletWorld, StartsOnSurfacesMatchStaticWorld) {
     TwinWorld w;
     buildYard(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(2024);
+    ftest::Random random(2024, kRandomStep);
     Deviation dev;
     const auto spheres = w.reference.spheres();
     const auto boxes = w.reference.boxes();
@@ -536,7 +511,7 @@ TEST(BulletWorld, ProjectilesStayInAClosedRoom) {
     w.mesh = {Triangle{a, b, c}, Triangle{a, c, d}};  // a ramp
     w.finishMesh();
     const BulletWorld bullet(w.scene.world());
-    Random random(7);
+    ftest::Random random(7, kRandomStep);
     ProjectileSettings settings;
     settings.friction = 0.2f;
     std::vector<double> deviations;
@@ -614,7 +589,7 @@ TEST(BulletWorld, CastsDoNotAllocate) {
     TwinWorld w;
     buildYard(w);
     const BulletWorld bullet(w.scene.world());
-    Random random(5);
+    ftest::Random random(5, kRandomStep);
     auto run = [&] {
         CastHit hit;
         for (int i = 0; i < 500; ++i) {
@@ -672,7 +647,7 @@ TEST(BulletWorld, MayTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
     tiles.add(OrientedBox{RVec3(-2, 0.5f, -2), Vec3(0.5f, 0.5f, 0.5f), rotation(0.3, DVec3(0, 1, 0))});
     StaticWorld floor;
     ASSERT_EQ(floor.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
-    Random random(515);
+    ftest::Random random(515, kRandomStep);
     int touchAgree = 0, touchCases = 0, planeAgree = 0, planeCases = 0, yardPlaneCases = 0, promises = 0, clear = 0;
     for (TwinWorld* w : {&yard, &tiles}) {
         const BulletWorld bullet(w->scene.world());
