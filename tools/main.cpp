@@ -12,14 +12,14 @@
 ///                                  dead reckoning through a simulated link: errors, updates, jumps
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
-#include "accuracy.h"
-#include "aim.h"
-#include "compare.h"
-#include "danger.h"
-#include "demo.h"
+#include "commands/accuracy_command.h"
+#include "commands/aim_command.h"
+#include "commands/compare_command.h"
+#include "commands/danger_command.h"
+#include "commands/demo_command.h"
+#include "commands/plan_command.h"
 #include "netsim.h"
 #include "picture.h"
-#include "plan.h"
 #include "scenario.h"
 
 #include <foresight/config.h>

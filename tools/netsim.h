@@ -13,7 +13,7 @@
 ///   rate, its updates through the link, and one DeadReckoningReceiver per smoothing rendering at
 ///   the render rate; the per-frame errors summarised.
 /// - Reports: textTable (the default output), markdownTable (the README's table), svgChart
-///   (position error over time). The JSON report is in the command (netsim_command.cpp).
+///   (position error over time). The JSON report is in the command (commands/netsim_command.cpp).
 /// Everything is deterministic: the same settings give the same bytes.
 
 #include <foresight/replication.h>

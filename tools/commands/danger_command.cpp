@@ -1,4 +1,4 @@
-#include "danger.h"
+#include "danger_command.h"
 
 #include "json_input.h"
 

@@ -1,4 +1,4 @@
-#include "compare.h"
+#include "compare_command.h"
 
 #include "json_output.h"
 #include "scenario.h"

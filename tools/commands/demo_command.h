@@ -1,5 +1,5 @@
 #pragma once
-/// @file demo.h
+/// @file demo_command.h
 /// `foresight demo`: the reference article's three scenarios (a running character, a bouncing
 /// grenade, a turning car) and a grenade thrown across the demo level (demo_level.h), each
 /// predicted the article's way ("faithful") and exactly; one answer of each AI use (a firing

@@ -1,4 +1,4 @@
-#include "demo.h"
+#include "demo_command.h"
 
 #include "demo_level.h"
 #include "scenario.h"
