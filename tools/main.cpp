@@ -17,6 +17,7 @@
 #include "commands/compare_command.h"
 #include "commands/danger_command.h"
 #include "commands/demo_command.h"
+#include "commands/level_command.h"
 #include "commands/plan_command.h"
 #include "netsim.h"
 #include "picture.h"
