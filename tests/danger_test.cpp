@@ -42,7 +42,7 @@ using ftest::DVec3;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 // The cases were drawn with Knuth's MMIX LCG (ftest::Random, test_util.h); keep the step.
 constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::Lcg64;

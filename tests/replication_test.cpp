@@ -48,7 +48,7 @@ constexpr double kDegree = kPi / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 DeadReckoningState makeState(DeadReckoningAlgorithm algorithm, const DVec3& position, const DVec3& velocity,
                              const Quat& orientation = glm::identity<Quat>()) {

@@ -133,6 +133,9 @@ inline foresight::RVec3 toR(const DVec3& v) {
     return foresight::RVec3(static_cast<R>(v.x), static_cast<R>(v.y), static_cast<R>(v.z));
 }
 
+/// A position from its coordinates, in the library's position type (float or double, as built).
+inline foresight::RVec3 rv(double x, double y, double z) { return toR(DVec3(x, y, z)); }
+
 /// A double vector as float (the library's Vec3).
 inline foresight::Vec3 toF(const DVec3& v) {
     return foresight::Vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
