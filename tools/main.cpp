@@ -18,8 +18,8 @@
 #include "commands/danger_command.h"
 #include "commands/demo_command.h"
 #include "commands/level_command.h"
+#include "commands/netsim_command.h"
 #include "commands/plan_command.h"
-#include "netsim.h"
 #include "picture.h"
 #include "scenario.h"
 

@@ -1,8 +1,9 @@
 // `foresight netsim`: options, checks, the JSON report, files and progress (the simulation and
-// the other reports are in netsim.cpp).
+// the other reports are in netsim/netsim.cpp).
+
+#include "netsim_command.h"
 
 #include "json_output.h"
-#include "netsim.h"
 #include "text_file.h"
 
 #include <CLI/CLI.hpp>
