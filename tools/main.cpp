@@ -20,8 +20,8 @@
 #include "commands/level_command.h"
 #include "commands/netsim_command.h"
 #include "commands/plan_command.h"
-#include "picture.h"
-#include "scenario.h"
+#include "commands/predict_command.h"
+#include "picture_options.h"
 
 #include <foresight/config.h>
 

@@ -10,7 +10,7 @@
 /// (projectiles), or per character its first contact and closest approach (vehicles).
 
 #include "json_output.h"
-#include "picture.h"
+#include "picture_options.h"
 #include "scenario.h"
 
 #include <foresight/danger.h>

@@ -1,6 +1,7 @@
 #include "demo_command.h"
 
 #include "demo_level.h"
+#include "picture.h"
 #include "scenario.h"
 #include "text_file.h"
 

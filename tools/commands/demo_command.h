@@ -7,7 +7,7 @@
 /// `foresight level` (level_command.h) writes the demo level's files.
 
 #include "json_output.h"
-#include "picture.h"
+#include "picture_options.h"
 
 #include <string>
 
