@@ -1,13 +1,10 @@
 #include "demo_command.h"
 
 #include "demo_level.h"
+#include "level_world.h"
 #include "picture.h"
 #include "scenario.h"
 #include "text_file.h"
-
-#ifdef FORESIGHT_CLI_WITH_EMBREE
-#include <foresight/embree_world.h>
-#endif
 
 #include <array>
 #include <cmath>
@@ -127,33 +124,9 @@ std::string table(const Scenario& scenario, const std::vector<PredictionResult>&
 }
 
 /// The demo level in the scenario's world, exactly as `foresight predict` puts the triangles of
-/// kDemoLevelFile there (scenario.cpp): into an EmbreeWorld that also holds the primitives when
-/// the CLI has Embree, else as StaticWorld triangles after the scenario's own.
+/// kDemoLevelFile there (level_world.h).
 bool addDemoLevel(Scenario& scenario, std::string& error) {
-    const foresight_level::LevelMesh level = foresight_level::makeDemoLevel();
-    std::vector<foresight::RVec3> vertices(level.vertices.begin(), level.vertices.end());
-#ifdef FORESIGHT_CLI_WITH_EMBREE
-    auto world = std::make_unique<foresight::EmbreeWorld>();
-    foresight::MeshReport report;
-    if (world->addMesh(vertices, level.indices, &report) != foresight::Status::Ok) {
-        error = report.error;
-        return false;
-    }
-    world->addPrimitives(scenario.world);
-    if (!world->commit(&error)) return false;
-    scenario.meshWorld = std::move(world);
-#else
-    for (std::size_t i = 0; i + 2 < level.indices.size(); i += 3) {
-        const foresight::Triangle triangle{vertices[level.indices[i]], vertices[level.indices[i + 1]],
-                                           vertices[level.indices[i + 2]]};
-        // The OBJ loader skips degenerate triangles (the demo level has none).
-        if (foresight::validateTriangle(triangle) == foresight::Status::Ok && scenario.world.add(triangle) != foresight::Status::Ok) {
-            error = "cannot add a triangle of the demo level";
-            return false;
-        }
-    }
-#endif
-    return true;
+    return addLevelMesh(scenario, foresight_level::makeDemoLevel(), error);
 }
 
 
