@@ -1,5 +1,5 @@
 /// bench_planning.cpp: throw planning on the demo level. A benchmark, not a
-/// test. The level (tools/demo_level.h) in an EmbreeWorld; 32 fixed (start, target) pairs in the
+/// test. The level (tools/demo_level/demo_level.h) in an EmbreeWorld; 32 fixed (start, target) pairs in the
 /// open middle of the courtyard (|x| < 6, -6 < z < 9): starts 1.2 to 2 m up, targets on the
 /// floor (y = 0). Fuse 3 s, step 0.02 s, restitution 0.5, speed cap 20 m/s, acceptance radius
 /// 0.5 m, 3 plans wanted, the default budget (throw_planner.h).

@@ -25,7 +25,7 @@
 ///    float ray-triangle test is off by up to about 9e-5 m at 350 m from the origin), or the
 ///    program stops with a message. A hit within 1e-4 m of a segment's end that the other world
 ///    misses would count as a graze of the end, not a disagreement (there are none).
-/// 2. Projectile predictions on the demo level (tools/demo_level.h; 3 s at 50 Hz, the default
+/// 2. Projectile predictions on the demo level (tools/demo_level/demo_level.h; 3 s at 50 Hz, the default
 ///    ProjectileSettings, Exact and Stepped): BM_DemoLevel/<world>/<method> through EmbreeWorld,
 ///    BulletWorld (its own btCollisionWorld holding the level as one btBvhTriangleMeshShape) and
 ///    a StaticWorld holding the same triangles (brute force, for contrast). Built only when the
@@ -764,7 +764,7 @@ BENCHMARK_CAPTURE(BM_Sweep, BulletWorld, SweepWorld::BulletWorld)->Unit(benchmar
 constexpr int kLevelThrowCount = 64;
 constexpr float kLevelFuse = 3.0f; // [s]: 150 steps at the default 50 Hz
 
-/// The demo level (tools/demo_level.h) in every world, and the throws.
+/// The demo level (tools/demo_level/demo_level.h) in every world, and the throws.
 struct LevelWorlds {
     Mesh mesh;
     StaticWorld staticWorld;

@@ -1,7 +1,7 @@
 // `foresight aim`: shots JSON (docs/aim-format.md) through aimDocument, as aimCommand runs it.
 #include "fuzz_json.h"
 
-#include "aim.h"
+#include "commands/aim_command.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace foresight_cli;

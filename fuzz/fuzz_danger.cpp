@@ -2,7 +2,7 @@
 // runDanger, as dangerCommand runs them.
 #include "fuzz_json.h"
 
-#include "danger.h"
+#include "commands/danger_command.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace foresight_cli;

@@ -3,7 +3,7 @@
 // the built-in trajectories named with the settings they gave.
 #include "fuzz_common.h"
 
-#include "netsim.h"
+#include "commands/netsim_command.h"
 
 #include <CLI/CLI.hpp>
 

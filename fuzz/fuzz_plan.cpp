@@ -2,7 +2,7 @@
 // the result document, as planCommand runs them.
 #include "fuzz_json.h"
 
-#include "plan.h"
+#include "commands/plan_command.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace foresight_cli;

@@ -1,6 +1,8 @@
 // checkObjText: the OBJ lines the triangle loaders read, checked strictly (obj_check.h).
 #include <foresight/obj_check.h>
 
+#include "printable.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -76,17 +78,7 @@ bool plainInteger(std::string_view token, std::int64_t& value) {
 
 std::string quoted(std::string_view token) {
     std::string out = "\"";
-    for (const char c : token.substr(0, 40)) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f || c == '"' || c == '\\') {
-            static const char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
-    }
+    detail::appendPrintable(out, token.substr(0, 40), "\"\\");
     if (token.size() > 40) out += "...";
     return out + "\"";
 }

@@ -530,20 +530,6 @@ TEST(Aim, OverflowIsNonFiniteResult) {
 // ---------------------------------------------------------------------------------------------
 // Brute force: a time scan of g(t) = |d(t)| - s t on random problems against the solver.
 
-/// Small deterministic generator (no <random> distributions: their output differs between
-/// standard libraries).
-struct SplitMix {
-    std::uint64_t state;
-    double uniform() {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return static_cast<double>(z >> 11) * 0x1.0p-53;
-    }
-    double in(double low, double high) { return low + (high - low) * uniform(); }
-};
-
 struct ScanReport {
     std::uint64_t problems = 0;
     std::uint64_t scanRoots = 0;     ///< roots the scan finds (crossings and clear touches)
@@ -560,18 +546,18 @@ struct ScanReport {
 // One random problem: target in a 100 m box, up to 12 m/s and 4 m/s^2, speed 1..40 m/s, gravity
 // 9.81 (1 in 8 without), a 10 s window. One in four is built to graze: the speed is set to the
 // minimum over t of |d(t)| / t, so |d(t)| - s t touches zero (a double root).
-void randomProblem(SplitMix& random, AimShot& shot, AimTarget& target, bool& grazing) {
+void randomProblem(ftest::Random& random, AimShot& shot, AimTarget& target, bool& grazing) {
     shot = AimShot();
-    shot.from = ftest::toR(DVec3(random.in(-5, 5), random.in(0, 3), random.in(-5, 5)));
+    shot.from = ftest::toR(DVec3(random.uniform(-5, 5), random.uniform(0, 3), random.uniform(-5, 5)));
     shot.gravity = random.uniform() < 0.125 ? Vec3(0.0f) : Vec3(0.0f, -9.81f, 0.0f);
     shot.maxTime = 10.0f;
-    target.position = ftest::toR(DVec3(random.in(-50, 50), random.in(-10, 30), random.in(-50, 50)));
-    target.velocity = Vec3(static_cast<float>(random.in(-12, 12)), static_cast<float>(random.in(-6, 6)),
-                           static_cast<float>(random.in(-12, 12)));
+    target.position = ftest::toR(DVec3(random.uniform(-50, 50), random.uniform(-10, 30), random.uniform(-50, 50)));
+    target.velocity = Vec3(static_cast<float>(random.uniform(-12, 12)), static_cast<float>(random.uniform(-6, 6)),
+                           static_cast<float>(random.uniform(-12, 12)));
     target.acceleration = random.uniform() < 0.25 ? Vec3(0.0f)
-                                                  : Vec3(static_cast<float>(random.in(-4, 4)), static_cast<float>(random.in(-4, 4)),
-                                                         static_cast<float>(random.in(-4, 4)));
-    shot.speed = static_cast<float>(random.in(1, 40));
+                                                  : Vec3(static_cast<float>(random.uniform(-4, 4)), static_cast<float>(random.uniform(-4, 4)),
+                                                         static_cast<float>(random.uniform(-4, 4)));
+    shot.speed = static_cast<float>(random.uniform(1, 40));
     grazing = random.uniform() < 0.25;
     if (grazing) {
         const DVec3 from = ftest::toD(shot.from);
@@ -646,7 +632,7 @@ int scanRoots(const AimShot& shot, const AimTarget& target, int samples, std::ve
 
 ScanReport compareWithScan(std::uint64_t problems, int samples, std::uint64_t seed) {
     ScanReport report;
-    SplitMix random{seed};
+    ftest::Random random(seed);
     std::vector<double> scanned;
     for (std::uint64_t n = 0; n < problems; ++n) {
         AimShot shot;

@@ -25,7 +25,7 @@ using foresight::Status;
 using foresight::TrajectoryPoint;
 using foresight::Vec3;
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(ftest::DVec3(x, y, z)); }
+using ftest::rv;
 
 // The sanity check's pointers escape through these volatile sinks, so the compiler may not
 // elide its allocations (new/delete pairs may be optimised away since C++14).

@@ -38,30 +38,8 @@ using ftest::toR;
 
 constexpr double kG = 9.8100004196166992;  // kStandardGravity as float, as Bullet sees it
 
-// Small deterministic generator (no <random> distributions: CONTRIBUTING.md).
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : mState(seed) {}
-    std::uint64_t next() {
-        mState ^= mState << 13;
-        mState ^= mState >> 7;
-        mState ^= mState << 17;
-        return mState;
-    }
-    double uniform(double lo, double hi) {
-        return lo + (hi - lo) * static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0);
-    }
-    DVec3 direction() {
-        for (;;) {
-            const DVec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-            const double l = glm::length(v);
-            if (l > 0.1 && l <= 1.0) return v / l;
-        }
-    }
-
-private:
-    std::uint64_t mState;
-};
+// The cases were drawn with xorshift64 (ftest::Random, test_util.h); keep the step.
+constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::XorShift64;
 
 double step(const RigidBodySimulationSettings& simulation) {
     return static_cast<double>(static_cast<float>(1.0 / static_cast<double>(simulation.frequency)));
@@ -423,7 +401,7 @@ TEST(BulletSimulation, FastThrowsStayInATriangleRoom) {
     settings.friction = 0.2f;
     RigidBodySimulationSettings simulation;
     const double r = static_cast<double>(simulation.pointRadius);
-    Random random(99);
+    ftest::Random random(99, kRandomStep);
     long escaped = 0, impacts = 0;
     double deepest = 0;
     for (int i = 0; i < 200; ++i) {
@@ -478,7 +456,7 @@ TEST(BulletSimulation, MatchesTheExactPredictor) {
     settings.restitution = 0.5f;
     RigidBodySimulationSettings simulation;
     const double dt = step(simulation);
-    Random random(2024);
+    ftest::Random random(2024, kRandomStep);
     std::vector<double> landing, firstTime, secondTime;
     std::vector<TrajectoryPoint> points(4096);
     for (int i = 0; i < 100; ++i) {

@@ -2007,7 +2007,7 @@ TEST_F(cli, DangerRefusesBadInputNamingThePath) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// foresight netsim: dead reckoning through a simulated link (tools/netsim.h)
+// foresight netsim: dead reckoning through a simulated link (tools/netsim/netsim.h)
 
 TEST_F(cli, NetsimJsonIsDeterministicAndHasEveryRow) {
     const std::vector<std::string> args = {"netsim", "--duration", "10", "--json"};

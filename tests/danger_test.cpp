@@ -42,17 +42,10 @@ using ftest::DVec3;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
-/// A small deterministic generator (no <random> distributions: they differ between libraries).
-struct Random {
-    std::uint64_t state;
-    double uniform() {  // [0, 1)
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0);
-    }
-    double in(double low, double high) { return low + (high - low) * uniform(); }
-};
+// The cases were drawn with Knuth's MMIX LCG (ftest::Random, test_util.h); keep the step.
+constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::Lcg64;
 
 // ---------------------------------------------------------------------------------------------
 // Independent references
@@ -298,7 +291,7 @@ struct Agreement {
 };
 
 TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
-    Random random{12345};
+    ftest::Random random(12345, kRandomStep);
     ApproachSettings settings;  // tolerance 1e-3 m
     const double tolerance = static_cast<double>(settings.tolerance);
     const double horizon = 3.0;
@@ -311,33 +304,33 @@ TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
 #endif
     for (int i = 0; i < cases; ++i) {
         VehicleBody vehicle;
-        vehicle.state.position = rv(random.in(-10, 10), random.in(-1, 1), random.in(-10, 10));
-        const Vec3 axis = glm::normalize(Vec3(static_cast<float>(random.in(-1, 1)), 1.0f,
-                                              static_cast<float>(random.in(-1, 1))));
-        vehicle.state.orientation = glm::angleAxis(static_cast<float>(random.in(-3.1, 3.1)), axis);
-        const float speed = static_cast<float>(random.in(-15, 15));
+        vehicle.state.position = rv(random.uniform(-10, 10), random.uniform(-1, 1), random.uniform(-10, 10));
+        const Vec3 axis = glm::normalize(Vec3(static_cast<float>(random.uniform(-1, 1)), 1.0f,
+                                              static_cast<float>(random.uniform(-1, 1))));
+        vehicle.state.orientation = glm::angleAxis(static_cast<float>(random.uniform(-3.1, 3.1)), axis);
+        const float speed = static_cast<float>(random.uniform(-15, 15));
         vehicle.state.velocity = vehicle.state.orientation * Vec3(0.0f, 0.0f, speed);
         vehicle.state.angularVelocity =
             random.uniform() < 0.2 ? Vec3(0.0f)
-                                   : Vec3(static_cast<float>(random.in(-0.2, 0.2)), static_cast<float>(random.in(-1.5, 1.5)),
-                                          static_cast<float>(random.in(-0.2, 0.2)));
+                                   : Vec3(static_cast<float>(random.uniform(-0.2, 0.2)), static_cast<float>(random.uniform(-1.5, 1.5)),
+                                          static_cast<float>(random.uniform(-0.2, 0.2)));
         vehicle.settings.frame = random.uniform() < 0.5 ? foresight::AngularFrame::Body : foresight::AngularFrame::World;
-        vehicle.halfExtents = Vec3(static_cast<float>(random.in(0.3, 1.5)), static_cast<float>(random.in(0.3, 1.0)),
-                                   static_cast<float>(random.in(0.5, 3.0)));
-        vehicle.boxCenter = Vec3(0.0f, 0.0f, static_cast<float>(random.in(-0.5, 0.5)));
+        vehicle.halfExtents = Vec3(static_cast<float>(random.uniform(0.3, 1.5)), static_cast<float>(random.uniform(0.3, 1.0)),
+                                   static_cast<float>(random.uniform(0.5, 3.0)));
+        vehicle.boxCenter = Vec3(0.0f, 0.0f, static_cast<float>(random.uniform(-0.5, 0.5)));
         // The character starts near where the vehicle will be at some time in the horizon, so
         // that about half of the cases touch.
         foresight::VehicleState ahead;
-        ASSERT_EQ(foresight::predictVehicleExact(vehicle.state, static_cast<float>(random.in(0.5, 2.5)),
+        ASSERT_EQ(foresight::predictVehicleExact(vehicle.state, static_cast<float>(random.uniform(0.5, 2.5)),
                                                  vehicle.settings, ahead),
                   Status::Ok);
         CharacterBody character;
-        character.position = ahead.position + rv(random.in(-4, 4), random.in(-1, 1), random.in(-4, 4));
-        character.velocity = Vec3(static_cast<float>(random.in(-5, 5)), 0.0f, static_cast<float>(random.in(-5, 5)));
+        character.position = ahead.position + rv(random.uniform(-4, 4), random.uniform(-1, 1), random.uniform(-4, 4));
+        character.velocity = Vec3(static_cast<float>(random.uniform(-5, 5)), 0.0f, static_cast<float>(random.uniform(-5, 5)));
         if (random.uniform() < 0.5)
-            character.acceleration = Vec3(static_cast<float>(random.in(-3, 3)), 0.0f, static_cast<float>(random.in(-3, 3)));
-        character.radius = static_cast<float>(random.in(0.1, 0.6));
-        if (random.uniform() < 0.5) character.halfAxis = Vec3(0.0f, static_cast<float>(random.in(0.2, 0.8)), 0.0f);
+            character.acceleration = Vec3(static_cast<float>(random.uniform(-3, 3)), 0.0f, static_cast<float>(random.uniform(-3, 3)));
+        character.radius = static_cast<float>(random.uniform(0.1, 0.6));
+        if (random.uniform() < 0.5) character.halfAxis = Vec3(0.0f, static_cast<float>(random.uniform(0.2, 0.8)), 0.0f);
 
         VehicleContact contact;
         ClosestApproach closest;
@@ -670,15 +663,15 @@ TEST(DangerProjectile, AgreesWithFineSamplingOnRandomThrows) {
     foresight::StaticWorld world;
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), 0}), Status::Ok);
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 0.0f, -1.0f), -8}), Status::Ok);  // z = 8
-    Random random{777};
+    ftest::Random random(777, kRandomStep);
     const double g = ftest::decimal(foresight::kStandardGravity);
     double worstClosest = 0, worstEarliest = 0, worstLate = 0;
     int cases = 0, corridorHits = 0;
     for (int i = 0; i < 1000; ++i) {
-        const DVec3 velocity(random.in(-4, 4), random.in(0, 8), random.in(2, 14));
-        const Throw t = predictThrow(DVec3(random.in(-2, 2), random.in(0.5, 2), 0), velocity, 3.0f, &world);
-        const DVec3 point(random.in(-6, 6), random.in(0, 4), random.in(-1, 9));
-        const double radius = random.in(0.2, 2.5);
+        const DVec3 velocity(random.uniform(-4, 4), random.uniform(0, 8), random.uniform(2, 14));
+        const Throw t = predictThrow(DVec3(random.uniform(-2, 2), random.uniform(0.5, 2), 0), velocity, 3.0f, &world);
+        const DVec3 point(random.uniform(-6, 6), random.uniform(0, 4), random.uniform(-1, 9));
+        const double radius = random.uniform(0.2, 2.5);
         auto reference = [&](double time) {
             std::size_t k = 0;
             while (k + 1 < t.points.size() && static_cast<double>(t.points[k + 1].time) <= time) ++k;

@@ -1,4 +1,4 @@
-// The demo level (tools/demo_level.h): its solids are closed, convex and wound outwards, its
+// The demo level (tools/demo_level/demo_level.h): its solids are closed, convex and wound outwards, its
 // layout is as documented, its writers are deterministic and the files the build wrote load
 // (EmbreeWorld) into exactly the in-memory triangles; exact grenade throws in it never end
 // below the floor nor pass through a solid.

@@ -25,7 +25,7 @@ using foresight::Status;
 using foresight::TrajectoryPoint;
 using foresight::Vec3;
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(ftest::DVec3(x, y, z)); }
+using ftest::rv;
 
 void buildWorld(StaticWorld& world) {
     EXPECT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);

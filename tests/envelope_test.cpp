@@ -26,7 +26,7 @@ using foresight::TrajectoryPoint;
 using foresight::Vec3;
 using ftest::DVec3;
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 // The largest power of two at most half the envelope: exactly representable, so the shifted
 // start is exactly the start moved.

@@ -1,4 +1,4 @@
-// `foresight netsim`'s pieces (tools/netsim.h): the built-in trajectories against finite
+// `foresight netsim`'s pieces (tools/netsim/netsim.h): the built-in trajectories against finite
 // differences and their closed-form properties, the link's statistics, the CSV reader's rules and
 // messages, the statistics, and whole simulations with known answers.
 //

@@ -69,7 +69,7 @@ Prediction predict(RVec3 position, Vec3 velocity, float time, const ProjectileSe
     return run;
 }
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 // =============================================================================================
 // The article's loop, ported to double.

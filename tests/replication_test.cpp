@@ -48,7 +48,7 @@ constexpr double kDegree = kPi / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 DeadReckoningState makeState(DeadReckoningAlgorithm algorithm, const DVec3& position, const DVec3& velocity,
                              const Quat& orientation = glm::identity<Quat>()) {
@@ -947,21 +947,8 @@ TEST(Interpolation, NoSweepAcrossATeleport) {
 // =============================================================================================
 // Batch
 
-// A fixed-seed generator (no <random> distributions: their output differs between libraries).
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : mState(seed) {}
-    double uniform(double lo, double hi) {
-        mState ^= mState >> 12;
-        mState ^= mState << 25;
-        mState ^= mState >> 27;
-        const std::uint64_t bits = (mState * 0x2545F4914F6CDD1DULL) >> 11;  // 53 bits
-        return lo + (hi - lo) * (static_cast<double>(bits) * (1.0 / 9007199254740992.0));
-    }
-
-private:
-    std::uint64_t mState;
-};
+// The cases were drawn with xorshift64* (ftest::Random, test_util.h); keep the step.
+constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::XorShift64Star;
 
 // Bad input never leads to a crash or a non-finite pose: every mode and smoothing, 20 000
 // random packets each (out of order, duplicates, far in the future, NaN fields, zero
@@ -979,7 +966,7 @@ TEST(Receiver, RandomBadPacketsNeverGiveANonFinitePose) {
             settings.mode = mode;
             settings.smoothing = smoothing;
             DeadReckoningReceiver receiver(settings);
-            Random random(1000 + static_cast<std::uint64_t>(smoothing) * 10 + static_cast<std::uint64_t>(mode));
+            ftest::Random random(1000 + static_cast<std::uint64_t>(smoothing) * 10 + static_cast<std::uint64_t>(mode), kRandomStep);
             double now = 0.0;
             std::size_t okSamples = 0;
             std::uint64_t acceptedAtHalf = 0;
@@ -1032,7 +1019,7 @@ bool sameResult(const DeadReckoningResult& a, const DeadReckoningResult& b) {
 }
 
 TEST(Batch, EqualsPredictDeadReckoningPerEntityBitForBit) {
-    Random random(2024);
+    ftest::Random random(2024, kRandomStep);
     const std::size_t n = 4000;
     std::vector<DeadReckoningState> states(n);
     std::vector<double> stamps(n);
@@ -1129,7 +1116,7 @@ void checkAgainstReference(const DeadReckoningState& state, double stamp, double
 }
 
 void randomPrepared(std::size_t n, std::vector<DeadReckoningState>& states, std::vector<double>& stamps, double now) {
-    Random random(77);
+    ftest::Random random(77, kRandomStep);
     states.resize(n);
     stamps.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstdint>
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <sstream>
@@ -21,28 +22,81 @@
 
 namespace ftest {
 
-/// A small deterministic generator (splitmix64): the same sequence on every platform, where the
-/// standard library's distributions are not (CONTRIBUTING).
+using DVec3 = glm::dvec3;
+using DQuat = glm::dquat;
+
+/// The one random generator of the tests: small, deterministic, the same sequence on every
+/// platform, where the standard library's distributions are not (CONTRIBUTING).
+///
+/// The step (state update and output) is chosen at construction. Every test keeps the step it
+/// was written with, so that it draws exactly the cases it always checked:
+/// - `SplitMix64` (the default; new tests use it): Steele, Lea and Flood's splitmix64, the state
+///   advanced by 0x9e3779b97f4a7c15 and mixed.
+/// - `XorShift64`: Marsaglia's xorshift64 (shifts 13, 7, 17), the state itself as output
+///   (bullet_test.cpp, bullet_simulation_test.cpp). A seed of 0 stays 0: give a non-zero seed.
+/// - `XorShift64Star`: Vigna's xorshift64* (shifts 12, 25, 27), output the state times
+///   0x2545f4914f6cdd1d (replication_test.cpp). Non-zero seed, as above.
+/// - `Lcg64`: Knuth's MMIX linear congruential step (6364136223846793005, 1442695040888963407),
+///   the state itself as output (danger_test.cpp).
+/// Draws are the same for every step: uniform(lo, hi) = lo + (hi - lo) u with u the top 53 bits
+/// of next() times 2^-53, in [0, 1). (u is formed first; multiplying by 2^-53 is exact, so this
+/// equals ((hi - lo) (next() >> 11)) 2^-53 bit for bit, the form some tests were written with.)
 class Random {
 public:
-    explicit Random(std::uint64_t seed) : mState(seed) {}
+    enum class Step { SplitMix64, XorShift64, XorShift64Star, Lcg64 };
+
+    explicit Random(std::uint64_t seed, Step step = Step::SplitMix64) : mState(seed), mStep(step) {}
+
     std::uint64_t next() {
+        switch (mStep) {
+        case Step::XorShift64:
+            mState ^= mState << 13;
+            mState ^= mState >> 7;
+            mState ^= mState << 17;
+            return mState;
+        case Step::XorShift64Star:
+            mState ^= mState >> 12;
+            mState ^= mState << 25;
+            mState ^= mState >> 27;
+            return mState * 0x2545f4914f6cdd1dull;
+        case Step::Lcg64:
+            mState = mState * 6364136223846793005ull + 1442695040888963407ull;
+            return mState;
+        case Step::SplitMix64:
+            break;
+        }
         std::uint64_t z = (mState += 0x9e3779b97f4a7c15ull);
         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
         return z ^ (z >> 31);
     }
+    /// Uniform in [0, 1): the top 53 bits of next().
+    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
     /// Uniform in [lo, hi).
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
     /// Uniform in [0, n) for n > 0.
     int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+    // inBox and direction draw their three numbers as constructor arguments, whose order of
+    // evaluation C++ leaves to the compiler: kept exactly as the tests were written with them,
+    // so that the cases drawn do not change.
+    /// Uniform in the box [lo, hi).
+    DVec3 inBox(const DVec3& lo, const DVec3& hi) {
+        return DVec3(uniform(lo.x, hi.x), uniform(lo.y, hi.y), uniform(lo.z, hi.z));
+    }
+    /// A unit vector, uniform on the sphere: rejection from the cube [-1, 1)^3 (lengths in
+    /// (0.1, 1], so that the normalisation loses nothing).
+    DVec3 direction() {
+        for (;;) {
+            const DVec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+            const double l = glm::length(v);
+            if (l > 0.1 && l <= 1.0) return v / l;
+        }
+    }
 
 private:
     std::uint64_t mState;
+    Step mStep;
 };
-
-using DVec3 = glm::dvec3;
-using DQuat = glm::dquat;
 
 /// Any glm 3-vector (float or double) as double.
 template <class T>
@@ -78,6 +132,9 @@ inline foresight::RVec3 toR(const DVec3& v) {
     using R = foresight::Real;
     return foresight::RVec3(static_cast<R>(v.x), static_cast<R>(v.y), static_cast<R>(v.z));
 }
+
+/// A position from its coordinates, in the library's position type (float or double, as built).
+inline foresight::RVec3 rv(double x, double y, double z) { return toR(DVec3(x, y, z)); }
 
 /// A double vector as float (the library's Vec3).
 inline foresight::Vec3 toF(const DVec3& v) {

@@ -33,7 +33,7 @@ using foresight::TrajectoryPoint;
 using foresight::Vec3;
 using ftest::DVec3;
 
-RVec3 rv(double x, double y, double z) { return ftest::toR(DVec3(x, y, z)); }
+using ftest::rv;
 
 double horizontalLength(const DVec3& v) { return std::hypot(v.x, v.z); }
 

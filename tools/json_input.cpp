@@ -2,6 +2,8 @@
 
 #include "text_file.h"
 
+#include "printable.h"  // src/: the library's control-character escaping
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -25,17 +27,7 @@ namespace {
 std::string printable(const std::string& line) {
     std::string out;
     out.reserve(line.size());
-    for (const char c : line) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            static const char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
-    }
+    foresight::detail::appendPrintable(out, line);
     return out;
 }
 

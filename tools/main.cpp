@@ -12,15 +12,16 @@
 ///                                  dead reckoning through a simulated link: errors, updates, jumps
 /// Exit status: 0 success (also --help, --version); 2 invalid input or usage; 1 internal error.
 
-#include "accuracy.h"
-#include "aim.h"
-#include "compare.h"
-#include "danger.h"
-#include "demo.h"
-#include "netsim.h"
-#include "picture.h"
-#include "plan.h"
-#include "scenario.h"
+#include "commands/accuracy_command.h"
+#include "commands/aim_command.h"
+#include "commands/compare_command.h"
+#include "commands/danger_command.h"
+#include "commands/demo_command.h"
+#include "commands/level_command.h"
+#include "commands/netsim_command.h"
+#include "commands/plan_command.h"
+#include "commands/predict_command.h"
+#include "picture_options.h"
 
 #include <foresight/config.h>
 

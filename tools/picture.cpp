@@ -1,6 +1,7 @@
 #include "picture.h"
 
 #include "svg.h"
+#include "svg_writer.h"
 #include "text_file.h"
 
 #ifdef FORESIGHT_CLI_WITH_EMBREE
@@ -258,20 +259,6 @@ namespace {
     return out;
 }
 
-[[maybe_unused]] std::string htmlEscape(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
-
 } // namespace
 
 bool viewerAvailable() {
@@ -293,7 +280,7 @@ std::string htmlPage(const Json& document, const std::string& title) {
     std::string page =
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" +
-        htmlEscape(title) + "</title></head>\n<body><script type=\"application/json\" id=\"foresight-data\">";
+        escapeXml(title) + "</title></head>\n<body><script type=\"application/json\" id=\"foresight-data\">";
     // Every '<' of the JSON (only ever inside its strings) as \u003c: no id or title can open
     // or close an element ("</script>", "<!--") inside the data block.
     std::string data = document.dump(-1, ' ', false, Json::error_handler_t::replace);

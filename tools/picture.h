@@ -4,19 +4,13 @@
 /// which the HTML viewer and the SVG writer draw, and the self-contained HTML page.
 
 #include "json_output.h"
+#include "picture_options.h"
 #include "scenario.h"
 
 #include <string>
 #include <vector>
 
 namespace foresight_cli {
-
-/// The picture outputs a command was asked for (empty: none).
-struct PictureOptions {
-    std::string htmlFile;  ///< --html FILE: the self-contained 3D viewer page.
-    std::string svgFile;   ///< --svg FILE: a top view and a side view.
-    bool wanted() const { return !htmlFile.empty() || !svgFile.empty(); }
-};
 
 /// Writes the pictures `options` asks for; on failure returns false with a message naming the file.
 bool writePictures(const PictureOptions& options, const Json& document, const std::string& title, std::string& error);

@@ -3,13 +3,11 @@
 #include "json_input.h"
 
 #include "obj_mesh.h"
-#include "picture.h"
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
-#include <iostream>
 #include <set>
 #include <string_view>
 
@@ -809,32 +807,6 @@ Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult
     Json document = Json::object();
     document["predictions"] = std::move(predictions);
     return document;
-}
-
-int predictCommand(const std::string& file, const PictureOptions& pictures) {
-    if (!pictures.htmlFile.empty() && !viewerAvailable()) {
-        std::cerr << "foresight predict: --html: " << viewerUnavailableReason() << '\n';
-        return 2;
-    }
-    Diagnostics diagnostics;
-    std::string name;
-    Json document;
-    Scenario scenario;
-    std::vector<PredictionResult> results;
-    // Meshes are relative to the scenario file, or to the current directory for stdin.
-    scenario.recordTrajectories = pictures.wanted();
-    const bool ok = readJsonFile(file, name, document, diagnostics) &&
-                    buildScenario(document, baseDirectoryOf(file), scenario, diagnostics) &&
-                    runScenario(scenario, results, diagnostics);
-    printDiagnostics(diagnostics, std::cerr);
-    if (!ok) return 2;
-    std::string error;
-    if (pictures.wanted() &&
-        !writePictures(pictures, pictureDocument(scenario, results, "foresight: " + name), "foresight: " + name, error)) {
-        std::cerr << error << '\n';
-        return 2;
-    }
-    return writeJsonResult(resultDocument(scenario, results));
 }
 
 } // namespace foresight_cli

@@ -20,8 +20,6 @@
 
 namespace foresight_cli {
 
-struct PictureOptions;  // picture.h
-
 /// The prediction models of the format.
 enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle, DeadReckoning };
 
@@ -102,11 +100,5 @@ Json resultJson(const Prediction& prediction, const PredictionResult& result);
 
 /// Lower-case name of a trajectory event ("start", "step", "bounce", "rest", "hit", "end").
 const char* eventName(foresight::TrajectoryEvent event);
-
-/// `foresight predict FILE`: reads FILE ("-": standard input), writes the result to standard
-/// output. Returns the exit status: 0, or 2 with nothing on standard output.
-/// With `pictures`, also writes the HTML viewer page and/or the SVG of the scenario and its
-/// results (picture.h); a picture that cannot be written is an error (status 2).
-int predictCommand(const std::string& file, const PictureOptions& pictures);
 
 } // namespace foresight_cli

@@ -1,5 +1,7 @@
 #include "svg.h"
 
+#include "svg_writer.h"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -24,26 +26,10 @@ const char* const kFaithfulColours[] = {"#e67e22", "#c0392b", "#b9770e", "#d3540
 const char* const kExactColours[] = {"#1f6fd1", "#16a085", "#6c3483", "#117a65"};
 const char* const kEngineColours[] = {"#27ae60", "#7d9d0a", "#1e8449", "#58a618"};
 
-std::string number(double value) {
-    if (!std::isfinite(value)) value = 0.0;  // never "nan" in the SVG (picture() keeps bounds drawable)
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.2f", value);
-    return buffer;
-}
+// Coordinates with two decimals; never "nan" in the SVG (picture() keeps bounds drawable).
+const SvgWriter kSvg(2, true);
 
-std::string escape(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
+std::string number(double value) { return kSvg.number(value); }
 
 glm::dvec3 vec3(const Json& value, const glm::dvec3& fallback = glm::dvec3(0)) {
     if (!value.is_array() || value.size() != 3) return fallback;
@@ -75,16 +61,6 @@ const Json& member(const Json& object, const char* key) {
     return object.is_object() && object.contains(key) ? object[key] : none;
 }
 
-/// A grid step of 1, 2 or 5 times a power of ten giving at most about eight lines over `span`.
-double gridStep(double span) {
-    if (!(span > 0)) return 1;
-    const double rough = span / 8;
-    const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    for (const double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * power >= rough) return m * power;
-    return 10 * power;
-}
-
 /// One view: world axes (u, v) of the panel (u to the right, v up the page).
 struct Panel {
     const char* title;
@@ -98,7 +74,7 @@ struct Panel {
     double py(double v) const { return top + (v1 - v) * scale; }
     double px(const glm::dvec3& p) const { return px(p[uAxis]); }
     double py(const glm::dvec3& p) const { return py(p[vAxis]); }
-    std::string point(const glm::dvec3& p) const { return number(px(p)) + "," + number(py(p)); }
+    std::string point(const glm::dvec3& p) const { return kSvg.point(px(p), py(p)); }
 };
 
 /// Convex hull of 2D points (Andrew's monotone chain), counter-clockwise.
@@ -127,9 +103,9 @@ std::vector<glm::dvec2> hull(std::vector<glm::dvec2> points) {
 std::string polygon(const Panel& panel, const std::vector<glm::dvec3>& corners, const std::string& style) {
     std::vector<glm::dvec2> points;
     for (const auto& c : corners) points.emplace_back(panel.px(c), panel.py(c));
-    std::string out = "<polygon points=\"";
-    for (const auto& p : hull(points)) out += number(p.x) + "," + number(p.y) + " ";
-    return out + "\" " + style + "/>\n";
+    std::string out;
+    for (const auto& p : hull(points)) out += kSvg.point(p.x, p.y) + " ";
+    return kSvg.polygon(out, style);
 }
 
 std::vector<glm::dvec3> boxCorners(const glm::dvec3& center, const glm::dvec3& half, const glm::dquat& orientation) {
@@ -157,18 +133,15 @@ std::string planeLine(const Panel& panel, double a, double b, double c) {
         }
     }
     if (points.size() < 2) return {};
-    return "<line x1=\"" + number(panel.px(points[0].x)) + "\" y1=\"" + number(panel.py(points[0].y)) + "\" x2=\"" +
-           number(panel.px(points[1].x)) + "\" y2=\"" + number(panel.py(points[1].y)) +
-           "\" stroke=\"#7f8c8d\" stroke-width=\"2\"/>\n";
+    return kSvg.line(panel.px(points[0].x), panel.py(points[0].y), panel.px(points[1].x), panel.py(points[1].y),
+                     "stroke=\"#7f8c8d\" stroke-width=\"2\"");
 }
 
 std::string axes(const Panel& panel) {
     std::string out;
     const double width = (panel.u1 - panel.u0) * panel.scale;
-    out += "<text x=\"" + number(panel.left) + "\" y=\"" + number(panel.top - 8) +
-           "\" font-size=\"14\" font-weight=\"bold\">" + panel.title + "</text>\n";
-    out += "<rect x=\"" + number(panel.left) + "\" y=\"" + number(panel.top) + "\" width=\"" + number(width) +
-           "\" height=\"" + number(panel.height()) + "\" fill=\"#fbfbfb\" stroke=\"#555\"/>\n";
+    out += kSvg.text(panel.left, panel.top - 8, "font-size=\"14\" font-weight=\"bold\"", panel.title);
+    out += kSvg.rect(panel.left, panel.top, width, panel.height(), "fill=\"#fbfbfb\" stroke=\"#555\"");
     // Ticks are counted, never accumulated: far from the origin `t += step` may not advance t.
     const auto ticks = [&](double lo, double hi, auto&& draw) {
         const double step = gridStep(hi - lo);
@@ -181,24 +154,21 @@ std::string axes(const Panel& panel) {
     };
     char label[32];
     ticks(panel.u0, panel.u1, [&](double u) {
-        out += "<line x1=\"" + number(panel.px(u)) + "\" y1=\"" + number(panel.top) + "\" x2=\"" + number(panel.px(u)) +
-               "\" y2=\"" + number(panel.top + panel.height()) + "\" stroke=\"#e3e3e3\"/>\n";
+        out += kSvg.line(panel.px(u), panel.top, panel.px(u), panel.top + panel.height(), "stroke=\"#e3e3e3\"");
         std::snprintf(label, sizeof label, "%g", u);
-        out += "<text x=\"" + number(panel.px(u)) + "\" y=\"" + number(panel.top + panel.height() + 16) +
-               "\" font-size=\"11\" text-anchor=\"middle\">" + label + "</text>\n";
+        out += kSvg.text(panel.px(u), panel.top + panel.height() + 16, "font-size=\"11\" text-anchor=\"middle\"", label);
     });
     ticks(panel.v0, panel.v1, [&](double v) {
-        out += "<line x1=\"" + number(panel.left) + "\" y1=\"" + number(panel.py(v)) + "\" x2=\"" +
-               number(panel.left + width) + "\" y2=\"" + number(panel.py(v)) + "\" stroke=\"#e3e3e3\"/>\n";
+        out += kSvg.line(panel.left, panel.py(v), panel.left + width, panel.py(v), "stroke=\"#e3e3e3\"");
         std::snprintf(label, sizeof label, "%g", v);
-        out += "<text x=\"" + number(panel.left - 6) + "\" y=\"" + number(panel.py(v) + 4) +
-               "\" font-size=\"11\" text-anchor=\"end\">" + label + "</text>\n";
+        out += kSvg.text(panel.left - 6, panel.py(v) + 4, "font-size=\"11\" text-anchor=\"end\"", label);
     });
-    out += "<text x=\"" + number(panel.left + width / 2) + "\" y=\"" + number(panel.top + panel.height() + 34) +
-           "\" font-size=\"12\" text-anchor=\"middle\">" + panel.uName + " [m]</text>\n";
-    out += "<text x=\"" + number(panel.left - 40) + "\" y=\"" + number(panel.top + panel.height() / 2) +
-           "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 " + number(panel.left - 40) + " " +
-           number(panel.top + panel.height() / 2) + ")\">" + panel.vName + " [m]</text>\n";
+    out += kSvg.text(panel.left + width / 2, panel.top + panel.height() + 34, "font-size=\"12\" text-anchor=\"middle\"",
+                     std::string(panel.uName) + " [m]");
+    out += kSvg.text(panel.left - 40, panel.top + panel.height() / 2,
+                     "font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 " + number(panel.left - 40) + " " +
+                         number(panel.top + panel.height() / 2) + ")\"",
+                     std::string(panel.vName) + " [m]");
     return out;
 }
 
@@ -244,7 +214,7 @@ std::string world(const Panel& panel, const Json& document) {
                           panel.py(corners[2]));
             d += buffer;
         }
-        if (!d.empty()) out += "<path d=\"" + d + "\" " + meshStyle + "/>\n";
+        if (!d.empty()) out += kSvg.path(d, meshStyle);
     }
     const std::string solidStyle = "fill=\"#bdc3c7\" fill-opacity=\"0.6\" stroke=\"#7f8c8d\"";
     for (const auto& box : member(w, "boxes"))
@@ -253,8 +223,7 @@ std::string world(const Panel& panel, const Json& document) {
     for (const auto& sphere : member(w, "spheres")) {
         const glm::dvec3 c = vec3(member(sphere, "center"));
         const double r = member(sphere, "radius").is_number() ? member(sphere, "radius").get<double>() : 0.0;
-        out += "<circle cx=\"" + number(panel.px(c)) + "\" cy=\"" + number(panel.py(c)) + "\" r=\"" +
-               number(r * panel.scale) + "\" " + solidStyle + "/>\n";
+        out += kSvg.circle(panel.px(c), panel.py(c), r * panel.scale, solidStyle);
     }
     return out;
 }
@@ -283,20 +252,19 @@ std::string predictions(const Panel& panel, const Json& document, const std::vec
                                    "\" stroke=\"" + style.colour + "\" stroke-width=\"1\"");
             }
         }
-        std::string line = "<polyline fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"" +
-                           (style.engine ? "3" : "2") + "\"" +
-                           (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + " points=\"";
-        for (const auto& point : path) line += panel.point(vec3(member(point, "position"))) + " ";
-        out += line + "\"/>\n";
+        std::string points;
+        for (const auto& point : path) points += panel.point(vec3(member(point, "position"))) + " ";
+        out += kSvg.polyline("fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") +
+                                 "\"" + (style.faithful ? " stroke-dasharray=\"7 4\"" : ""),
+                             points);
         for (const auto& point : path) {
             const Json& event = member(point, "event");
             const glm::dvec3 p = vec3(member(point, "position"));
             if (event == "bounce" || event == "hit") {
-                out += "<circle cx=\"" + number(panel.px(p)) + "\" cy=\"" + number(panel.py(p)) +
-                       "\" r=\"3.5\" fill=\"white\" stroke=\"" + style.colour + "\" stroke-width=\"1.5\"/>\n";
+                out += kSvg.circle(panel.px(p), panel.py(p), "3.5",
+                                   "fill=\"white\" stroke=\"" + style.colour + "\" stroke-width=\"1.5\"");
             } else if (event == "rest") {
-                out += "<rect x=\"" + number(panel.px(p) - 4) + "\" y=\"" + number(panel.py(p) - 4) +
-                       "\" width=\"8\" height=\"8\" fill=\"" + style.colour + "\"/>\n";
+                out += kSvg.rect(panel.px(p) - 4, panel.py(p) - 4, "8", "8", "fill=\"" + style.colour + "\"");
             }
         }
     }
@@ -313,10 +281,9 @@ std::string dangerZones(const Panel& panel, const Json& document) {
         const Json& radius = member(zone, "radius");
         if (!radius.is_number() || !(radius.get<double>() > 0.0)) continue;
         const glm::dvec3 c = vec3(member(zone, "center"));
-        out += "<circle cx=\"" + number(panel.px(c)) + "\" cy=\"" + number(panel.py(c)) + "\" r=\"" +
-               number(radius.get<double>() * panel.scale) +
-               "\" fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" stroke-width=\"1.5\" "
-               "stroke-dasharray=\"4 3\"/>\n";
+        out += kSvg.circle(panel.px(c), panel.py(c), radius.get<double>() * panel.scale,
+                           "fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" stroke-width=\"1.5\" "
+                           "stroke-dasharray=\"4 3\"");
     }
     return out;
 }
@@ -358,18 +325,16 @@ std::string picture(const Json& document) {
     const double height = legendTop + kLegendLine * static_cast<double>(styles.size() + 2) + 16;
 
     std::string title = member(document, "title").is_string() ? member(document, "title").get<std::string>() : "foresight";
-    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(kWidth) + "\" height=\"" + number(height) +
-           "\" viewBox=\"0 0 " + number(kWidth) + " " + number(height) + "\" font-family=\"sans-serif\">\n";
-    out += "<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    out += "<text x=\"" + number(kMargin) + "\" y=\"28\" font-size=\"18\">" + escape(title) + "</text>\n";
+    std::string out = kSvg.begin(kWidth, height, &title);
+    out += kSvg.text(kMargin, "28", "font-size=\"18\"", escapeXml(title));
     for (const Panel* panel : {&top, &side}) {
         out += axes(*panel);
         // Everything inside the panel is clipped to it.
         const std::string id = panel == &top ? "top" : "side";
-        out += "<clipPath id=\"" + id + "\"><rect x=\"" + number(panel->left) + "\" y=\"" + number(panel->top) +
-               "\" width=\"" + number((panel->u1 - panel->u0) * panel->scale) + "\" height=\"" +
-               number(panel->height()) + "\"/></clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
+        out += "<clipPath id=\"" + id + "\">" +
+               SvgWriter::inlined(kSvg.rect(panel->left, panel->top, (panel->u1 - panel->u0) * panel->scale,
+                                            panel->height(), "")) +
+               "</clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
         out += world(*panel, document);
         out += dangerZones(*panel, document);
         out += predictions(*panel, document, styles);
@@ -385,25 +350,25 @@ std::string picture(const Json& document) {
         std::string method = member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
         if (style.engine && member(prediction, "engine").is_string())
             method = "as " + member(prediction, "engine").get<std::string>() + " steps it";
-        out += "<line x1=\"" + number(kMargin) + "\" y1=\"" + number(y) + "\" x2=\"" + number(kMargin + 36) + "\" y2=\"" +
-               number(y) + "\" stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") + "\"" +
-               (style.faithful ? " stroke-dasharray=\"7 4\"" : "") + "/>\n";
-        out += "<text x=\"" + number(kMargin + 44) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">" + escape(id) + " (" +
-               escape(method) + (style.faithful ? ": the article's method" : "") + ")</text>\n";
+        out += kSvg.line(kMargin, y, kMargin + 36, y,
+                         "stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") + "\"" +
+                             (style.faithful ? " stroke-dasharray=\"7 4\"" : ""));
+        out += kSvg.text(kMargin + 44, y + 4, "font-size=\"12\"",
+                         escapeXml(id) + " (" + escapeXml(method) + (style.faithful ? ": the article's method" : "") + ")");
         y += kLegendLine;
     }
-    out += "<circle cx=\"" + number(kMargin + 18) + "\" cy=\"" + number(y) +
-           "\" r=\"3.5\" fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"/><text x=\"" + number(kMargin + 44) +
-           "\" y=\"" + number(y + 4) + "\" font-size=\"12\">bounce</text>\n";
-    out += "<rect x=\"" + number(kMargin + 160) + "\" y=\"" + number(y - 4) + "\" width=\"8\" height=\"8\" fill=\"#333\"/>" +
-           "<text x=\"" + number(kMargin + 176) + "\" y=\"" + number(y + 4) + "\" font-size=\"12\">at rest</text>\n";
+    // The markers' key: each marker and its name on one line.
+    out += SvgWriter::inlined(kSvg.circle(kMargin + 18, y, "3.5", "fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"")) +
+           kSvg.text(kMargin + 44, y + 4, "font-size=\"12\"", "bounce");
+    out += SvgWriter::inlined(kSvg.rect(kMargin + 160, y - 4, "8", "8", "fill=\"#333\"")) +
+           kSvg.text(kMargin + 176, y + 4, "font-size=\"12\"", "at rest");
     if (member(document, "danger_zones").is_array() && !member(document, "danger_zones").empty()) {
-        out += "<circle cx=\"" + number(kMargin + 300) + "\" cy=\"" + number(y) +
-               "\" r=\"6\" fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" stroke-width=\"1.5\" "
-               "stroke-dasharray=\"4 3\"/><text x=\"" + number(kMargin + 316) + "\" y=\"" + number(y + 4) +
-               "\" font-size=\"12\">danger zone (blast)</text>\n";
+        out += SvgWriter::inlined(kSvg.circle(kMargin + 300, y, "6",
+                                              "fill=\"#d62728\" fill-opacity=\"0.12\" stroke=\"#d62728\" "
+                                              "stroke-width=\"1.5\" stroke-dasharray=\"4 3\"")) +
+               kSvg.text(kMargin + 316, y + 4, "font-size=\"12\"", "danger zone (blast)");
     }
-    out += "</svg>\n";
+    out += SvgWriter::end();
     return out;
 }
 
@@ -415,7 +380,7 @@ std::string svgPicture(const Json& document) {
     } catch (const std::exception& error) {  // a malformed document (nlohmann type errors)
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" "
                "height=\"40\"><text x=\"10\" y=\"25\">cannot draw this document: " +
-               escape(error.what()) + "</text></svg>\n";
+               escapeXml(error.what()) + "</text></svg>\n";
     }
 }
 

@@ -1,17 +1,12 @@
 #include <foresight/bullet_world.h>
 
+#include "bullet_convert.h"
+
 #include <glm/geometric.hpp>
 
 FORESIGHT_NAMESPACE_BEGIN
 
-namespace {
-
-template <class T>
-btVector3 toBt(const glm::vec<3, T, glm::defaultp>& v) {
-    return btVector3(static_cast<btScalar>(v.x), static_cast<btScalar>(v.y), static_cast<btScalar>(v.z));
-}
-
-}  // namespace
+using bullet_detail::toBt;
 
 BulletScene::BulletScene()
     : mConfiguration(std::make_unique<btDefaultCollisionConfiguration>()),

@@ -1,5 +1,7 @@
 #include <foresight/bullet_simulation.h>
 
+#include "bullet_convert.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -11,13 +13,8 @@ FORESIGHT_NAMESPACE_BEGIN
 
 namespace {
 
-btVector3 toBt(const glm::dvec3& v) {
-    return btVector3(static_cast<btScalar>(v.x), static_cast<btScalar>(v.y), static_cast<btScalar>(v.z));
-}
-
-glm::dvec3 toD(const btVector3& v) {
-    return glm::dvec3(static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z()));
-}
+using bullet_detail::toBt;
+using bullet_detail::toD;
 
 RVec3 toR(const btVector3& v) {
     return RVec3(static_cast<Real>(v.x()), static_cast<Real>(v.y()), static_cast<Real>(v.z()));

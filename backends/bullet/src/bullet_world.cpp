@@ -1,5 +1,7 @@
 #include <foresight/bullet_world.h>
 
+#include "bullet_convert.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -11,13 +13,8 @@ FORESIGHT_NAMESPACE_BEGIN
 
 namespace {
 
-btVector3 toBt(const glm::dvec3& v) {
-    return btVector3(static_cast<btScalar>(v.x), static_cast<btScalar>(v.y), static_cast<btScalar>(v.z));
-}
-
-glm::dvec3 toD(const btVector3& v) {
-    return glm::dvec3(static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z()));
-}
+using bullet_detail::toBt;
+using bullet_detail::toD;
 
 // What a hit reported by Bullet means under CollisionWorld's rules. The cast Bullet runs starts
 // `skin` before the real origin (so that a start on a surface, or just behind it, still sees

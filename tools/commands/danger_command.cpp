@@ -1,6 +1,7 @@
-#include "danger.h"
+#include "danger_command.h"
 
 #include "json_input.h"
+#include "picture.h"
 
 #include <cmath>
 #include <iostream>

@@ -1,5 +1,5 @@
 #pragma once
-/// @file plan.h
+/// @file plan_command.h
 /// `foresight plan FILE|-`: throw planning (foresight/throw_planner.h) from a JSON document:
 /// a scenario's `gravity` and `world` and a list of `throws` (start, target, fuse, speed cap,
 /// ...); the output lists, per throw, the plans found (launch velocity, final position,

@@ -1,5 +1,5 @@
 #pragma once
-/// @file compare.h
+/// @file compare_command.h
 /// `foresight compare`: the projectile predictions ("stepped", the article's loop, and "exact")
 /// measured against a rigid-body simulation in Bullet Physics, the ground truth.
 ///

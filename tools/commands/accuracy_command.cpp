@@ -1,4 +1,4 @@
-#include "accuracy.h"
+#include "accuracy_command.h"
 
 #include <foresight/foresight.h>
 

@@ -2,7 +2,7 @@
 // engine (through the harnesses of tests/engines/) beside the engine-matched, exact and stepped
 // predictions. Formats and harnesses: docs/engines.md, tests/engines/README.md.
 
-#include "compare.h"
+#include "compare_command.h"
 
 #include "json_input.h"
 #include "json_output.h"

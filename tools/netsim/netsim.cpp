@@ -1,5 +1,7 @@
 #include "netsim.h"
 
+#include "svg_writer.h"
+
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -953,34 +955,18 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
     double maxError = 0;
     for (const auto& d : model.displays)
         for (const float e : d.seriesError) maxError = std::max(maxError, static_cast<double>(e));
-    const auto step = [](double span) {
-        const double rough = span / 8;
-        const double power = std::pow(10.0, std::floor(std::log10(rough)));
-        for (const double m : {1.0, 2.0, 5.0, 10.0})
-            if (m * power >= rough) return m * power;
-        return 10 * power;
-    };
-    const double yStep = maxError > 0 ? step(maxError) : 0.1;
+    const double yStep = maxError > 0 ? gridStep(maxError) : 0.1;
     const double yMax = std::max(yStep, std::ceil(maxError / yStep) * yStep);
     const double xMax = result.duration > 0 ? result.duration : 1;
-    const double xStep = step(xMax);
+    const double xStep = gridStep(xMax);
     const auto px = [&](double t) { return kLeft + t / xMax * kPlotWidth; };
     const auto py = [&](double e) { return kTop + (1 - e / yMax) * kPlotHeight; };
-    const auto n = [](double v) { return format("%.1f", v); };
+    const SvgWriter svg(1, false);
 
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + n(kWidth) + "\" height=\"" + n(kHeight) +
-                      "\" viewBox=\"0 0 " + n(kWidth) + " " + n(kHeight) + "\" font-family=\"sans-serif\">\n";
-    svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    std::string title = "Position error over time: " + result.name + ", " +
-                        foresight::deadReckoningAlgorithmName(model.model);
-    std::string escaped;
-    for (const char c : title) {
-        if (c == '&') escaped += "&amp;";
-        else if (c == '<') escaped += "&lt;";
-        else if (c == '>') escaped += "&gt;";
-        else escaped += c;
-    }
-    svg += "<text x=\"" + n(kLeft) + "\" y=\"22\" font-size=\"15\" font-weight=\"bold\">" + escaped + "</text>\n";
+    std::string out = svg.begin(kWidth, kHeight);
+    const std::string title = "Position error over time: " + result.name + ", " +
+                              foresight::deadReckoningAlgorithmName(model.model);
+    out += svg.text(kLeft, "22", "font-size=\"15\" font-weight=\"bold\"", escapeXml(title, false));
     // The settings, wrapped at "; " to fit the width (10 px text, about 5.5 px a character).
     const std::string line = settingsLine(settings);
     std::vector<std::string> rows(1);
@@ -992,32 +978,27 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
         at = semicolon + 2;
     }
     for (std::size_t r = 0; r < rows.size(); ++r)
-        svg += "<text x=\"" + n(kLeft) + "\" y=\"" + n(34 + 11 * static_cast<double>(r)) + "\" font-size=\"10\" fill=\"#555\">" +
-               rows[r] + "</text>\n";
-    svg += "<rect x=\"" + n(kLeft) + "\" y=\"" + n(kTop) + "\" width=\"" + n(kPlotWidth) + "\" height=\"" + n(kPlotHeight) +
-           "\" fill=\"#fbfbfb\" stroke=\"#555\"/>\n";
+        out += svg.text(kLeft, 34 + 11 * static_cast<double>(r), "font-size=\"10\" fill=\"#555\"", rows[r]);
+    out += svg.rect(kLeft, kTop, kPlotWidth, kPlotHeight, "fill=\"#fbfbfb\" stroke=\"#555\"");
     for (double t = 0; t <= xMax + 1e-9 * xStep; t += xStep) {
-        svg += "<line x1=\"" + n(px(t)) + "\" y1=\"" + n(kTop) + "\" x2=\"" + n(px(t)) + "\" y2=\"" + n(kTop + kPlotHeight) +
-               "\" stroke=\"#e3e3e3\"/>\n";
-        svg += "<text x=\"" + n(px(t)) + "\" y=\"" + n(kTop + kPlotHeight + 16) + "\" font-size=\"11\" text-anchor=\"middle\">" +
-               format("%g", t) + "</text>\n";
+        out += svg.line(px(t), kTop, px(t), kTop + kPlotHeight, "stroke=\"#e3e3e3\"");
+        out += svg.text(px(t), kTop + kPlotHeight + 16, "font-size=\"11\" text-anchor=\"middle\"", format("%g", t));
     }
     for (double e = 0; e <= yMax + 1e-9 * yStep; e += yStep) {
-        svg += "<line x1=\"" + n(kLeft) + "\" y1=\"" + n(py(e)) + "\" x2=\"" + n(kLeft + kPlotWidth) + "\" y2=\"" + n(py(e)) +
-               "\" stroke=\"#e3e3e3\"/>\n";
-        svg += "<text x=\"" + n(kLeft - 6) + "\" y=\"" + n(py(e) + 4) + "\" font-size=\"11\" text-anchor=\"end\">" +
-               format("%g", e) + "</text>\n";
+        out += svg.line(kLeft, py(e), kLeft + kPlotWidth, py(e), "stroke=\"#e3e3e3\"");
+        out += svg.text(kLeft - 6, py(e) + 4, "font-size=\"11\" text-anchor=\"end\"", format("%g", e));
     }
-    svg += "<text x=\"" + n(kLeft + kPlotWidth / 2) + "\" y=\"" + n(kHeight - 12) +
-           "\" font-size=\"12\" text-anchor=\"middle\">time [s]</text>\n";
-    svg += "<text x=\"18\" y=\"" + n(kTop + kPlotHeight / 2) + "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " +
-           n(kTop + kPlotHeight / 2) + ")\">position error [m]</text>\n";
+    out += svg.text(kLeft + kPlotWidth / 2, kHeight - 12, "font-size=\"12\" text-anchor=\"middle\"", "time [s]");
+    out += svg.text("18", kTop + kPlotHeight / 2,
+                    "font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " + svg.number(kTop + kPlotHeight / 2) +
+                        ")\"",
+                    "position error [m]");
     const double legendLeft = kLeft + kPlotWidth - 200;
     const auto legendY = [&](std::size_t i) { return kTop + 22 + 16 * static_cast<double>(i); };
     std::string legend;
     for (std::size_t i = 0; i < model.displays.size(); ++i) {
         const DisplayResult& d = model.displays[i];
-        const char* colour = colours[i % 5];
+        const std::string colour = colours[i % 5];
         // At most two points per pixel column (its smallest and largest error, in time order), so
         // an hour at 240 Hz stays a small file and keeps its peaks.
         std::string points;
@@ -1032,23 +1013,23 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
                 if (d.seriesError[last] > d.seriesError[high]) high = last;
             }
             for (const std::size_t p : {std::min(low, high), std::max(low, high)}) {
-                points += n(px(d.seriesTime[p])) + "," + n(py(d.seriesError[p])) + " ";
+                points += svg.point(px(d.seriesTime[p]), py(d.seriesError[p])) + " ";
                 if (low == high) break;
             }
             k = last + 1;
         }
-        svg += "<polyline fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"1.2\" points=\"" + points + "\"/>\n";
-        legend += "<line x1=\"" + n(legendLeft + 8) + "\" y1=\"" + n(legendY(i) - 4) + "\" x2=\"" + n(legendLeft + 30) +
-                  "\" y2=\"" + n(legendY(i) - 4) + "\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
-        legend += "<text x=\"" + n(legendLeft + 36) + "\" y=\"" + n(legendY(i)) + "\" font-size=\"11\">" +
-                  displayName(d.display) + format(" (p95 %.2f m)", d.position.p95) + "</text>\n";
+        out += svg.polyline("fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"1.2\"", points);
+        legend += svg.line(legendLeft + 8, legendY(i) - 4, legendLeft + 30, legendY(i) - 4,
+                           "stroke=\"" + colour + "\" stroke-width=\"2\"");
+        legend += svg.text(legendLeft + 36, legendY(i), "font-size=\"11\"",
+                           displayName(d.display) + format(" (p95 %.2f m)", d.position.p95));
     }
     // The legend last, on a white box above the lines.
-    svg += "<rect x=\"" + n(legendLeft) + "\" y=\"" + n(kTop + 6) + "\" width=\"190\" height=\"" +
-           n(16 * static_cast<double>(model.displays.size()) + 8) + "\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n";
-    svg += legend;
-    svg += "</svg>\n";
-    return svg;
+    out += svg.rect(legendLeft, kTop + 6, "190", 16 * static_cast<double>(model.displays.size()) + 8,
+                    "fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"");
+    out += legend;
+    out += SvgWriter::end();
+    return out;
 }
 
 } // namespace foresight_cli::netsim

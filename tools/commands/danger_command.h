@@ -1,5 +1,5 @@
 #pragma once
-/// @file danger.h
+/// @file danger_command.h
 /// `foresight danger FILE`: danger for AI (include/foresight/danger.h) from a scenario file.
 ///
 /// The input is a scenario (the format of `foresight predict`, validated by the same code, so
@@ -10,7 +10,7 @@
 /// (projectiles), or per character its first contact and closest approach (vehicles).
 
 #include "json_output.h"
-#include "picture.h"
+#include "picture_options.h"
 #include "scenario.h"
 
 #include <foresight/danger.h>

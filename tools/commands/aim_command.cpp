@@ -1,4 +1,4 @@
-#include "aim.h"
+#include "aim_command.h"
 
 #include "json_input.h"
 #include "json_output.h"

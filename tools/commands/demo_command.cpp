@@ -1,12 +1,10 @@
-#include "demo.h"
+#include "demo_command.h"
 
 #include "demo_level.h"
+#include "level_world.h"
+#include "picture.h"
 #include "scenario.h"
 #include "text_file.h"
-
-#ifdef FORESIGHT_CLI_WITH_EMBREE
-#include <foresight/embree_world.h>
-#endif
 
 #include <array>
 #include <cmath>
@@ -126,33 +124,9 @@ std::string table(const Scenario& scenario, const std::vector<PredictionResult>&
 }
 
 /// The demo level in the scenario's world, exactly as `foresight predict` puts the triangles of
-/// kDemoLevelFile there (scenario.cpp): into an EmbreeWorld that also holds the primitives when
-/// the CLI has Embree, else as StaticWorld triangles after the scenario's own.
+/// kDemoLevelFile there (level_world.h).
 bool addDemoLevel(Scenario& scenario, std::string& error) {
-    const foresight_level::LevelMesh level = foresight_level::makeDemoLevel();
-    std::vector<foresight::RVec3> vertices(level.vertices.begin(), level.vertices.end());
-#ifdef FORESIGHT_CLI_WITH_EMBREE
-    auto world = std::make_unique<foresight::EmbreeWorld>();
-    foresight::MeshReport report;
-    if (world->addMesh(vertices, level.indices, &report) != foresight::Status::Ok) {
-        error = report.error;
-        return false;
-    }
-    world->addPrimitives(scenario.world);
-    if (!world->commit(&error)) return false;
-    scenario.meshWorld = std::move(world);
-#else
-    for (std::size_t i = 0; i + 2 < level.indices.size(); i += 3) {
-        const foresight::Triangle triangle{vertices[level.indices[i]], vertices[level.indices[i + 1]],
-                                           vertices[level.indices[i + 2]]};
-        // The OBJ loader skips degenerate triangles (the demo level has none).
-        if (foresight::validateTriangle(triangle) == foresight::Status::Ok && scenario.world.add(triangle) != foresight::Status::Ok) {
-            error = "cannot add a triangle of the demo level";
-            return false;
-        }
-    }
-#endif
-    return true;
+    return addLevelMesh(scenario, foresight_level::makeDemoLevel(), error);
 }
 
 
@@ -483,67 +457,6 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, co
     }
     if (pictures.htmlFile.empty() && writeHtml && !viewerAvailable())
         std::cerr << "foresight demo: no viewer page: " << viewerUnavailableReason() << '\n';
-    return 0;
-}
-
-int levelCommand(const LevelOptions& options) {
-    if (options.objFile.empty() && options.gltfFile.empty() && options.glbFile.empty()) {
-        std::cerr << "foresight level: nothing to write: give --obj FILE, --gltf FILE or --glb FILE\n";
-        return 2;
-    }
-    const bool room = options.room || !options.roomSize.empty();
-    glm::dvec3 size(10.0, 4.0, 10.0);
-    if (!options.roomSize.empty()) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const double value = options.roomSize.size() == 3 ? options.roomSize[static_cast<std::size_t>(axis)] : 0.0;
-            if (!std::isfinite(value) || !(value > 0.0)) {
-                std::cerr << "--room-size: expected 3 finite sizes > 0 (metres)\n";
-                return 2;
-            }
-            size[axis] = value;
-        }
-    }
-    const foresight_level::LevelMesh mesh = room ? foresight_level::makeClosedRoom(size) : foresight_level::makeDemoLevel();
-    const auto extensionIs = [](const std::string& file, const char* wanted) {
-        std::string extension = std::filesystem::path(file).extension().string();
-        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return extension == wanted;
-    };
-    for (const auto& [file, extension] : {std::pair{options.gltfFile, ".gltf"}, std::pair{options.glbFile, ".glb"}}) {
-        if (!file.empty() && !extensionIs(file, extension)) {
-            std::cerr << file << ": expected a file name ending in " << extension << '\n';
-            return 2;
-        }
-    }
-    // Everything is written before anything is printed: on failure standard output stays empty.
-    std::string report;
-    std::string error;
-    const std::string what = room ? "closed room" : "demo level";
-    const auto line = [&](const std::string& file) {
-        report += file + ": " + std::to_string(mesh.triangleCount()) + " triangles, " +
-                  std::to_string(mesh.vertices.size()) + " vertices, " + std::to_string(mesh.parts.size()) +
-                  " parts (" + what + ")\n";
-    };
-    if (!options.objFile.empty()) {
-        if (!foresight_level::writeObj(mesh, options.objFile, error)) {
-            std::cerr << error << '\n';
-            return 2;
-        }
-        line(options.objFile);
-    }
-    for (const std::string& file : {options.gltfFile, options.glbFile}) {
-        if (file.empty()) continue;
-        if (!foresight_level::writeGltf(mesh, file, error)) {
-            std::cerr << error << '\n';
-            return 2;
-        }
-        line(file);
-    }
-    std::string reason;
-    if (!writeTextFile("-", report, reason)) {
-        std::cerr << "foresight level: cannot write to standard output: " << reason << '\n';
-        return 1;
-    }
     return 0;
 }
 

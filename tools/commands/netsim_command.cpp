@@ -1,8 +1,9 @@
 // `foresight netsim`: options, checks, the JSON report, files and progress (the simulation and
-// the other reports are in netsim.cpp).
+// the other reports are in netsim/netsim.cpp).
+
+#include "netsim_command.h"
 
 #include "json_output.h"
-#include "netsim.h"
 #include "text_file.h"
 
 #include <CLI/CLI.hpp>
@@ -311,7 +312,7 @@ CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
                        "one's prediction) longer than this many m (default 10)")
         ->type_name("M");
     netsim->add_flag("--json", o.json, "write every result as JSON instead of the table");
-    netsim->add_flag("--markdown", o.markdown, "write the README's summary table (Markdown) instead");
+    netsim->add_flag("--markdown", o.markdown, "write the summary table of docs/results.md (Markdown) instead");
     netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory, first model other than STATIC) to FILE")
         ->type_name("FILE");
     // CLI11 reads an empty number ("--latency ''") as 0: the numeric options refuse it (the

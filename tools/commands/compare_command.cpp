@@ -1,4 +1,4 @@
-#include "compare.h"
+#include "compare_command.h"
 
 #include "json_output.h"
 #include "scenario.h"
@@ -6,6 +6,7 @@
 
 #ifdef FORESIGHT_CLI_WITH_BULLET
 #include "demo_level.h"
+#include "level_world.h"
 
 #include <foresight/bullet_simulation.h>
 #include <foresight/bullet_world.h>
@@ -383,33 +384,6 @@ Prediction makeThrow(const std::string& id, const RVec3& start, double speed, do
 
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
-/// Meshes go where the CLI puts them: an EmbreeWorld (with the primitives) when built, else
-/// StaticWorld triangles. Call after every primitive has been added.
-bool addMesh(Scenario& scenario, const foresight_level::LevelMesh& mesh, std::string& error) {
-    std::vector<foresight::RVec3> vertices;
-    vertices.reserve(mesh.vertices.size());
-    for (const auto& v : mesh.vertices) vertices.emplace_back(v);
-#ifdef FORESIGHT_CLI_WITH_EMBREE
-    auto world = std::make_unique<foresight::EmbreeWorld>();
-    world->addPrimitives(scenario.world);
-    foresight::MeshReport report;
-    if (world->addMesh(vertices, mesh.indices, &report) != Status::Ok) {
-        error = report.error;
-        return false;
-    }
-    if (!world->commit(&error)) return false;
-    scenario.meshWorld = std::move(world);
-#else
-    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const foresight::Triangle triangle{vertices[mesh.indices[i]], vertices[mesh.indices[i + 1]],
-                                           vertices[mesh.indices[i + 2]]};
-        if (foresight::validateTriangle(triangle) == Status::Ok) scenario.world.add(triangle);
-    }
-#endif
-    (void)error;
-    return true;
-}
-
 foresight::OrientedBox box(const RVec3& center, const Vec3& halfExtents, float angleAboutX = 0) {
     foresight::OrientedBox b;
     b.center = center;
@@ -474,7 +448,7 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
     }
     {
         BuiltinScene scene{"room mesh", "a closed 10 m x 4 m x 10 m room of triangles, seen from inside", {}};
-        if (!addMesh(scene.scenario, foresight_level::makeClosedRoom(glm::dvec3(10, 4, 10)), error)) return false;
+        if (!addLevelMesh(scene.scenario, foresight_level::makeClosedRoom(glm::dvec3(10, 4, 10)), error)) return false;
         throws(scene.scenario, "room_", [&](const std::string& id) {
             const RVec3 start(uniform(random, -3, 3), uniform(random, 1, 3), uniform(random, -3, 3));
             return makeThrow(id, start, uniform(random, 5, 15), radians(uniform(random, -30, 60)),
@@ -484,7 +458,7 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
     }
     {
         BuiltinScene scene{"demo level", "the courtyard of `foresight level` (3028 triangles: 30 m walls with a doorway, stairs to a platform, a ramp, pillars, crates); throws from its open middle", {}};
-        if (!addMesh(scene.scenario, foresight_level::makeDemoLevel(), error)) return false;
+        if (!addLevelMesh(scene.scenario, foresight_level::makeDemoLevel(), error)) return false;
         throws(scene.scenario, "level_", [&](const std::string& id) {
             const RVec3 start(uniform(random, -4, 4), 1.5, uniform(random, -4, 4));
             return makeThrow(id, start, uniform(random, 6, 14), radians(uniform(random, 10, 50)),

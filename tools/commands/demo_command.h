@@ -1,16 +1,15 @@
 #pragma once
-/// @file demo.h
+/// @file demo_command.h
 /// `foresight demo`: the reference article's three scenarios (a running character, a bouncing
 /// grenade, a turning car) and a grenade thrown across the demo level (demo_level.h), each
 /// predicted the article's way ("faithful") and exactly; one answer of each AI use (a firing
-/// solution, a planned throw, danger: tools/README.md), computed when it runs; and
-/// `foresight level`, which writes the demo level's files.
+/// solution, a planned throw, danger: tools/README.md), computed when it runs.
+/// `foresight level` (level_command.h) writes the demo level's files.
 
 #include "json_output.h"
-#include "picture.h"
+#include "picture_options.h"
 
 #include <string>
-#include <vector>
 
 namespace foresight_cli {
 
@@ -36,20 +35,5 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, co
 
 /// Where `foresight demo` writes its viewer page unless told otherwise.
 inline constexpr const char* kDemoHtmlFile = "foresight-demo.html";
-
-/// Options of `foresight level`.
-struct LevelOptions {
-    std::string objFile;          ///< Wavefront OBJ output, or empty.
-    std::string gltfFile;         ///< glTF (.gltf, JSON with the buffer embedded) output, or empty.
-    std::string glbFile;          ///< binary glTF (.glb) output, or empty.
-    bool room = false;            ///< the closed room instead of the courtyard.
-    std::vector<double> roomSize; ///< the room's size (3 numbers, implies `room`) [Units: m].
-};
-
-/// `foresight level`: writes the demo level (or the closed room) to every file given, then
-/// prints one line per file (name, triangles) to standard output. Returns 0, or 2 (nothing on
-/// standard output) for no output file, a bad room size, a wrong extension or a write error,
-/// with a message naming the file.
-int levelCommand(const LevelOptions& options);
 
 } // namespace foresight_cli

@@ -1,4 +1,4 @@
-#include "plan.h"
+#include "plan_command.h"
 
 #include "json_input.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-/// @file aim.h
+/// @file aim_command.h
 /// `foresight aim FILE|-`: firing solutions (contract: docs/aim-format.md).
 /// JSON shots in, JSON solutions out, through foresight::aimProjectile. Errors follow the
 /// scenario format's rules: one `path: message` line per problem, exit status 2, nothing on
