@@ -12,14 +12,13 @@ int main() {
     using namespace foresight;
 
     StaticWorld world;
-    if (world.add(Plane{Vec3(0, 1, 0), 0}) != Status::Ok) return 1; // the floor y = 0
+    if (world.add(Plane{Vec3(0, 1, 0), 0}) != Status::Ok) return 1;  // the floor y = 0
 
     // Thrown from 1.5 m up at 4 m/s up and 8 m/s forward; 3 s lets it bounce and settle.
-    ProjectileSettings settings; // Exact, gravity 9.81 m/s^2 down, restitution 0.5
+    ProjectileSettings settings;  // Exact, gravity 9.81 m/s^2 down, restitution 0.5
     std::array<TrajectoryPoint, 256> points{};
     ProjectileResult grenade;
-    const Status status =
-        predictProjectile(RVec3(0, 1.5f, 0), Vec3(0, 4, 8), 3.0f, settings, &world, points, grenade);
+    const Status status = predictProjectile(RVec3(0, 1.5f, 0), Vec3(0, 4, 8), 3.0f, settings, &world, points, grenade);
     if (status != Status::Ok) {
         std::fprintf(stderr, "predictProjectile refused the throw: %s\n", statusMessage(status));
         return 1;
