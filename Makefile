@@ -22,4 +22,4 @@ bench:
 	./scripts/bench.sh
 
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan build-debug

@@ -6,7 +6,11 @@
 #   1. build/       release build, warnings as errors; ctest
 #   2. install      `cmake --install build` into a temporary prefix; the standalone project in
 #                   examples/ is configured against it with find_package(foresight CONFIG),
-#                   built with warnings as errors, and run
+#                   built with warnings as errors, and run. Then the two other ways a game adds
+#                   foresight, tests/consumers/add_subdirectory and tests/consumers/fetch_content
+#                   (FetchContent with SOURCE_DIR: no network), each configured with the library
+#                   alone, built with warnings as errors and run; they fail if foresight changes
+#                   the parent's CMAKE_BUILD_TYPE or builds its tests, tools or backends
 #   3. benchmark    build/bench/foresight_bench, very briefly (a smoke test, not a measurement),
 #                   and build/bench/foresight_bench_worlds when the backends are built
 #   4. build-asan/  debug build with AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
@@ -96,6 +100,12 @@ run_ctest build
 step "installing build/ into a temporary prefix and building examples/ against it"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/foresight-test.XXXXXX")
 cmake --install build --prefix "$tmp/prefix" >/dev/null
+for notice in LICENSE THIRD_PARTY_NOTICES.md; do
+    if [[ ! -f "$tmp/prefix/share/doc/foresight/$notice" ]]; then
+        echo "test.sh: cmake --install did not install share/doc/foresight/$notice" >&2
+        exit 1
+    fi
+done
 # The installed package must not point back into the source or build tree.
 if grep -rl --include='*.cmake' -e "$root" "$tmp/prefix"; then
     echo "test.sh: the installed CMake package refers to $root (files above)" >&2
@@ -127,6 +137,23 @@ if grep -q '^FORESIGHT_WITH_BULLET:BOOL=ON' build/CMakeCache.txt; then
     fi
     "$tmp/example/hello_bullet"
 fi
+
+# The consumers compile the library themselves (about a minute each on two cores): one with no
+# build type, one with Debug, the cheapest builds; their CMakeLists.txt check that the build
+# type they set (or left empty) is still theirs after adding foresight.
+consumer_flags="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror"
+step "building and running tests/consumers/add_subdirectory (foresight added with add_subdirectory)"
+cmake -S tests/consumers/add_subdirectory -B "$tmp/consumer-add-subdirectory" -G Ninja --log-level=WARNING \
+    -DFORESIGHT_SOURCE_DIR="$root" -DCMAKE_CXX_FLAGS="$consumer_flags"
+cmake --build "$tmp/consumer-add-subdirectory" --parallel "$jobs"
+"$tmp/consumer-add-subdirectory/consumer_add_subdirectory"
+
+step "building and running tests/consumers/fetch_content (foresight added with FetchContent, offline)"
+cmake -S tests/consumers/fetch_content -B "$tmp/consumer-fetch-content" -G Ninja --log-level=WARNING \
+    -DCMAKE_BUILD_TYPE=Debug -DFETCHCONTENT_FULLY_DISCONNECTED=ON \
+    -DFORESIGHT_SOURCE_DIR="$root" -DCMAKE_CXX_FLAGS="$consumer_flags"
+cmake --build "$tmp/consumer-fetch-content" --parallel "$jobs"
+"$tmp/consumer-fetch-content/consumer_fetch_content"
 
 step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
 ./build/bench/foresight_bench --benchmark_min_time=0.01

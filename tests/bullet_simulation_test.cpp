@@ -36,7 +36,7 @@ using ftest::toD;
 using ftest::toF;
 using ftest::toR;
 
-constexpr double kG = 9.8100004196166992;  // kStandardGravity as float, as Bullet sees it
+constexpr double kG = 9.8100004196166992;  // kDefaultGravity as float, as Bullet sees it
 
 // The cases were drawn with xorshift64 (ftest::Random, test_util.h); keep the step.
 constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::XorShift64;
@@ -223,7 +223,7 @@ TEST(BulletSimulation, WallReflectsWithRestitution) {
     EXPECT_NEAR(result.impacts[0].touchTime, 2.45 / 6.0, 1e-5);
 
     // With gravity: the normal component reflects (on the face), gravity goes on.
-    settings.gravity = Vec3(0, -foresight::kStandardGravity, 0);
+    settings.gravity = Vec3(0, -foresight::kDefaultGravity, 0);
     ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 3, 0), Vec3(6, 2, 0), 0.6f, settings,
                                                      simulation, result),
               Status::Ok);

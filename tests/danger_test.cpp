@@ -520,7 +520,7 @@ Throw predictThrow(DVec3 position, DVec3 velocity, float time, const foresight::
 // u = +-sqrt((2 k h - 1) / (2 k^2)) from the apex, at distance sqrt(u^2 + (h - k u^2)^2); a
 // point above the apex (or below it, above the centre of curvature) is closest to the apex.
 TEST(DangerProjectile, ClosestApproachOfTheParabola) {
-    const double g = ftest::decimal(foresight::kStandardGravity);
+    const double g = ftest::decimal(foresight::kDefaultGravity);
     const Throw t = predictThrow(DVec3(0, 1, 0), DVec3(4, 6, 0), 2.0f, nullptr);
     const double apexTime = 6.0 / g, apexX = 4.0 * apexTime, apexY = 1.0 + 36.0 / (2.0 * g);
     const double k = g / (2.0 * 16.0);
@@ -623,7 +623,7 @@ TEST(DangerProjectile, DangerZoneSafetyAndDangerStart) {
     // The projectile itself: a point on its path at t = 0.5 (before the first bounce).
     RVec3 onPath;
     ASSERT_EQ(foresight::positionOnTrajectory(t.points, 0.5f, onPath), Status::Ok);
-    const double g = ftest::decimal(foresight::kStandardGravity);
+    const double g = ftest::decimal(foresight::kDefaultGravity);
     EXPECT_TRUE(ftest::vecNear(onPath, DVec3(0, 1.5 + 4 * 0.5 - 0.5 * g * 0.25, 4), 1e-5));  // float steps
     ASSERT_EQ(foresight::isPointSafe(danger, onPath, 0.5f, safe), Status::Ok);
     EXPECT_TRUE(safe);  // contactRadius 0: nothing before the fuse
@@ -664,7 +664,7 @@ TEST(DangerProjectile, AgreesWithFineSamplingOnRandomThrows) {
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), 0}), Status::Ok);
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 0.0f, -1.0f), -8}), Status::Ok);  // z = 8
     ftest::Random random(777, kRandomStep);
-    const double g = ftest::decimal(foresight::kStandardGravity);
+    const double g = ftest::decimal(foresight::kDefaultGravity);
     double worstClosest = 0, worstEarliest = 0, worstLate = 0;
     int cases = 0, corridorHits = 0;
     for (int i = 0; i < 1000; ++i) {

@@ -556,7 +556,7 @@ TEST(demo_level, ExactThrowsNeverEndBelowTheFloorNorPassThroughASolid) {
         // Every other throw is low enough (energy) never to clear the 4 m walls; the others may
         // fly out over them.
         const bool low = i % 2 == 0;
-        const double maxSpeed = low ? std::sqrt(2 * foresight::kStandardGravity * (kWallHeight - 0.05 - start.y)) : 16.0;
+        const double maxSpeed = low ? std::sqrt(2 * foresight::kDefaultGravity * (kWallHeight - 0.05 - start.y)) : 16.0;
         const double speed = random.uniform(1.0, maxSpeed);
         const double azimuth = random.uniform(0, 2 * 3.14159265358979323846);
         const double elevation = std::asin(random.uniform(-0.5, 1.0));

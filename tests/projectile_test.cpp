@@ -41,7 +41,7 @@ using ftest::DVec3;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 /// Gravity as the library takes it: the float 9.81f at its decimal value, 9.81 (projectile.h).
-const double kG = ftest::decimal(foresight::kStandardGravity);
+const double kG = ftest::decimal(foresight::kDefaultGravity);
 
 ProjectileSettings makeSettings(ProjectileMethod method, float restitution = 0.5f, float friction = 0.0f,
                                 float radius = 0.0f) {

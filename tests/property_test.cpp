@@ -325,7 +325,7 @@ DVec3 pointInside(ftest::Random& r, const ClosedMesh& mesh, double clearance) {
 
 /// Gravity: standard -Y (half the cases), or any direction at 2 .. 20 m/s^2.
 Vec3 randomGravity(ftest::Random& r) {
-    if (r.below(2) == 0) return Vec3(0.0f, -foresight::kStandardGravity, 0.0f);
+    if (r.below(2) == 0) return Vec3(0.0f, -foresight::kDefaultGravity, 0.0f);
     return ftest::toF(randomUnit(r) * r.uniform(2.0, 20.0));
 }
 

@@ -72,7 +72,7 @@ struct AimShot {
     /// ApexAboveStart / ApexAboveTarget: the apex's height above the start or the hit point,
     /// along -gravity [Units: m] [Limit: finite]. Below 0 nothing is reachable (no solutions).
     float apexHeight = 0.0f;
-    Vec3 gravity{0.0f, -kStandardGravity, 0.0f};          ///< [Units: m/s^2], world axes.
+    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f};          ///< [Units: m/s^2], world axes.
     /// Latest flight time reported [Units: s] [Limit: >= 0, finite]; 0 gives no solutions.
     float maxTime = 60.0f;
 };

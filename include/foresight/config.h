@@ -83,8 +83,10 @@ static_assert(sizeof(RVec3) == 3 * sizeof(Real), "GLM must be configured with pa
 /// with Status::OutOfRange [Units: m/s] (a rifle bullet flies about 1e3 m/s).
 inline constexpr double kMaxSpeed = 1.0e6;
 
-/// Standard gravity of the reference article, along -Y [Units: m/s^2].
-inline constexpr float kStandardGravity = 9.81f;
+/// The gravity foresight's settings default to, along -Y [Units: m/s^2]: 9.81, the value of the
+/// reference article and Unity's default. It is the rounded figure most games use, not standard
+/// gravity (9.80665 m/s^2 by definition); set the settings' `gravity` for any other value.
+inline constexpr float kDefaultGravity = 9.81f;
 
 /// Version of the library that was compiled (may differ from the headers if mismatched).
 const char* versionString();

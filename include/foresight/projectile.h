@@ -74,7 +74,7 @@ inline constexpr std::uint32_t kUnlimitedBounces = std::numeric_limits<std::uint
 /// How to predict a projectile. Defaults follow the reference article.
 struct ProjectileSettings {
     ProjectileMethod method = ProjectileMethod::Exact;
-    Vec3 gravity{0.0f, -kStandardGravity, 0.0f}; ///< [Units: m/s^2], world axes.
+    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f}; ///< [Units: m/s^2], world axes.
     float step = 0.02f;         ///< time step [Units: s] [Limit: > 0]; Exact records a point per step.
     float restitution = 0.5f;   ///< coefficient of restitution [Limit: 0 .. 1].
     /// Coulomb friction coefficient [Limit: >= 0]. At an impact the tangential velocity loses

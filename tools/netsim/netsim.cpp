@@ -22,7 +22,8 @@ using foresight::DeadReckoningAlgorithm;
 using foresight::Status;
 
 constexpr double kPi = glm::pi<double>();
-constexpr double kGravity = 9.80665;  // m/s^2, the aircraft's coordinated-turn bank
+/// Standard gravity (9.80665 m/s^2 by definition): the aircraft's coordinated-turn bank [m/s^2].
+constexpr double kStandardGravity = 9.80665;
 /// Positions of the heading-driven trajectories are integrated from their exact velocity with
 /// 3-point Gauss-Legendre on steps of this length [s]: the velocity is C2 (smoothstep ramps of
 /// the turn rate), so the error is below 1e-8 m over an hour.
@@ -185,8 +186,8 @@ struct HeadingMotion {
         if (bank) {
             // tan(bank) = lateral acceleration / g; a left turn (heading rate > 0 turns +Z
             // towards +X) banks towards +X, which is a negative roll about +Z.
-            const double u = speed * std::cos(a.climb) * a.headingRate / kGravity;
-            const double uRate = speed / kGravity *
+            const double u = speed * std::cos(a.climb) * a.headingRate / kStandardGravity;
+            const double uRate = speed / kStandardGravity *
                                  (-std::sin(a.climb) * a.climbRate * a.headingRate + std::cos(a.climb) * headingAcceleration);
             a.bank = -std::atan(u);
             a.bankRate = -uRate / (1 + u * u);

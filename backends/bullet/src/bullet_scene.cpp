@@ -15,8 +15,8 @@ BulletScene::BulletScene()
       mSolver(std::make_unique<btSequentialImpulseConstraintSolver>()),
       mWorld(std::make_unique<btDiscreteDynamicsWorld>(mDispatcher.get(), mBroadphase.get(), mSolver.get(),
                                                        mConfiguration.get())) {
-    // foresight's standard gravity (Bullet's default is -10).
-    mWorld->setGravity(btVector3(0, -static_cast<btScalar>(kStandardGravity), 0));
+    // foresight's default gravity, 9.81 m/s^2 (Bullet's default is -10).
+    mWorld->setGravity(btVector3(0, -static_cast<btScalar>(kDefaultGravity), 0));
 }
 
 BulletScene::~BulletScene() {

@@ -163,7 +163,7 @@ public:
     const btCollisionWorld& world() const { return *mWorld; }
     /// See world() const.
     btCollisionWorld& world() { return *mWorld; }
-    /// The same world as a dynamics world (for simulations; gravity (0, -kStandardGravity, 0)). Bodies
+    /// The same world as a dynamics world (for simulations; gravity (0, -kDefaultGravity, 0)). Bodies
     /// added to it are the caller's to remove; objectCount() counts only the static shapes.
     btDiscreteDynamicsWorld& dynamicsWorld() { return *mWorld; }
     /// See dynamicsWorld().
