@@ -46,12 +46,12 @@ const EmbreeWorld& levelWorld() {
         auto w = std::make_unique<EmbreeWorld>();
         const foresight_level::LevelMesh level = foresight_level::makeDemoLevel();
         std::vector<RVec3> vertices;
-        for (const glm::dvec3& v : level.vertices) vertices.emplace_back(v); // multiples of 1/256: exact
+        for (const glm::dvec3& v : level.vertices) vertices.emplace_back(v);  // multiples of 1/256: exact
         MeshReport report;
         std::string error;
         if (w->addMesh(vertices, level.indices, &report) != Status::Ok || !w->commit(&error)) {
-            std::fprintf(stderr, "foresight_bench_planning: the demo level was refused: %s%s\n",
-                         report.error.c_str(), error.c_str());
+            std::fprintf(stderr, "foresight_bench_planning: the demo level was refused: %s%s\n", report.error.c_str(),
+                         error.c_str());
             std::exit(EXIT_FAILURE);
         }
         return w;
@@ -74,8 +74,8 @@ std::array<Pair, kPairCount> courtyardPairs() {
 /// 3, 9) or beside a crate, seen from the middle.
 std::array<Pair, kPairCount> coverPairs() {
     std::array<Pair, kPairCount> pairs = courtyardPairs();
-    const std::array<RVec3, 6> hidden{RVec3(9.9f, 0, -9), RVec3(9.9f, 0, -3), RVec3(9.9f, 0, 3),
-                                      RVec3(9.9f, 0, 9), RVec3(-10, 0, -11.5f), RVec3(-12.2f, 0, -6)};
+    const std::array<RVec3, 6> hidden{RVec3(9.9f, 0, -9), RVec3(9.9f, 0, -3),    RVec3(9.9f, 0, 3),
+                                      RVec3(9.9f, 0, 9),  RVec3(-10, 0, -11.5f), RVec3(-12.2f, 0, -6)};
     for (std::size_t i = 0; i < pairs.size(); ++i) pairs[i].target = hidden[i % hidden.size()];
     return pairs;
 }
@@ -126,6 +126,6 @@ BENCHMARK_CAPTURE(BM_Plan, Courtyard, false, false)->Unit(benchmark::kMillisecon
 BENCHMARK_CAPTURE(BM_Plan, BehindCover, true, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Plan, BehindCoverFineGrid, true, true)->Unit(benchmark::kMillisecond);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

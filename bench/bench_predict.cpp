@@ -33,7 +33,7 @@ void BM_Projectile(benchmark::State& state, ProjectileMethod method, float frict
     }
     const std::array<Throw, kThrowCount> throws = makeThrows();
 
-    ProjectileSettings settings; // the article's: restitution 0.5 (and no friction)
+    ProjectileSettings settings;  // the article's: restitution 0.5 (and no friction)
     settings.method = method;
     settings.friction = friction;
     settings.step = kStep;
@@ -55,8 +55,8 @@ void BM_Projectile(benchmark::State& state, ProjectileMethod method, float frict
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(state.iterations() * kThrowCount);
-    state.counters["bounces/throw"] = static_cast<double>(bounces) /
-                                      static_cast<double>(state.iterations() * kThrowCount);
+    state.counters["bounces/throw"] =
+        static_cast<double>(bounces) / static_cast<double>(state.iterations() * kThrowCount);
 }
 // The article's settings (no friction: landed grenades slide on for the rest of the fuse).
 BENCHMARK_CAPTURE(BM_Projectile, Stepped, ProjectileMethod::Stepped, 0.0f);
@@ -69,7 +69,7 @@ enum class VehicleMethod { Iterative4, Exact };
 
 void BM_Vehicle(benchmark::State& state, VehicleMethod method) {
     const std::array<VehicleState, kThrowCount> vehicles = makeVehicles();
-    const VehicleSettings settings; // body frame, forward +Z (the article's)
+    const VehicleSettings settings;  // body frame, forward +Z (the article's)
 
     for (auto _ : state) {
         for (const VehicleState& vehicle : vehicles) {
@@ -90,6 +90,6 @@ void BM_Vehicle(benchmark::State& state, VehicleMethod method) {
 BENCHMARK_CAPTURE(BM_Vehicle, Iterative4, VehicleMethod::Iterative4);
 BENCHMARK_CAPTURE(BM_Vehicle, Exact, VehicleMethod::Exact);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

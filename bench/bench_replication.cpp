@@ -86,11 +86,16 @@ const Entities& entities(DeadReckoningAlgorithm only = DeadReckoningAlgorithm::S
     static const Entities rpb = makeEntities(DeadReckoningAlgorithm::Rpb);
     static const Entities rvb = makeEntities(DeadReckoningAlgorithm::Rvb);
     switch (only) {
-        case DeadReckoningAlgorithm::Fpw: return fpw;
-        case DeadReckoningAlgorithm::Rvw: return rvw;
-        case DeadReckoningAlgorithm::Rpb: return rpb;
-        case DeadReckoningAlgorithm::Rvb: return rvb;
-        default: return mixed;
+        case DeadReckoningAlgorithm::Fpw:
+            return fpw;
+        case DeadReckoningAlgorithm::Rvw:
+            return rvw;
+        case DeadReckoningAlgorithm::Rpb:
+            return rpb;
+        case DeadReckoningAlgorithm::Rvb:
+            return rvb;
+        default:
+            return mixed;
     }
 }
 

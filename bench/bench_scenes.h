@@ -17,9 +17,9 @@ namespace foresight_bench {
 using namespace foresight;
 
 constexpr int kThrowCount = 64;
-constexpr float kFuse = 3.0f;      // [s]
-constexpr float kStep = 0.02f;     // [s], the article's
-constexpr float kDriveTime = 2.0f; // [s]
+constexpr float kFuse = 3.0f;       // [s]
+constexpr float kStep = 0.02f;      // [s], the article's
+constexpr float kDriveTime = 2.0f;  // [s]
 constexpr float kPi = 3.14159265358979f;
 
 /// xorshift64*: small, fast and the same on every platform.
@@ -32,7 +32,7 @@ public:
         mState ^= mState >> 12;
         mState ^= mState << 25;
         mState ^= mState >> 27;
-        const std::uint64_t bits = (mState * 0x2545F4914F6CDD1DULL) >> 40; // 24 bits
+        const std::uint64_t bits = (mState * 0x2545F4914F6CDD1DULL) >> 40;  // 24 bits
         return lo + (hi - lo) * (static_cast<float>(bits) * (1.0f / 16777216.0f));
     }
 
@@ -44,11 +44,11 @@ private:
 inline StaticWorld makeArena() {
     StaticWorld world;
     bool ok = true;
-    ok &= world.add(Plane{Vec3(0, 1, 0), 0}) == Status::Ok;   // floor, y = 0
-    ok &= world.add(Plane{Vec3(1, 0, 0), -20}) == Status::Ok;  // wall at x = -20
-    ok &= world.add(Plane{Vec3(-1, 0, 0), -20}) == Status::Ok; // wall at x = +20
-    ok &= world.add(Plane{Vec3(0, 0, 1), -20}) == Status::Ok;  // wall at z = -20
-    ok &= world.add(Plane{Vec3(0, 0, -1), -20}) == Status::Ok; // wall at z = +20
+    ok &= world.add(Plane{Vec3(0, 1, 0), 0}) == Status::Ok;     // floor, y = 0
+    ok &= world.add(Plane{Vec3(1, 0, 0), -20}) == Status::Ok;   // wall at x = -20
+    ok &= world.add(Plane{Vec3(-1, 0, 0), -20}) == Status::Ok;  // wall at x = +20
+    ok &= world.add(Plane{Vec3(0, 0, 1), -20}) == Status::Ok;   // wall at z = -20
+    ok &= world.add(Plane{Vec3(0, 0, -1), -20}) == Status::Ok;  // wall at z = +20
 
     Random random(7);
     for (int i = 0; i < 6; ++i) {
@@ -59,7 +59,7 @@ inline StaticWorld makeArena() {
         ok &= world.add(crate) == Status::Ok;
     }
     ok &= world.add(Sphere{RVec3(4, 0, -6), 2.0f}) == Status::Ok;
-    if (!ok) world.clear(); // the benchmarks then report the empty world as an error
+    if (!ok) world.clear();  // the benchmarks then report the empty world as an error
     return world;
 }
 
@@ -77,8 +77,7 @@ inline std::array<Throw, kThrowCount> makeThrows() {
         const float speed = random.uniform(8, 20);
         const float yaw = random.uniform(0, 2 * kPi);
         const float pitch = random.uniform(10, 60) * (kPi / 180);
-        t.velocity = speed * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                  std::cos(pitch) * std::cos(yaw));
+        t.velocity = speed * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
     }
     return throws;
 }
@@ -94,10 +93,9 @@ inline std::array<VehicleState, kThrowCount> makeVehicles() {
                         glm::angleAxis(random.uniform(-0.2f, 0.2f), Vec3(1, 0, 0));
         const Vec3 forward = v.orientation * Vec3(0, 0, 1);
         v.velocity = forward * random.uniform(-5, 30);
-        v.angularVelocity = Vec3(random.uniform(-0.1f, 0.1f), random.uniform(-1, 1),
-                                 random.uniform(-0.1f, 0.1f));
+        v.angularVelocity = Vec3(random.uniform(-0.1f, 0.1f), random.uniform(-1, 1), random.uniform(-0.1f, 0.1f));
     }
     return vehicles;
 }
 
-} // namespace foresight_bench
+}  // namespace foresight_bench

@@ -107,17 +107,14 @@ double residentBytes() {
 /// Wall and process CPU time (all threads) of one build step.
 class BuildTimer {
 public:
-    BuildTimer()
-        : mWall(std::chrono::steady_clock::now()), mCpu(std::clock()), mResident(residentBytes()) {}
+    BuildTimer() : mWall(std::chrono::steady_clock::now()), mCpu(std::clock()), mResident(residentBytes()) {}
     /// "1.23 s wall, 2.34 s CPU, +56 MB resident"
     std::string report() const {
-        const double wall =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - mWall).count();
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - mWall).count();
         const double cpu = static_cast<double>(std::clock() - mCpu) / CLOCKS_PER_SEC;
         const double megabytes = (residentBytes() - mResident) / (1024.0 * 1024.0);
         char text[96];
-        std::snprintf(text, sizeof text, "%.3f s wall, %.3f s CPU, %+.0f MB resident", wall, cpu,
-                      megabytes);
+        std::snprintf(text, sizeof text, "%.3f s wall, %.3f s CPU, %+.0f MB resident", wall, cpu, megabytes);
         return text;
     }
 
@@ -132,9 +129,7 @@ private:
     std::exit(EXIT_FAILURE);
 }
 
-void note(const std::string& message) {
-    std::fprintf(stderr, "foresight_bench_worlds: %s\n", message.c_str());
-}
+void note(const std::string& message) { std::fprintf(stderr, "foresight_bench_worlds: %s\n", message.c_str()); }
 
 // ---------------------------------------------------------------------------------------------
 // The meshes
@@ -147,15 +142,14 @@ struct Mesh {
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
-constexpr int kGridQuads = 706; // per side: 2 * 706^2 = 996,872 terrain triangles
-constexpr int kBuildingCount = 400; // 10 triangles each: 4,000
-constexpr float kGridHalfSize = 0.5f * kGridQuads; // [m], 1 m quads centred on the origin
+constexpr int kGridQuads = 706;                     // per side: 2 * 706^2 = 996,872 terrain triangles
+constexpr int kBuildingCount = 400;                 // 10 triangles each: 4,000
+constexpr float kGridHalfSize = 0.5f * kGridQuads;  // [m], 1 m quads centred on the origin
 
 /// Rolling hills (up to about +-9 m) with a small ripple.
 float terrainHeight(float x, float z) {
     return 6.0f * std::sin(0.021f * x) * std::cos(0.017f * z) +
-           2.5f * std::sin(0.07f * x + 0.3f) * std::sin(0.05f * z) +
-           0.6f * std::sin(0.31f * x + 0.11f * z);
+           2.5f * std::sin(0.07f * x + 0.3f) * std::sin(0.05f * z) + 0.6f * std::sin(0.31f * x + 0.11f * z);
 }
 
 /// About one million triangles: a 706 x 706 terrain grid of 1 m quads with hills (996,872
@@ -166,8 +160,7 @@ Mesh makeBigMesh() {
     Mesh mesh;
     const int side = kGridQuads + 1;
     mesh.vertices.reserve(static_cast<std::size_t>(side) * side + 8 * kBuildingCount);
-    mesh.indices.reserve(6 * static_cast<std::size_t>(kGridQuads) * kGridQuads +
-                         30 * kBuildingCount);
+    mesh.indices.reserve(6 * static_cast<std::size_t>(kGridQuads) * kGridQuads + 30 * kBuildingCount);
     for (int j = 0; j < side; ++j) {
         for (int i = 0; i < side; ++i) {
             const float x = static_cast<float>(i) - kGridHalfSize;
@@ -178,8 +171,7 @@ Mesh makeBigMesh() {
     for (int j = 0; j < kGridQuads; ++j) {
         for (int i = 0; i < kGridQuads; ++i) {
             const auto v00 = static_cast<std::uint32_t>(j * side + i);
-            const std::uint32_t v10 = v00 + 1, v01 = v00 + static_cast<std::uint32_t>(side),
-                                v11 = v01 + 1;
+            const std::uint32_t v10 = v00 + 1, v01 = v00 + static_cast<std::uint32_t>(side), v11 = v01 + 1;
             mesh.indices.insert(mesh.indices.end(), {v00, v10, v11, v00, v11, v01});
         }
     }
@@ -197,20 +189,17 @@ Mesh makeBigMesh() {
             z[k] = cz - s * ux[k] + c * uz[k];
             base = std::min(base, terrainHeight(x[k], z[k]));
         }
-        base -= 1.0f; // sunk into the hills: no gap under a wall
+        base -= 1.0f;  // sunk into the hills: no gap under a wall
         const float top = terrainHeight(cx, cz) + height;
         const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
-        for (int k = 0; k < 4; ++k)
-            mesh.vertices.emplace_back(x[k], base, z[k]);
-        for (int k = 0; k < 4; ++k)
-            mesh.vertices.emplace_back(x[k], top, z[k]);
+        for (int k = 0; k < 4; ++k) mesh.vertices.emplace_back(x[k], base, z[k]);
+        for (int k = 0; k < 4; ++k) mesh.vertices.emplace_back(x[k], top, z[k]);
         for (std::uint32_t k = 0; k < 4; ++k) {
             const std::uint32_t n = (k + 1) % 4;
-            mesh.indices.insert(mesh.indices.end(), {first + k, first + n, first + 4 + n, first + k,
-                                                     first + 4 + n, first + 4 + k});
+            mesh.indices.insert(mesh.indices.end(),
+                                {first + k, first + n, first + 4 + n, first + k, first + 4 + n, first + 4 + k});
         }
-        mesh.indices.insert(mesh.indices.end(),
-                            {first + 4, first + 5, first + 6, first + 4, first + 6, first + 7});
+        mesh.indices.insert(mesh.indices.end(), {first + 4, first + 5, first + 6, first + 4, first + 6, first + 7});
     }
     return mesh;
 }
@@ -219,8 +208,7 @@ Mesh makeBigMesh() {
 // The worlds
 
 btVector3 toBt(const RVec3& v) {
-    return btVector3(static_cast<btScalar>(v.x), static_cast<btScalar>(v.y),
-                     static_cast<btScalar>(v.z));
+    return btVector3(static_cast<btScalar>(v.x), static_cast<btScalar>(v.y), static_cast<btScalar>(v.z));
 }
 
 /// A btCollisionWorld (btDbvtBroadphase) holding one static btBvhTriangleMeshShape (quantized
@@ -233,11 +221,9 @@ public:
         BuildTimer copyTimer;
         mMesh.preallocateVertices(static_cast<int>(mesh.vertices.size()));
         mMesh.preallocateIndices(static_cast<int>(mesh.indices.size()));
-        for (const RVec3& v : mesh.vertices)
-            mMesh.findOrAddVertex(toBt(v), false);
+        for (const RVec3& v : mesh.vertices) mMesh.findOrAddVertex(toBt(v), false);
         for (std::size_t i = 0; i < mesh.indices.size(); i += 3)
-            mMesh.addTriangleIndices(static_cast<int>(mesh.indices[i]),
-                                     static_cast<int>(mesh.indices[i + 1]),
+            mMesh.addTriangleIndices(static_cast<int>(mesh.indices[i]), static_cast<int>(mesh.indices[i + 1]),
                                      static_cast<int>(mesh.indices[i + 2]));
         const std::string copied = copyTimer.report();
         BuildTimer bvhTimer;
@@ -245,11 +231,9 @@ public:
         const std::string built = bvhTimer.report();
         mShape->setMargin(btScalar(0));
         mObject.setCollisionShape(mShape.get());
-        mObject.setCollisionFlags(mObject.getCollisionFlags() |
-                                  btCollisionObject::CF_STATIC_OBJECT);
+        mObject.setCollisionFlags(mObject.getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
         mWorld.addCollisionObject(&mObject);
-        if (report)
-            *report = "btTriangleMesh copy " + copied + "; btBvhTriangleMeshShape BVH " + built;
+        if (report) *report = "btTriangleMesh copy " + copied + "; btBvhTriangleMeshShape BVH " + built;
     }
     ~BulletMeshWorld() { mWorld.removeCollisionObject(&mObject); }
     BulletMeshWorld(const BulletMeshWorld&) = delete;
@@ -281,7 +265,7 @@ struct UserTriangle {
 /// What the user-geometry callbacks see.
 struct UserGeometry {
     std::vector<UserTriangle> triangles;
-    float pad = 0; // bounds padding [m], EmbreeWorld's (1e-6 m + 2^-21 of the largest coordinate)
+    float pad = 0;  // bounds padding [m], EmbreeWorld's (1e-6 m + 2^-21 of the largest coordinate)
 };
 
 /// The ray context of the user geometry: Embree passes the first member's address back.
@@ -293,8 +277,7 @@ struct CountingContext {
 void userBounds(const RTCBoundsFunctionArguments* args) {
     const auto* g = static_cast<const UserGeometry*>(args->geometryUserPtr);
     const UserTriangle& t = g->triangles[args->primID];
-    const glm::vec3 lo = glm::min(t.a, glm::min(t.b, t.c)) - g->pad,
-                    hi = glm::max(t.a, glm::max(t.b, t.c)) + g->pad;
+    const glm::vec3 lo = glm::min(t.a, glm::min(t.b, t.c)) - g->pad, hi = glm::max(t.a, glm::max(t.b, t.c)) + g->pad;
     *args->bounds_o = RTCBounds{lo.x, lo.y, lo.z, 0.0f, hi.x, hi.y, hi.z, 0.0f};
 }
 
@@ -304,7 +287,7 @@ void userIntersect(const RTCIntersectFunctionNArguments* args) {
     ++*reinterpret_cast<const CountingContext*>(args->context)->candidates;
     const auto* g = static_cast<const UserGeometry*>(args->geometryUserPtr);
     const UserTriangle& t = g->triangles[args->primID];
-    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit); // N == 1: the plain layout
+    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);  // N == 1: the plain layout
     const glm::vec3 origin(rayhit->ray.org_x, rayhit->ray.org_y, rayhit->ray.org_z);
     const glm::vec3 direction(rayhit->ray.dir_x, rayhit->ray.dir_y, rayhit->ray.dir_z);
     const glm::vec3 e1 = t.b - t.a, e2 = t.c - t.a;
@@ -337,23 +320,20 @@ public:
         RTCGeometry geometry = nullptr;
         if (kind == EmbreeKind::NativeTriangles) {
             geometry = rtcNewGeometry(mDevice, RTC_GEOMETRY_TYPE_TRIANGLE);
-            auto* vertices = static_cast<float*>(
-                rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                        3 * sizeof(float), mesh.vertices.size()));
+            auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+                geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
             for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
                 vertices[3 * i] = static_cast<float>(mesh.vertices[i].x);
                 vertices[3 * i + 1] = static_cast<float>(mesh.vertices[i].y);
                 vertices[3 * i + 2] = static_cast<float>(mesh.vertices[i].z);
             }
-            auto* indices = static_cast<std::uint32_t*>(
-                rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                        3 * sizeof(std::uint32_t), mesh.triangleCount()));
+            auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+                geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), mesh.triangleCount()));
             std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
         } else {
             float largest = 0;
             for (const RVec3& v : mesh.vertices)
-                largest = std::max({largest, std::abs(static_cast<float>(v.x)),
-                                    std::abs(static_cast<float>(v.y)),
+                largest = std::max({largest, std::abs(static_cast<float>(v.x)), std::abs(static_cast<float>(v.y)),
                                     std::abs(static_cast<float>(v.z))});
             mUser.pad = 1e-6f + std::ldexp(largest, -21);
             mUser.triangles.reserve(mesh.triangleCount());
@@ -361,8 +341,7 @@ public:
             for (std::size_t i = 0; i < mesh.indices.size(); i += 3)
                 mUser.triangles.push_back(UserTriangle{vertex(i), vertex(i + 1), vertex(i + 2)});
             geometry = rtcNewGeometry(mDevice, RTC_GEOMETRY_TYPE_USER);
-            rtcSetGeometryUserPrimitiveCount(geometry,
-                                             static_cast<unsigned>(mUser.triangles.size()));
+            rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mUser.triangles.size()));
             rtcSetGeometryUserData(geometry, &mUser);
             rtcSetGeometryBoundsFunction(geometry, userBounds, nullptr);
             rtcSetGeometryIntersectFunction(geometry, userIntersect);
@@ -371,8 +350,7 @@ public:
         rtcAttachGeometry(mScene, geometry);
         rtcReleaseGeometry(geometry);
         rtcCommitScene(mScene);
-        if (rtcGetDeviceError(mDevice) != RTC_ERROR_NONE)
-            fail("Embree could not build a comparison scene");
+        if (rtcGetDeviceError(mDevice) != RTC_ERROR_NONE) fail("Embree could not build a comparison scene");
     }
     ~EmbreeScene() {
         rtcReleaseScene(mScene);
@@ -383,8 +361,7 @@ public:
 
     /// The segment as a ray with tfar 1; returns the hit's fraction, or a negative value.
     /// `candidates` counts the user geometry's callbacks.
-    float castSegment(const RVec3& origin, const Vec3& displacement,
-                      std::uint64_t& candidates) const {
+    float castSegment(const RVec3& origin, const Vec3& displacement, std::uint64_t& candidates) const {
         CountingContext context;
         rtcInitIntersectContext(&context.context);
         context.candidates = &candidates;
@@ -408,7 +385,7 @@ public:
     }
 
 private:
-    UserGeometry mUser; // user geometry only; its address is the callbacks' user data
+    UserGeometry mUser;  // user geometry only; its address is the callbacks' user data
     RTCDevice mDevice = nullptr;
     RTCScene mScene = nullptr;
 };
@@ -423,8 +400,8 @@ struct Segment {
 };
 
 constexpr int kSegmentCount = 4096;
-constexpr float kSweepRadius = 0.1f; // [m]
-constexpr double kAgreement = 1e-4; // [m] along the segment
+constexpr float kSweepRadius = 0.1f;  // [m]
+constexpr double kAgreement = 1e-4;   // [m] along the segment
 
 /// Prediction-like segments over the big mesh: lengths 0.1 to 20 m (log-uniform: most are short,
 /// as a projectile's steps are), origins inside the grid 0.05 m plus up to 0.8 of the length
@@ -444,8 +421,8 @@ std::vector<Segment> makeSegments() {
                               : kind < 0.90f ? random.uniform(-3, 3)
                                              : random.uniform(5, 60);
         const float pitch = degrees * (kPi / 180), yaw = random.uniform(0, 2 * kPi);
-        s.displacement = length * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                       std::cos(pitch) * std::cos(yaw));
+        s.displacement =
+            length * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
     }
     return segments;
 }
@@ -470,8 +447,7 @@ double castBulletRay(const btCollisionWorld& world, const Segment& s) {
     const btVector3 from = toBt(s.origin), to = toBt(s.origin + RVec3(s.displacement));
     btCollisionWorld::ClosestRayResultCallback callback(from, to);
     world.rayTest(from, to, callback);
-    return callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) *
-                                   static_cast<double>(s.length())
+    return callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) * static_cast<double>(s.length())
                              : -1.0;
 }
 
@@ -484,8 +460,7 @@ double castBulletSweep(const btCollisionWorld& world, const Segment& s) {
     to.setOrigin(toBt(s.origin + RVec3(s.displacement)));
     btCollisionWorld::ClosestConvexResultCallback callback(from.getOrigin(), to.getOrigin());
     world.convexSweepTest(&sphere, from, to, callback, btScalar(0));
-    return callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) *
-                                   static_cast<double>(s.length())
+    return callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) * static_cast<double>(s.length())
                              : -1.0;
 }
 
@@ -496,19 +471,19 @@ double castScene(const EmbreeScene& scene, const Segment& s, std::uint64_t& cand
 
 /// How two worlds answered the same segments.
 struct Comparison {
-    int hits = 0; // segments both worlds hit
-    int misses = 0; // segments both worlds missed
-    int endGrazes = 0; // hit/miss disagreements with the hit within `tolerance` of the end
-    int disagreements = 0; // other hit/miss disagreements, or distances beyond `tolerance`
-    double largestDifference = 0; // [m] among common hits
+    int hits = 0;                  // segments both worlds hit
+    int misses = 0;                // segments both worlds missed
+    int endGrazes = 0;             // hit/miss disagreements with the hit within `tolerance` of the end
+    int disagreements = 0;         // other hit/miss disagreements, or distances beyond `tolerance`
+    double largestDifference = 0;  // [m] among common hits
     std::string firstDisagreement;
 };
 
 /// Compares the distances `a` and `b` (-1: miss) of each segment. A hit within `tolerance` of the
 /// segment's end that the other world misses is a graze of the end, not a disagreement (whether
 /// the end touches the surface is decided by rounding).
-Comparison compare(const std::vector<Segment>& segments, const std::vector<double>& a,
-                   const std::vector<double>& b, double tolerance) {
+Comparison compare(const std::vector<Segment>& segments, const std::vector<double>& a, const std::vector<double>& b,
+                   double tolerance) {
     Comparison c;
     for (std::size_t i = 0; i < segments.size(); ++i) {
         const double length = static_cast<double>(segments[i].length());
@@ -528,14 +503,13 @@ Comparison compare(const std::vector<Segment>& segments, const std::vector<doubl
         if (bad && c.disagreements++ == 0) {
             const Segment& s = segments[i];
             char text[256];
-            std::snprintf(
-                text, sizeof text,
-                "segment %zu (origin %.7g %.7g %.7g, displacement %.7g %.7g %.7g, length %.7g m): "
-                "%.9g against %.9g m",
-                i, static_cast<double>(s.origin.x), static_cast<double>(s.origin.y),
-                static_cast<double>(s.origin.z), static_cast<double>(s.displacement.x),
-                static_cast<double>(s.displacement.y), static_cast<double>(s.displacement.z),
-                length, a[i], b[i]);
+            std::snprintf(text, sizeof text,
+                          "segment %zu (origin %.7g %.7g %.7g, displacement %.7g %.7g %.7g, length %.7g m): "
+                          "%.9g against %.9g m",
+                          i, static_cast<double>(s.origin.x), static_cast<double>(s.origin.y),
+                          static_cast<double>(s.origin.z), static_cast<double>(s.displacement.x),
+                          static_cast<double>(s.displacement.y), static_cast<double>(s.displacement.z), length, a[i],
+                          b[i]);
             c.firstDisagreement = text;
         }
     }
@@ -544,8 +518,7 @@ Comparison compare(const std::vector<Segment>& segments, const std::vector<doubl
 
 std::string describe(const Comparison& c) {
     char text[160];
-    std::snprintf(text, sizeof text,
-                  "%d hits, %d misses, %d end grazes, %d disagreements, largest difference %.3g m",
+    std::snprintf(text, sizeof text, "%d hits, %d misses, %d end grazes, %d disagreements, largest difference %.3g m",
                   c.hits, c.misses, c.endGrazes, c.disagreements, c.largestDifference);
     return text;
 }
@@ -555,11 +528,11 @@ std::string describe(const Comparison& c) {
 struct BigWorlds {
     Mesh mesh;
     std::vector<Segment> segments;
-    std::vector<Segment> sweepSegments; // the same, 0.2 m higher: no sphere starts in contact
+    std::vector<Segment> sweepSegments;  // the same, 0.2 m higher: no sphere starts in contact
     std::unique_ptr<EmbreeWorld> embree;
     std::unique_ptr<BulletMeshWorld> bullet;
     std::unique_ptr<BulletWorld> bulletAdapter;
-    double hitShare = 0; // segments that hit, out of all
+    double hitShare = 0;  // segments that hit, out of all
 };
 
 const BigWorlds& bigWorlds() {
@@ -569,8 +542,7 @@ const BigWorlds& bigWorlds() {
         w->mesh = makeBigMesh();
         w->segments = makeSegments();
         w->sweepSegments = w->segments;
-        for (Segment& s : w->sweepSegments)
-            s.origin.y += 2 * kSweepRadius;
+        for (Segment& s : w->sweepSegments) s.origin.y += 2 * kSweepRadius;
         note("big mesh: " + std::to_string(w->mesh.triangleCount()) + " triangles, " +
              std::to_string(w->mesh.vertices.size()) + " vertices (" + meshTimer.report() + ")");
 
@@ -584,8 +556,7 @@ const BigWorlds& bigWorlds() {
         BuildTimer commitTimer;
         std::string error;
         if (!w->embree->commit(&error)) fail(error);
-        note("EmbreeWorld: addMesh " + added + "; commit (BVH of native triangles) " +
-             commitTimer.report());
+        note("EmbreeWorld: addMesh " + added + "; commit (BVH of native triangles) " + commitTimer.report());
 
         std::string bulletReport;
         w->bullet = std::make_unique<BulletMeshWorld>(w->mesh, &bulletReport);
@@ -608,11 +579,9 @@ const BigWorlds& bigWorlds() {
         note("rays, EmbreeWorld vs Bullet rayTest: " + describe(rays));
         note("rays, EmbreeWorld vs BulletWorld: " + describe(adapter));
         if (rays.disagreements > 0)
-            fail("EmbreeWorld and Bullet's rayTest disagree (tolerance 1e-4 m); first: " +
-                 rays.firstDisagreement);
+            fail("EmbreeWorld and Bullet's rayTest disagree (tolerance 1e-4 m); first: " + rays.firstDisagreement);
         if (adapter.disagreements > 0)
-            fail("EmbreeWorld and BulletWorld disagree (tolerance 1e-4 m); first: " +
-                 adapter.firstDisagreement);
+            fail("EmbreeWorld and BulletWorld disagree (tolerance 1e-4 m); first: " + adapter.firstDisagreement);
         return w;
     }();
     return *worlds;
@@ -623,21 +592,17 @@ const BigWorlds& bigWorlds() {
 enum class ComparisonScene { NativeRobust, NativeDefault, UserRobust, Count };
 
 const EmbreeScene& comparisonScene(ComparisonScene which) {
-    static std::array<std::unique_ptr<EmbreeScene>,
-                      static_cast<std::size_t>(ComparisonScene::Count)>
-        scenes;
+    static std::array<std::unique_ptr<EmbreeScene>, static_cast<std::size_t>(ComparisonScene::Count)> scenes;
     std::unique_ptr<EmbreeScene>& scene = scenes[static_cast<std::size_t>(which)];
     if (!scene) {
         const BigWorlds& w = bigWorlds();
         static constexpr std::array<const char*, 3> names{
-            "native triangles, EmbreeWorld's flags (robust, high quality)",
-            "native triangles, default flags",
+            "native triangles, EmbreeWorld's flags (robust, high quality)", "native triangles, default flags",
             "user geometry with a float test, EmbreeWorld's flags and bounds padding"};
         const bool native = which != ComparisonScene::UserRobust;
         BuildTimer timer;
-        scene = std::make_unique<EmbreeScene>(
-            w.mesh, native ? EmbreeKind::NativeTriangles : EmbreeKind::UserTriangles,
-            which != ComparisonScene::NativeDefault);
+        scene = std::make_unique<EmbreeScene>(w.mesh, native ? EmbreeKind::NativeTriangles : EmbreeKind::UserTriangles,
+                                              which != ComparisonScene::NativeDefault);
         const std::string built = timer.report();
         const std::size_t n = w.segments.size();
         std::vector<double> embree(n), other(n);
@@ -646,8 +611,7 @@ const EmbreeScene& comparisonScene(ComparisonScene which) {
             embree[i] = castEmbree(*w.embree, w.segments[i], 0.0f);
             other[i] = castScene(*scene, w.segments[i], candidates);
         }
-        note(std::string("Embree ") + names[static_cast<std::size_t>(which)] +
-             " (information): build " + built +
+        note(std::string("Embree ") + names[static_cast<std::size_t>(which)] + " (information): build " + built +
              "; against EmbreeWorld: " + describe(compare(w.segments, embree, other, kAgreement)));
     }
     return *scene;
@@ -667,8 +631,7 @@ void checkSweepsOnce() {
             bulletWorld[i] = castBulletWorld(*w.bulletAdapter, segments[i], kSweepRadius);
         }
         const Comparison sweeps = compare(segments, embree, bulletSweep, 2e-3);
-        note("spheres r=0.1, EmbreeWorld vs Bullet convexSweepTest (information, 2 mm): " +
-             describe(sweeps) +
+        note("spheres r=0.1, EmbreeWorld vs Bullet convexSweepTest (information, 2 mm): " + describe(sweeps) +
              (sweeps.disagreements > 0 ? "; first: " + sweeps.firstDisagreement : std::string()));
         note("spheres r=0.1, EmbreeWorld vs BulletWorld (information, 2 mm): " +
              describe(compare(segments, embree, bulletWorld, 2e-3)));
@@ -680,34 +643,35 @@ void checkSweepsOnce() {
 // ---------------------------------------------------------------------------------------------
 // Cast benchmarks
 
-enum class CastWorld {
-    Embree,
-    BulletRayTest,
-    BulletWorld,
-    EmbreeNative,
-    EmbreeNativeDefault,
-    EmbreeUserFloat
-};
+enum class CastWorld { Embree, BulletRayTest, BulletWorld, EmbreeNative, EmbreeNativeDefault, EmbreeUserFloat };
 
 void BM_Cast(benchmark::State& state, CastWorld which) {
     const BigWorlds& w = bigWorlds();
-    const EmbreeScene* scene =
-        which == CastWorld::EmbreeNative          ? &comparisonScene(ComparisonScene::NativeRobust)
-        : which == CastWorld::EmbreeNativeDefault ? &comparisonScene(ComparisonScene::NativeDefault)
-        : which == CastWorld::EmbreeUserFloat     ? &comparisonScene(ComparisonScene::UserRobust)
-                                                  : nullptr;
+    const EmbreeScene* scene = which == CastWorld::EmbreeNative ? &comparisonScene(ComparisonScene::NativeRobust)
+                               : which == CastWorld::EmbreeNativeDefault
+                                   ? &comparisonScene(ComparisonScene::NativeDefault)
+                               : which == CastWorld::EmbreeUserFloat ? &comparisonScene(ComparisonScene::UserRobust)
+                                                                     : nullptr;
     double sum = 0;
     std::uint64_t candidates = 0;
     for (auto _ : state) {
         for (const Segment& s : w.segments) {
             double d = 0;
             switch (which) {
-            case CastWorld::Embree: d = castEmbree(*w.embree, s, 0.0f); break;
-            case CastWorld::BulletRayTest: d = castBulletRay(w.bullet->world(), s); break;
-            case CastWorld::BulletWorld: d = castBulletWorld(*w.bulletAdapter, s, 0.0f); break;
-            case CastWorld::EmbreeNative:
-            case CastWorld::EmbreeNativeDefault:
-            case CastWorld::EmbreeUserFloat: d = castScene(*scene, s, candidates); break;
+                case CastWorld::Embree:
+                    d = castEmbree(*w.embree, s, 0.0f);
+                    break;
+                case CastWorld::BulletRayTest:
+                    d = castBulletRay(w.bullet->world(), s);
+                    break;
+                case CastWorld::BulletWorld:
+                    d = castBulletWorld(*w.bulletAdapter, s, 0.0f);
+                    break;
+                case CastWorld::EmbreeNative:
+                case CastWorld::EmbreeNativeDefault:
+                case CastWorld::EmbreeUserFloat:
+                    d = castScene(*scene, s, candidates);
+                    break;
             }
             sum += d;
         }
@@ -717,17 +681,14 @@ void BM_Cast(benchmark::State& state, CastWorld which) {
     state.counters["hit_share"] = w.hitShare;
     if (which == CastWorld::EmbreeUserFloat)
         state.counters["candidates/cast"] =
-            static_cast<double>(candidates) /
-            static_cast<double>(state.iterations() * w.segments.size());
+            static_cast<double>(candidates) / static_cast<double>(state.iterations() * w.segments.size());
 }
 BENCHMARK_CAPTURE(BM_Cast, Embree, CastWorld::Embree)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Cast, BulletRayTest, CastWorld::BulletRayTest)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Cast, BulletWorld, CastWorld::BulletWorld)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Cast, EmbreeNative, CastWorld::EmbreeNative)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Cast, EmbreeNativeDefault, CastWorld::EmbreeNativeDefault)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Cast, EmbreeUserFloat, CastWorld::EmbreeUserFloat)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Cast, EmbreeNativeDefault, CastWorld::EmbreeNativeDefault)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Cast, EmbreeUserFloat, CastWorld::EmbreeUserFloat)->Unit(benchmark::kMillisecond);
 
 enum class SweepWorld { Embree, BulletConvexSweep, BulletWorld };
 
@@ -739,11 +700,15 @@ void BM_Sweep(benchmark::State& state, SweepWorld which) {
         for (const Segment& s : w.sweepSegments) {
             double d = 0;
             switch (which) {
-            case SweepWorld::Embree: d = castEmbree(*w.embree, s, kSweepRadius); break;
-            case SweepWorld::BulletConvexSweep: d = castBulletSweep(w.bullet->world(), s); break;
-            case SweepWorld::BulletWorld:
-                d = castBulletWorld(*w.bulletAdapter, s, kSweepRadius);
-                break;
+                case SweepWorld::Embree:
+                    d = castEmbree(*w.embree, s, kSweepRadius);
+                    break;
+                case SweepWorld::BulletConvexSweep:
+                    d = castBulletSweep(w.bullet->world(), s);
+                    break;
+                case SweepWorld::BulletWorld:
+                    d = castBulletWorld(*w.bulletAdapter, s, kSweepRadius);
+                    break;
             }
             sum += d;
         }
@@ -752,8 +717,7 @@ void BM_Sweep(benchmark::State& state, SweepWorld which) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.segments.size()));
 }
 BENCHMARK_CAPTURE(BM_Sweep, Embree, SweepWorld::Embree)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sweep, BulletConvexSweep, SweepWorld::BulletConvexSweep)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sweep, BulletConvexSweep, SweepWorld::BulletConvexSweep)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Sweep, BulletWorld, SweepWorld::BulletWorld)->Unit(benchmark::kMillisecond);
 
 // ---------------------------------------------------------------------------------------------
@@ -762,7 +726,7 @@ BENCHMARK_CAPTURE(BM_Sweep, BulletWorld, SweepWorld::BulletWorld)->Unit(benchmar
 #if FORESIGHT_BENCH_DEMO_LEVEL
 
 constexpr int kLevelThrowCount = 64;
-constexpr float kLevelFuse = 3.0f; // [s]: 150 steps at the default 50 Hz
+constexpr float kLevelFuse = 3.0f;  // [s]: 150 steps at the default 50 Hz
 
 /// The demo level (tools/demo_level/demo_level.h) in every world, and the throws.
 struct LevelWorlds {
@@ -785,8 +749,7 @@ std::array<foresight_bench::Throw, kLevelThrowCount> makeLevelThrows() {
         t.position = RVec3(random.uniform(-5, 5), random.uniform(1.2f, 2), random.uniform(-5, 8));
         const float speed = random.uniform(8, 20), yaw = random.uniform(0, 2 * kPi);
         const float pitch = random.uniform(-15, 60) * (kPi / 180);
-        t.velocity = speed * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                  std::cos(pitch) * std::cos(yaw));
+        t.velocity = speed * Vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
     }
     return throws;
 }
@@ -796,17 +759,14 @@ const LevelWorlds& levelWorlds() {
         auto w = std::make_unique<LevelWorlds>();
         const foresight_level::LevelMesh level = foresight_level::makeDemoLevel();
         // Every coordinate is a multiple of 1/256 m: exact in float.
-        for (const glm::dvec3& v : level.vertices)
-            w->mesh.vertices.emplace_back(v);
+        for (const glm::dvec3& v : level.vertices) w->mesh.vertices.emplace_back(v);
         w->mesh.indices = level.indices;
         if (level.parts.empty() || level.parts[0].name != "floor") fail("the demo level does not start with its floor");
         w->floorTriangles = level.parts[0].triangleCount;
         for (std::size_t i = 0; i < w->mesh.indices.size(); i += 3) {
-            const Triangle t{w->mesh.vertices[w->mesh.indices[i]],
-                             w->mesh.vertices[w->mesh.indices[i + 1]],
+            const Triangle t{w->mesh.vertices[w->mesh.indices[i]], w->mesh.vertices[w->mesh.indices[i + 1]],
                              w->mesh.vertices[w->mesh.indices[i + 2]]};
-            if (w->staticWorld.add(t) != Status::Ok)
-                fail("StaticWorld refused a demo level triangle");
+            if (w->staticWorld.add(t) != Status::Ok) fail("StaticWorld refused a demo level triangle");
         }
         w->embree = std::make_unique<EmbreeWorld>();
         MeshReport report;
@@ -828,9 +788,12 @@ enum class LevelWorld { Embree, Bullet, Static };
 
 const CollisionWorld& levelWorld(const LevelWorlds& w, LevelWorld which) {
     switch (which) {
-    case LevelWorld::Embree: return *w.embree;
-    case LevelWorld::Bullet: return *w.bulletAdapter;
-    case LevelWorld::Static: break;
+        case LevelWorld::Embree:
+            return *w.embree;
+        case LevelWorld::Bullet:
+            return *w.bulletAdapter;
+        case LevelWorld::Static:
+            break;
     }
     return w.staticWorld;
 }
@@ -841,14 +804,12 @@ struct LevelOutcome {
     std::uint64_t bounces = 0;
 };
 
-LevelOutcome predictLevel(const LevelWorlds& w, const CollisionWorld& world,
-                          const ProjectileSettings& settings,
+LevelOutcome predictLevel(const LevelWorlds& w, const CollisionWorld& world, const ProjectileSettings& settings,
                           std::vector<TrajectoryPoint>& trajectory) {
     LevelOutcome outcome;
     for (const foresight_bench::Throw& t : w.throws) {
         ProjectileResult result;
-        if (predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory,
-                              result) != Status::Ok)
+        if (predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result) != Status::Ok)
             fail("a demo level prediction failed");
         outcome.ends.push_back(result.position);
         outcome.bounces += result.bounces;
@@ -868,16 +829,14 @@ void compareLevelOnce(ProjectileMethod method) {
     settings.method = method;
     std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kLevelFuse, settings, 256));
     const LevelOutcome reference = predictLevel(w, w.staticWorld, settings, trajectory);
-    std::string text = std::string("demo level, ") +
-                       (method == ProjectileMethod::Exact ? "Exact" : "Stepped") + ": " +
+    std::string text = std::string("demo level, ") + (method == ProjectileMethod::Exact ? "Exact" : "Stepped") + ": " +
                        std::to_string(reference.bounces) + " bounces (StaticWorld)";
     for (const LevelWorld which : {LevelWorld::Embree, LevelWorld::Bullet}) {
         const LevelOutcome outcome = predictLevel(w, levelWorld(w, which), settings, trajectory);
         double largest = 0;
         int within = 0, below = 0, referenceBelow = 0;
         for (std::size_t i = 0; i < outcome.ends.size(); ++i) {
-            const double distance =
-                glm::length(glm::dvec3(outcome.ends[i]) - glm::dvec3(reference.ends[i]));
+            const double distance = glm::length(glm::dvec3(outcome.ends[i]) - glm::dvec3(reference.ends[i]));
             largest = std::max(largest, distance);
             within += distance <= 1e-3 ? 1 : 0;
             // The floor is at y = 0 and reaches 2.5 m past the walls: below it, a throw fell
@@ -886,13 +845,12 @@ void compareLevelOnce(ProjectileMethod method) {
             referenceBelow += reference.ends[i].y < -1 ? 1 : 0;
         }
         char line[240];
-        std::snprintf(
-            line, sizeof line,
-            "; %s: %llu bounces, %d of %d end within 1 mm of StaticWorld's (largest %.3g m), "
-            "%d end below the floor (StaticWorld: %d)",
-            which == LevelWorld::Embree ? "EmbreeWorld" : "BulletWorld",
-            static_cast<unsigned long long>(outcome.bounces), within, kLevelThrowCount, largest,
-            below, referenceBelow);
+        std::snprintf(line, sizeof line,
+                      "; %s: %llu bounces, %d of %d end within 1 mm of StaticWorld's (largest %.3g m), "
+                      "%d end below the floor (StaticWorld: %d)",
+                      which == LevelWorld::Embree ? "EmbreeWorld" : "BulletWorld",
+                      static_cast<unsigned long long>(outcome.bounces), within, kLevelThrowCount, largest, below,
+                      referenceBelow);
         text += line;
     }
     note(text);
@@ -902,15 +860,15 @@ void BM_DemoLevel(benchmark::State& state, LevelWorld which, ProjectileMethod me
     const LevelWorlds& w = levelWorlds();
     compareLevelOnce(method);
     const CollisionWorld& world = levelWorld(w, which);
-    ProjectileSettings settings; // the defaults: 0.02 s step (50 Hz), restitution 0.5
+    ProjectileSettings settings;  // the defaults: 0.02 s step (50 Hz), restitution 0.5
     settings.method = method;
     std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kLevelFuse, settings, 256));
     std::uint64_t bounces = 0;
     for (auto _ : state) {
         for (const foresight_bench::Throw& t : w.throws) {
             ProjectileResult result;
-            const Status status = predictProjectile(t.position, t.velocity, kLevelFuse, settings,
-                                                    &world, trajectory, result);
+            const Status status =
+                predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result);
             if (status != Status::Ok) {
                 state.SkipWithError(statusMessage(status));
                 return;
@@ -925,17 +883,17 @@ void BM_DemoLevel(benchmark::State& state, LevelWorld which, ProjectileMethod me
         static_cast<double>(bounces) / static_cast<double>(state.iterations() * kLevelThrowCount);
 }
 // clang-format off (names with slashes: BM_DemoLevel/Embree/Exact)
-BENCHMARK_CAPTURE(BM_DemoLevel, Embree/Exact, LevelWorld::Embree, ProjectileMethod::Exact)
+BENCHMARK_CAPTURE(BM_DemoLevel, Embree / Exact, LevelWorld::Embree, ProjectileMethod::Exact)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DemoLevel, Embree/Stepped, LevelWorld::Embree, ProjectileMethod::Stepped)
+BENCHMARK_CAPTURE(BM_DemoLevel, Embree / Stepped, LevelWorld::Embree, ProjectileMethod::Stepped)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DemoLevel, Bullet/Exact, LevelWorld::Bullet, ProjectileMethod::Exact)
+BENCHMARK_CAPTURE(BM_DemoLevel, Bullet / Exact, LevelWorld::Bullet, ProjectileMethod::Exact)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DemoLevel, Bullet/Stepped, LevelWorld::Bullet, ProjectileMethod::Stepped)
+BENCHMARK_CAPTURE(BM_DemoLevel, Bullet / Stepped, LevelWorld::Bullet, ProjectileMethod::Stepped)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DemoLevel, Static/Exact, LevelWorld::Static, ProjectileMethod::Exact)
+BENCHMARK_CAPTURE(BM_DemoLevel, Static / Exact, LevelWorld::Static, ProjectileMethod::Exact)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DemoLevel, Static/Stepped, LevelWorld::Static, ProjectileMethod::Stepped)
+BENCHMARK_CAPTURE(BM_DemoLevel, Static / Stepped, LevelWorld::Static, ProjectileMethod::Stepped)
     ->Unit(benchmark::kMillisecond);
 // clang-format on
 
@@ -964,14 +922,12 @@ ProjectileSettings engineSettings() {
 class BulletLevelDynamics {
 public:
     explicit BulletLevelDynamics(const Mesh& mesh)
-        : mDispatcher(&mConfiguration),
-          mWorld(&mDispatcher, &mBroadphase, &mSolver, &mConfiguration),
+        : mDispatcher(&mConfiguration), mWorld(&mDispatcher, &mBroadphase, &mSolver, &mConfiguration),
           mSphere(kEngineRadius) {
         for (const RVec3& v : mesh.vertices)
             mMesh.findOrAddVertex(btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)), false);
         for (std::size_t i = 0; i < mesh.indices.size(); i += 3)
-            mMesh.addTriangleIndices(static_cast<int>(mesh.indices[i]),
-                                     static_cast<int>(mesh.indices[i + 1]),
+            mMesh.addTriangleIndices(static_cast<int>(mesh.indices[i]), static_cast<int>(mesh.indices[i + 1]),
                                      static_cast<int>(mesh.indices[i + 2]));
         mLevelShape = std::make_unique<btBvhTriangleMeshShape>(&mMesh, true);
         mLevelShape->setMargin(btScalar(0));
@@ -1001,8 +957,7 @@ public:
         body.setLinearVelocity(btVector3(t.velocity.x, t.velocity.y, t.velocity.z));
         body.setActivationState(DISABLE_DEACTIVATION);
         mWorld.addRigidBody(&body);
-        for (int k = 0; k < kEngineSteps; ++k)
-            mWorld.stepSimulation(btScalar(1.0 / kEngineHz), 0);
+        for (int k = 0; k < kEngineSteps; ++k) mWorld.stepSimulation(btScalar(1.0 / kEngineHz), 0);
         const btVector3 end = body.getWorldTransform().getOrigin();
         mWorld.removeRigidBody(&body);
         return RVec3(end.x(), end.y(), end.z());
@@ -1035,8 +990,8 @@ std::string describeEnds(std::vector<double>& errors) {
     std::sort(errors.begin(), errors.end());
     const auto within = std::count_if(errors.begin(), errors.end(), [](double e) { return e <= 0.02; });
     char text[120];
-    std::snprintf(text, sizeof text, "%td of %zu end within 2 cm, median end distance %.3g m", within,
-                  errors.size(), errors[errors.size() / 2]);
+    std::snprintf(text, sizeof text, "%td of %zu end within 2 cm, median end distance %.3g m", within, errors.size(),
+                  errors[errors.size() / 2]);
     return text;
 }
 
@@ -1116,8 +1071,8 @@ void BM_EngineThrowPredict(benchmark::State& state, LevelWorld which) {
     for (auto _ : state) {
         for (const foresight_bench::Throw& t : w.throws) {
             ProjectileResult result;
-            const Status status = predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world,
-                                                    trajectory, result);
+            const Status status =
+                predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result);
             if (status != Status::Ok) {
                 state.SkipWithError(statusMessage(status));
                 return;
@@ -1150,8 +1105,8 @@ BENCHMARK_CAPTURE(BM_EngineThrowPredict, Bullet, LevelWorld::Bullet)->Name("BM_E
 BENCHMARK(BM_EngineThrowBulletStep)->Name("BM_EngineThrow/BulletStep")->Unit(benchmark::kMillisecond);
 // clang-format on
 
-#endif // FORESIGHT_BENCH_DEMO_LEVEL
+#endif  // FORESIGHT_BENCH_DEMO_LEVEL
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

@@ -15,7 +15,9 @@
 int main(int argc, char** argv) {
     using namespace foresight_bench;
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s projectile-stepped|projectile-exact|vehicle-iterative4|vehicle-exact [friction]\n", argv[0]);
+        std::fprintf(stderr,
+                     "usage: %s projectile-stepped|projectile-exact|vehicle-iterative4|vehicle-exact [friction]\n",
+                     argv[0]);
         return 2;
     }
     const std::string what = argv[1];
@@ -33,7 +35,8 @@ int main(int argc, char** argv) {
         for (int round = 0; round < kRounds; ++round)
             for (const Throw& t : throws) {
                 ProjectileResult result;
-                if (predictProjectile(t.position, t.velocity, kFuse, settings, &world, trajectory, result) != Status::Ok)
+                if (predictProjectile(t.position, t.velocity, kFuse, settings, &world, trajectory, result) !=
+                    Status::Ok)
                     return 1;
                 checksum += static_cast<double>(result.position.x);
             }

@@ -30,7 +30,7 @@ void addBox(std::vector<RVec3>& vertices, std::vector<std::uint32_t>& indices, R
         for (std::uint32_t corner : face) indices.push_back(base + corner);
 }
 
-} // namespace
+}  // namespace
 
 int main() {
     std::vector<RVec3> vertices;

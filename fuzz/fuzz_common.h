@@ -51,9 +51,9 @@ inline std::filesystem::path writeScratchFile(const std::string& name, std::stri
     std::abort();
 }
 
-#define FORESIGHT_FUZZ_CHECK(condition)                                                          \
-    do {                                                                                         \
-        if (!(condition)) ::foresight_fuzz::contractViolation(#condition " (" __FILE__ ")");     \
+#define FORESIGHT_FUZZ_CHECK(condition)                                                      \
+    do {                                                                                     \
+        if (!(condition)) ::foresight_fuzz::contractViolation(#condition " (" __FILE__ ")"); \
     } while (false)
 
-} // namespace foresight_fuzz
+}  // namespace foresight_fuzz

@@ -45,4 +45,4 @@ inline void formatOutput(const foresight_cli::Json& document) {
     FORESIGHT_FUZZ_CHECK(!text.empty());
 }
 
-} // namespace foresight_fuzz
+}  // namespace foresight_fuzz

@@ -48,4 +48,4 @@ inline void useLoaded(foresight::EmbreeWorld& world, const foresight::MeshLoadRe
     world.mayTouch(cast);
 }
 
-} // namespace foresight_fuzz
+}  // namespace foresight_fuzz

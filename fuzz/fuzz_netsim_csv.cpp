@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     FORESIGHT_FUZZ_CHECK(trajectory.end > trajectory.start);
-    for (const double f : {0.0, 0.25, 0.5, 1.0}) trajectory.sample(trajectory.start + f * (trajectory.end - trajectory.start));
+    for (const double f : {0.0, 0.25, 0.5, 1.0})
+        trajectory.sample(trajectory.start + f * (trajectory.end - trajectory.start));
 
     // The command's defaults, every model and display, over at most a second of the file (the
     // CLI runs all of it: up to kMaxDuration).

@@ -30,7 +30,7 @@ std::vector<std::string> splitLines(const std::uint8_t* data, std::size_t size) 
     return lines;
 }
 
-} // namespace
+}  // namespace
 
 // buildNetsimSettings says what is wrong on std::cerr: silenced (sanitizer and contract reports
 // are written with fprintf and still show).
@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         app.parse(static_cast<int>(argv.size()), argv.data());
     } catch (const CLI::Error&) {
-        return 0; // the CLI prints the message and exits 2 (or 0 for --help)
+        return 0;  // the CLI prints the message and exits 2 (or 0 for --help)
     }
     ns::SimulationSettings settings;
     if (!buildNetsimSettings(options, settings)) return 0;

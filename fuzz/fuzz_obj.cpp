@@ -12,8 +12,8 @@
 #endif
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto path = foresight_fuzz::writeScratchFile(
-        "input.obj", std::string_view(reinterpret_cast<const char*>(data), size));
+    const auto path =
+        foresight_fuzz::writeScratchFile("input.obj", std::string_view(reinterpret_cast<const char*>(data), size));
     foresight_cli::ObjMesh mesh;
     std::string reason;
     if (foresight_cli::loadObjMesh(path, mesh, reason)) {

@@ -34,11 +34,20 @@ public:
         const std::uint8_t mode = byte() % 8;
         if (mode == 0) return std::bit_cast<float>(mIn.ConsumeIntegral<std::uint32_t>());
         if (mode == 1) {
-            static constexpr std::array<float, 14> kSpecial = {
-                0.0f, -0.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::max(),
-                -std::numeric_limits<float>::max(), std::numeric_limits<float>::min(),
-                std::numeric_limits<float>::denorm_min(), 1e-30f, 1e30f, 1e16f, 1e7f, -1e7f};
+            static constexpr std::array<float, 14> kSpecial = {0.0f,
+                                                               -0.0f,
+                                                               std::numeric_limits<float>::infinity(),
+                                                               -std::numeric_limits<float>::infinity(),
+                                                               std::numeric_limits<float>::quiet_NaN(),
+                                                               std::numeric_limits<float>::max(),
+                                                               -std::numeric_limits<float>::max(),
+                                                               std::numeric_limits<float>::min(),
+                                                               std::numeric_limits<float>::denorm_min(),
+                                                               1e-30f,
+                                                               1e30f,
+                                                               1e16f,
+                                                               1e7f,
+                                                               -1e7f};
             return kSpecial[byte() % kSpecial.size()];
         }
         return static_cast<float>(mIn.ConsumeIntegral<std::int16_t>()) / 64.0f;
@@ -52,8 +61,10 @@ public:
     }
     Vec3 v() { return Vec3(f(), f(), f()); }
     RVec3 p() {
-        if constexpr (kDoublePrecision) return RVec3(d(), d(), d());
-        else return RVec3(f(), f(), f());
+        if constexpr (kDoublePrecision)
+            return RVec3(d(), d(), d());
+        else
+            return RVec3(f(), f(), f());
     }
     Quat q() {
         if (byte() % 4 == 0) return glm::identity<Quat>();
@@ -81,8 +92,8 @@ bool finite(const TrajectoryPoint& p) {
 }
 bool finite(const DeadReckoningResult& r) { return finite(r.position) && finite(r.velocity) && finite(r.orientation); }
 
-#define CHECK_OK_FINITE(status, ...)                                  \
-    do {                                                              \
+#define CHECK_OK_FINITE(status, ...)                                   \
+    do {                                                               \
         if ((status) == Status::Ok) FORESIGHT_FUZZ_CHECK(__VA_ARGS__); \
     } while (false)
 
@@ -103,42 +114,42 @@ void buildWorld(Decoder& in, StaticWorld& world) {
             (void)s;
         };
         switch (in.byte() % 4) {
-        case 0: {
-            Plane plane;
-            plane.normal = in.v();
-            plane.distance = in.f();
-            add(plane);
-            break;
-        }
-        case 1: {
-            Sphere sphere;
-            sphere.center = in.p();
-            sphere.radius = in.f();
-            add(sphere);
-            break;
-        }
-        case 2: {
-            OrientedBox box;
-            box.center = in.p();
-            box.halfExtents = in.v();
-            box.orientation = in.q();
-            add(box);
-            break;
-        }
-        default: {
-            Triangle triangle;
-            triangle.a = in.p();
-            triangle.b = in.p();
-            triangle.c = in.p();
-            add(triangle);
-            break;
-        }
+            case 0: {
+                Plane plane;
+                plane.normal = in.v();
+                plane.distance = in.f();
+                add(plane);
+                break;
+            }
+            case 1: {
+                Sphere sphere;
+                sphere.center = in.p();
+                sphere.radius = in.f();
+                add(sphere);
+                break;
+            }
+            case 2: {
+                OrientedBox box;
+                box.center = in.p();
+                box.halfExtents = in.v();
+                box.orientation = in.q();
+                add(box);
+                break;
+            }
+            default: {
+                Triangle triangle;
+                triangle.a = in.p();
+                triangle.b = in.p();
+                triangle.c = in.p();
+                add(triangle);
+                break;
+            }
         }
     }
 }
 
 void projectileSettings(Decoder& in, ProjectileSettings& s) {
-    s.method = static_cast<ProjectileMethod>(in.byte() % 4); // 3: out of range
+    s.method = static_cast<ProjectileMethod>(in.byte() % 4);  // 3: out of range
     if (in.flag()) s.gravity = in.v();
     if (in.flag()) s.step = in.f();
     if (in.flag()) s.restitution = in.f();
@@ -225,7 +236,8 @@ void projectile(Decoder& in) {
     const float time = in.f();
     std::vector<TrajectoryPoint> trajectory(in.upTo(256));
     ProjectileResult result;
-    const Status s = predictProjectile(position, velocity, time, settings, in.flag() ? &world : nullptr, trajectory, result);
+    const Status s =
+        predictProjectile(position, velocity, time, settings, in.flag() ? &world : nullptr, trajectory, result);
     if (s != Status::Ok) return;
     FORESIGHT_FUZZ_CHECK(finite(result));
     FORESIGHT_FUZZ_CHECK(result.trajectorySize <= trajectory.size());
@@ -234,8 +246,8 @@ void projectile(Decoder& in) {
     const std::span<const TrajectoryPoint> recorded(trajectory.data(), result.trajectorySize);
     if (settings.method != ProjectileMethod::Exact && in.flag()) {
         // Fixed-step trajectories as a game renders them.
-        const RVec3 shown = renderedPosition(recorded, settingsStep(settings), in.f(),
-                                             static_cast<RenderSmoothing>(in.byte() % 3));
+        const RVec3 shown =
+            renderedPosition(recorded, settingsStep(settings), in.f(), static_cast<RenderSmoothing>(in.byte() % 3));
         (void)shown;
     }
     danger(in, recorded);
@@ -281,12 +293,12 @@ void vehicle(Decoder& in) {
     const float time = in.f();
     VehicleState out;
     Status s = predictVehicleExact(start, time, settings, out);
-    CHECK_OK_FINITE(s, finite(out.position) && finite(out.velocity) && finite(out.orientation) &&
-                           finite(out.angularVelocity));
+    CHECK_OK_FINITE(
+        s, finite(out.position) && finite(out.velocity) && finite(out.orientation) && finite(out.angularVelocity));
     const int iterations = static_cast<int>(in.upTo(1024)) - 2;
     s = predictVehicleIterative(start, time, iterations, settings, out);
-    CHECK_OK_FINITE(s, finite(out.position) && finite(out.velocity) && finite(out.orientation) &&
-                           finite(out.angularVelocity));
+    CHECK_OK_FINITE(
+        s, finite(out.position) && finite(out.velocity) && finite(out.orientation) && finite(out.angularVelocity));
 }
 
 void vehicleDanger(Decoder& in) {
@@ -323,7 +335,7 @@ void vehicleDanger(Decoder& in) {
 void aim(Decoder& in) {
     AimShot shot;
     shot.from = in.p();
-    shot.constraint = static_cast<AimConstraint>(in.byte() % 5); // 4: out of range
+    shot.constraint = static_cast<AimConstraint>(in.byte() % 5);  // 4: out of range
     shot.speed = in.f();
     shot.apexHeight = in.f();
     if (in.flag()) shot.gravity = in.v();
@@ -345,7 +357,7 @@ void aim(Decoder& in) {
 
 DeadReckoningState deadReckoningState(Decoder& in) {
     DeadReckoningState state;
-    state.algorithm = static_cast<DeadReckoningAlgorithm>(in.byte() % 11); // 0 and 10: invalid
+    state.algorithm = static_cast<DeadReckoningAlgorithm>(in.byte() % 11);  // 0 and 10: invalid
     state.position = in.p();
     state.velocity = in.v();
     state.acceleration = in.v();
@@ -420,24 +432,24 @@ void replication(Decoder& in) {
     const std::uint32_t events = in.upTo(48);
     for (std::uint32_t i = 0; i < events; ++i) {
         switch (in.byte() % 3) {
-        case 0: {
-            SendDecision decision;
-            const Status s = sender.update(in.d(), deadReckoningState(in), decision);
-            CHECK_OK_FINITE(s, !std::isnan(decision.positionError) && finite(decision.orientationError));
-            break;
-        }
-        case 1: {
-            const DeadReckoningState state = deadReckoningState(in);
-            const double stamp = in.d();
-            receiver.receive(stamp, state, in.d());
-            break;
-        }
-        default: {
-            ReceivedPose pose;
-            const Status s = receiver.sample(in.d(), pose);
-            CHECK_OK_FINITE(s, finite(pose.position) && finite(pose.velocity) && finite(pose.orientation));
-            break;
-        }
+            case 0: {
+                SendDecision decision;
+                const Status s = sender.update(in.d(), deadReckoningState(in), decision);
+                CHECK_OK_FINITE(s, !std::isnan(decision.positionError) && finite(decision.orientationError));
+                break;
+            }
+            case 1: {
+                const DeadReckoningState state = deadReckoningState(in);
+                const double stamp = in.d();
+                receiver.receive(stamp, state, in.d());
+                break;
+            }
+            default: {
+                ReceivedPose pose;
+                const Status s = receiver.sample(in.d(), pose);
+                CHECK_OK_FINITE(s, finite(pose.position) && finite(pose.velocity) && finite(pose.orientation));
+                break;
+            }
         }
     }
 }
@@ -476,8 +488,7 @@ void throwPlanner(Decoder& in) {
     for (std::size_t i = 0; i < result.planCount; ++i) {
         const ThrowPlan& p = plans[i];
         FORESIGHT_FUZZ_CHECK(finite(p.launchVelocity) && finite(p.finalPosition) && finite(p.distance) &&
-                             finite(p.firstImpactTime) && finite(p.firstImpactNormal) &&
-                             finite(p.firstImpactPosition));
+                             finite(p.firstImpactTime) && finite(p.firstImpactNormal) && finite(p.firstImpactPosition));
         FORESIGHT_FUZZ_CHECK(p.distance <= request.acceptanceRadius);
     }
     if (result.planCount > 0) {
@@ -488,21 +499,39 @@ void throwPlanner(Decoder& in) {
     }
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     Decoder in(data + 1, size - 1);
     switch (data[0] % 9) {
-    case 0: character(in); break;
-    case 1: projectile(in); break;
-    case 2: dangerOnRawTrajectory(in); break;
-    case 3: vehicle(in); break;
-    case 4: vehicleDanger(in); break;
-    case 5: aim(in); break;
-    case 6: deadReckoning(in); break;
-    case 7: replication(in); break;
-    default: throwPlanner(in); break;
+        case 0:
+            character(in);
+            break;
+        case 1:
+            projectile(in);
+            break;
+        case 2:
+            dangerOnRawTrajectory(in);
+            break;
+        case 3:
+            vehicle(in);
+            break;
+        case 4:
+            vehicleDanger(in);
+            break;
+        case 5:
+            aim(in);
+            break;
+        case 6:
+            deadReckoning(in);
+            break;
+        case 7:
+            replication(in);
+            break;
+        default:
+            throwPlanner(in);
+            break;
     }
     return 0;
 }

@@ -117,7 +117,8 @@ int realRoots(const Polynomial& p, LongReal lo, LongReal hi, std::array<LongReal
     points[static_cast<std::size_t>(pointCount++)] = lo;
     for (int i = 0; i < criticalCount; ++i) {
         const LongReal x = critical[static_cast<std::size_t>(i)];
-        if (x > points[static_cast<std::size_t>(pointCount - 1)] && x < hi) points[static_cast<std::size_t>(pointCount++)] = x;
+        if (x > points[static_cast<std::size_t>(pointCount - 1)] && x < hi)
+            points[static_cast<std::size_t>(pointCount++)] = x;
     }
     if (hi > points[static_cast<std::size_t>(pointCount - 1)]) points[static_cast<std::size_t>(pointCount++)] = hi;
 
@@ -152,7 +153,8 @@ DVec3 toDouble(const RVec3& v) {
 }
 
 LongReal dotL(const DVec3& a, const DVec3& b) {
-    return static_cast<LongReal>(a.x) * static_cast<LongReal>(b.x) + static_cast<LongReal>(a.y) * static_cast<LongReal>(b.y) +
+    return static_cast<LongReal>(a.x) * static_cast<LongReal>(b.x) +
+           static_cast<LongReal>(a.y) * static_cast<LongReal>(b.y) +
            static_cast<LongReal>(a.z) * static_cast<LongReal>(b.z);
 }
 
@@ -218,8 +220,8 @@ int staticTargetTimes(const Relative& r, double speed, std::array<double, 2>& ti
     const double root = doubleRoot ? 0.0 : std::sqrt(reach * sum);
     const double q = 0.5 * (s2 + gDotR + root);
     if (!(q > 0)) return 0;
-    const double low = distanceSquared / q;      // c / q
-    const double high = 4.0 * q / (g * g);      // q / a
+    const double low = distanceSquared / q;  // c / q
+    const double high = 4.0 * q / (g * g);   // q / a
     times[0] = std::sqrt(low);
     if (doubleRoot) return 1;
     times[1] = std::sqrt(high);
@@ -243,7 +245,8 @@ Status validateAim(const AimShot& shot, const AimTarget& target) {
     if (far(shot.from) || far(target.position) || std::abs(static_cast<double>(shot.speed)) > kMaxSpeed ||
         glm::length(DVec3(target.velocity)) > kMaxSpeed)
         return Status::OutOfRange;
-    const bool apex = shot.constraint == AimConstraint::ApexAboveStart || shot.constraint == AimConstraint::ApexAboveTarget;
+    const bool apex =
+        shot.constraint == AimConstraint::ApexAboveStart || shot.constraint == AimConstraint::ApexAboveTarget;
     if (apex && shot.gravity == Vec3(0.0f)) return Status::ZeroVector;
     return Status::Ok;
 }
@@ -271,13 +274,15 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
     // maxTime of 1e28 s scales the polynomials' brackets past what double can resolve.
     double maxTime = static_cast<double>(shot.maxTime);
     {
-        const double p = std::max({std::abs(r.targetPosition.x), std::abs(r.targetPosition.y),
-                                   std::abs(r.targetPosition.z)});
+        const double p =
+            std::max({std::abs(r.targetPosition.x), std::abs(r.targetPosition.y), std::abs(r.targetPosition.z)});
         const double v = glm::length(r.targetVelocity), a = glm::length(r.targetAcceleration);
         const double room = kMaxCoordinate - p;
         double limit = std::numeric_limits<double>::infinity();
-        if (a > 0.0) limit = 2.0 * room / (v + std::sqrt(v * v + 2.0 * a * room));  // a t^2 / 2 + v t = room
-        else if (v > 0.0) limit = room / v;
+        if (a > 0.0)
+            limit = 2.0 * room / (v + std::sqrt(v * v + 2.0 * a * room));  // a t^2 / 2 + v t = room
+        else if (v > 0.0)
+            limit = room / v;
         maxTime = std::min(maxTime, limit);
     }
 
@@ -303,57 +308,58 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
 
     if (maxTime > 0) {
         switch (shot.constraint) {
-        case AimConstraint::Speed: {
-            if (speed < 0) break;
-            if (r.c1 == DVec3(0.0) && r.targetAcceleration == DVec3(0.0)) {
-                if (glm::dot(r.c0, r.c0) == 0 && speed == 0 && r.gravityLength == 0) {
-                    everyTime = true;
+            case AimConstraint::Speed: {
+                if (speed < 0) break;
+                if (r.c1 == DVec3(0.0) && r.targetAcceleration == DVec3(0.0)) {
+                    if (glm::dot(r.c0, r.c0) == 0 && speed == 0 && r.gravityLength == 0) {
+                        everyTime = true;
+                        break;
+                    }
+                    std::array<double, 2> closed{};
+                    const int n = staticTargetTimes(r, speed, closed);
+                    for (int i = 0; i < n; ++i) {
+                        if (closed[static_cast<std::size_t>(i)] > 0 && closed[static_cast<std::size_t>(i)] <= maxTime) {
+                            times[static_cast<std::size_t>(timeCount++)] = closed[static_cast<std::size_t>(i)];
+                        }
+                    }
                     break;
                 }
-                std::array<double, 2> closed{};
-                const int n = staticTargetTimes(r, speed, closed);
-                for (int i = 0; i < n; ++i) {
-                    if (closed[static_cast<std::size_t>(i)] > 0 && closed[static_cast<std::size_t>(i)] <= maxTime) {
-                        times[static_cast<std::size_t>(timeCount++)] = closed[static_cast<std::size_t>(i)];
-                    }
-                }
+                polynomialTimes(speedPolynomial(r.c0, r.c1, r.c2, speed), always);
                 break;
             }
-            polynomialTimes(speedPolynomial(r.c0, r.c1, r.c2, speed), always);
-            break;
-        }
-        case AimConstraint::HorizontalSpeed: {
-            if (speed < 0) break;
-            polynomialTimes(speedPolynomial(across(r.c0, r.up), across(r.c1, r.up), across(r.c2, r.up), speed), always);
-            break;
-        }
-        case AimConstraint::ApexAboveStart:
-        case AimConstraint::ApexAboveTarget: {
-            const double height = static_cast<double>(shot.apexHeight);
-            if (height < 0) break;
-            const double g = r.gravityLength;
-            const double apexSpeed = std::sqrt(2.0 * g * height);  // vertical speed gained falling `height`
-            Polynomial p;
-            p.degree = 2;
-            p.c[0] = static_cast<LongReal>(glm::dot(r.c0, r.up));
-            p.c[1] = static_cast<LongReal>(glm::dot(r.c1, r.up));
-            p.c[2] = static_cast<LongReal>(glm::dot(r.c2, r.up));
-            // The launch's vertical speed w covers the vertical displacement: d(t).up = w t.
-            // Above the start: w = sqrt(2 g h), hit descending (t >= w / g). Above the hit
-            // point: the apex is (w - g t)^2 / (2 g) above it, so w = g t - sqrt(2 g h) on the
-            // descending branch, and w >= 0 (the apex is reached in flight): t >= sqrt(2 g h) / g.
-            const double apexTime = apexSpeed / g;
-            if (shot.constraint == AimConstraint::ApexAboveStart) {
-                p.c[1] -= static_cast<LongReal>(apexSpeed);
-            } else {
-                p.c[1] += static_cast<LongReal>(apexSpeed);
-                p.c[2] -= static_cast<LongReal>(g);
+            case AimConstraint::HorizontalSpeed: {
+                if (speed < 0) break;
+                polynomialTimes(speedPolynomial(across(r.c0, r.up), across(r.c1, r.up), across(r.c2, r.up), speed),
+                                always);
+                break;
             }
-            p.trim();
-            // A hit at the apex itself is a double root, found to ~1e-10: accept it.
-            polynomialTimes(p, [&](double t) { return t >= apexTime * (1.0 - 1e-9); });
-            break;
-        }
+            case AimConstraint::ApexAboveStart:
+            case AimConstraint::ApexAboveTarget: {
+                const double height = static_cast<double>(shot.apexHeight);
+                if (height < 0) break;
+                const double g = r.gravityLength;
+                const double apexSpeed = std::sqrt(2.0 * g * height);  // vertical speed gained falling `height`
+                Polynomial p;
+                p.degree = 2;
+                p.c[0] = static_cast<LongReal>(glm::dot(r.c0, r.up));
+                p.c[1] = static_cast<LongReal>(glm::dot(r.c1, r.up));
+                p.c[2] = static_cast<LongReal>(glm::dot(r.c2, r.up));
+                // The launch's vertical speed w covers the vertical displacement: d(t).up = w t.
+                // Above the start: w = sqrt(2 g h), hit descending (t >= w / g). Above the hit
+                // point: the apex is (w - g t)^2 / (2 g) above it, so w = g t - sqrt(2 g h) on the
+                // descending branch, and w >= 0 (the apex is reached in flight): t >= sqrt(2 g h) / g.
+                const double apexTime = apexSpeed / g;
+                if (shot.constraint == AimConstraint::ApexAboveStart) {
+                    p.c[1] -= static_cast<LongReal>(apexSpeed);
+                } else {
+                    p.c[1] += static_cast<LongReal>(apexSpeed);
+                    p.c[2] -= static_cast<LongReal>(g);
+                }
+                p.trim();
+                // A hit at the apex itself is a double root, found to ~1e-10: accept it.
+                polynomialTimes(p, [&](double t) { return t >= apexTime * (1.0 - 1e-9); });
+                break;
+            }
         }
     }
     if (everyTime) {
@@ -395,7 +401,8 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
         solution.velocity = detail::toF(velocity);
         solution.time = static_cast<float>(t);
         solution.hit = detail::toR(r.targetPosition + r.targetVelocity * t + r.targetAcceleration * (0.5 * t * t));
-        solution.elevation = static_cast<float>(vertical == 0 && horizontal == 0 ? 0.0 : std::atan2(vertical, horizontal));
+        solution.elevation =
+            static_cast<float>(vertical == 0 && horizontal == 0 ? 0.0 : std::atan2(vertical, horizontal));
         if (!detail::isFinite(solution.velocity) || !detail::isFinite(solution.hit) || !std::isfinite(solution.time)) {
             return Status::NonFiniteResult;
         }

@@ -7,8 +7,7 @@ using namespace detail;
 
 namespace {
 Status checkStart(const PointState& start, float time) {
-    if (!isFinite(start.position) || !isFinite(start.velocity) || !isFinite(time))
-        return Status::NonFiniteInput;
+    if (!isFinite(start.position) || !isFinite(start.velocity) || !isFinite(time)) return Status::NonFiniteInput;
     if (time < 0.0f) return Status::NegativeTime;
     return Status::Ok;
 }

@@ -33,8 +33,8 @@ void sortSmall(std::array<double, N>& values, std::size_t count) {
 
 // Real roots of A x^2 + B x + C strictly inside (low, high), appended to `roots`.
 template <std::size_t N>
-void quadraticRootsInside(double a, double b, double c, double low, double high,
-                          std::array<double, N>& roots, std::size_t& count) {
+void quadraticRootsInside(double a, double b, double c, double low, double high, std::array<double, N>& roots,
+                          std::size_t& count) {
     auto add = [&](double x) {
         if (x > low && x < high && count < N) roots[count++] = x;
     };
@@ -61,8 +61,10 @@ double bisect(G&& g, double low, double high, bool lowIsNegative) {
     for (int i = 0; i < 200; ++i) {
         const double middle = 0.5 * (low + high);
         if (!(middle > low && middle < high)) break;
-        if ((g(middle) < 0.0) == lowIsNegative) low = middle;
-        else high = middle;
+        if ((g(middle) < 0.0) == lowIsNegative)
+            low = middle;
+        else
+            high = middle;
     }
     return lowIsNegative ? low : high;
 }
@@ -88,8 +90,7 @@ Segment segmentBetween(const TrajectoryPoint& first, const TrajectoryPoint& seco
     segment.duration = static_cast<double>(second.time) - segment.t0;
     const double d = segment.duration;
     // The constant acceleration that joins the two points (gravity in free flight).
-    segment.a = d > 0.0 ? (DVec3(toD(second.position)) - segment.p0 - segment.v0 * d) * (2.0 / (d * d))
-                        : DVec3(0.0);
+    segment.a = d > 0.0 ? (DVec3(toD(second.position)) - segment.p0 - segment.v0 * d) * (2.0 / (d * d)) : DVec3(0.0);
     return segment;
 }
 
@@ -99,8 +100,7 @@ struct SegmentDistance {
     DVec3 q, v, a;
     double c0, c1, c2, c3;
 
-    SegmentDistance(const Segment& segment, const DVec3& point)
-        : q(segment.p0 - point), v(segment.v0), a(segment.a) {
+    SegmentDistance(const Segment& segment, const DVec3& point) : q(segment.p0 - point), v(segment.v0), a(segment.a) {
         c0 = glm::dot(q, v);
         c1 = glm::dot(v, v) + glm::dot(q, a);
         c2 = 1.5 * glm::dot(v, a);
@@ -150,10 +150,9 @@ Status checkTrajectory(std::span<const TrajectoryPoint> trajectory) {
 
 DVec3 positionAt(std::span<const TrajectoryPoint> trajectory, double time) {
     // The last point at or before `time` (after a jump of equal times: its later point).
-    const auto after = std::upper_bound(trajectory.begin(), trajectory.end(), time,
-                                        [](double t, const TrajectoryPoint& point) {
-                                            return t < static_cast<double>(point.time);
-                                        });
+    const auto after =
+        std::upper_bound(trajectory.begin(), trajectory.end(), time,
+                         [](double t, const TrajectoryPoint& point) { return t < static_cast<double>(point.time); });
     if (after == trajectory.begin()) return DVec3(toD(trajectory.front().position));
     if (after == trajectory.end()) return DVec3(toD(trajectory.back().position));
     const Segment segment = segmentBetween(*(after - 1), *after);
@@ -161,8 +160,8 @@ DVec3 positionAt(std::span<const TrajectoryPoint> trajectory, double time) {
 }
 
 // Earliest time in [from, until] within `distance` of `point` (trajectory already checked).
-bool earliestWithin(std::span<const TrajectoryPoint> trajectory, const DVec3& point, double distance,
-                    double from, double until, double& found) {
+bool earliestWithin(std::span<const TrajectoryPoint> trajectory, const DVec3& point, double distance, double from,
+                    double until, double& found) {
     if (!(from <= until)) return false;
     const double limit = distance * distance;
     const double lastTime = static_cast<double>(trajectory.back().time);
@@ -205,8 +204,8 @@ bool earliestWithin(std::span<const TrajectoryPoint> trajectory, const DVec3& po
 }
 
 // Closest approach over [from, until] (trajectory checked; from <= until).
-void closestOnPath(std::span<const TrajectoryPoint> trajectory, const DVec3& point, double from,
-                   double until, double& bestSquared, double& bestTime) {
+void closestOnPath(std::span<const TrajectoryPoint> trajectory, const DVec3& point, double from, double until,
+                   double& bestSquared, double& bestTime) {
     bestSquared = std::numeric_limits<double>::infinity();
     bestTime = from;
     auto consider = [&](double squared, double time) {
@@ -247,8 +246,7 @@ double sinc(double x) {
 double xMinusSinOverCube(double x) {
     if (std::abs(x) < 0.5) {
         const double x2 = x * x;
-        return 1.0 / 6.0 -
-               x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
+        return 1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
     }
     return (x - std::sin(x)) / (x * x * x);
 }
@@ -259,7 +257,7 @@ struct Motion {
     DQuat orientation;
     DVec3 angularVelocity;
     double angularSpeed = 0;
-    DVec3 forward;  // unit, local axes
+    DVec3 forward;     // unit, local axes
     double speed = 0;  // signed
     bool body = true;
     DVec3 halfExtents;
@@ -370,8 +368,8 @@ struct Motion {
             DQuat q;
             pose(middle, unused, q);
             const DVec3 vehicleVelocity = (q * forward) * speed;
-            const double change = (std::abs(speed) * angularSpeed + glm::length(characterAcceleration)) *
-                                  (0.5 * (t1 - t0));
+            const double change =
+                (std::abs(speed) * angularSpeed + glm::length(characterAcceleration)) * (0.5 * (t1 - t0));
             relative = std::min(relative, glm::length(vehicleVelocity - characterVelocityAt(middle)) + change);
         }
         return relative + angularSpeed * boundingRadius;
@@ -379,8 +377,8 @@ struct Motion {
 };
 
 bool validCharacter(const CharacterBody& character) {
-    return isFinite(character.position) && isFinite(character.velocity) &&
-           isFinite(character.acceleration) && isFinite(character.radius) && isFinite(character.halfAxis);
+    return isFinite(character.position) && isFinite(character.velocity) && isFinite(character.acceleration) &&
+           isFinite(character.radius) && isFinite(character.halfAxis);
 }
 
 Status prepareMotion(const VehicleBody& vehicle, const CharacterBody& character, Motion& motion) {
@@ -507,16 +505,16 @@ Status findDangerStart(const ProjectileDanger& danger, RVec3 point, DangerStart&
     return Status::Ok;
 }
 
-Status findPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float distance,
-                        float fromTime, float untilTime, DangerStart& out) {
+Status findPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float distance, float fromTime,
+                        float untilTime, DangerStart& out) {
     if (const Status s = checkTrajectory(trajectory); s != Status::Ok) return s;
     if (!isFinite(point) || !isFinite(distance) || !isFinite(fromTime) || !isFinite(untilTime))
         return Status::NonFiniteInput;
     if (distance < 0.0f) return Status::InvalidRadius;
     DangerStart start;
     double found = 0;
-    if (earliestWithin(trajectory, DVec3(toD(point)), static_cast<double>(distance),
-                       static_cast<double>(fromTime), static_cast<double>(untilTime), found)) {
+    if (earliestWithin(trajectory, DVec3(toD(point)), static_cast<double>(distance), static_cast<double>(fromTime),
+                       static_cast<double>(untilTime), found)) {
         start.ever = true;
         start.time = std::max(fromTime, floorToFloat(found));
     }
@@ -524,8 +522,8 @@ Status findPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point
     return Status::Ok;
 }
 
-Status findClosestPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point,
-                               float fromTime, float untilTime, ClosestApproach& out) {
+Status findClosestPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float fromTime,
+                               float untilTime, ClosestApproach& out) {
     if (const Status s = checkTrajectory(trajectory); s != Status::Ok) return s;
     if (!isFinite(point) || !isFinite(fromTime) || !isFinite(untilTime)) return Status::NonFiniteInput;
     const double from = static_cast<double>(fromTime);
@@ -670,8 +668,8 @@ Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBod
 
     // Pass 2. The value m is reached at a time in [0, end] that is never stepped over, so the
     // advancement stops by then; `t >= end` only guards against rounding.
-    const double never = bestValue;                     // never stepped over
-    const double accept = bestValue + 0.25 * tolerance; // reported when reached
+    const double never = bestValue;                      // never stepped over
+    const double accept = bestValue + 0.25 * tolerance;  // reported when reached
     double t = 0.0;
     double value = start;
     for (;;) {

@@ -31,8 +31,7 @@ double secondIntegralAxialCoefficient(double x) {
                                  x2 * (1.0 / 43545600.0 -
                                        x2 * (1.0 / 6706022400.0 -
                                              x2 * (1.0 / 1394852659200.0 -
-                                                   x2 * (1.0 / 376610217984000.0 -
-                                                         x2 / 128047474114560000.0)))))));
+                                                   x2 * (1.0 / 376610217984000.0 - x2 / 128047474114560000.0)))))));
     }
     // For |x| >= 1 the numerator is >= 0.118 while its terms are O(x^2): a few ulps at most.
     return (0.5 * x2 - x * std::sin(x) - std::cos(x) + 1.0) / (x2 * x2);
@@ -56,7 +55,7 @@ DVec3 bodyDisplacement(const DVec3& w, double t, const DVec3& v, const DVec3& a)
     const double sincX = sinc(x);
     const double halfSinc = sinc(0.5 * x);
     const double oneMinusCos = 0.5 * halfSinc * halfSinc;  // (1 - cos x)/x^2
-    const double xMinusSin = xMinusSinOverCube(x);          // (x - sin x)/x^3
+    const double xMinusSin = xMinusSinOverCube(x);         // (x - sin x)/x^3
     const double t2 = t * t;
     const double t3 = t2 * t;
     const DVec3 r1v = t * sincX * v + t2 * oneMinusCos * glm::cross(w, v) + t3 * xMinusSin * glm::dot(w, v) * w;

@@ -26,9 +26,9 @@ double dampingFactor(DampingLaw law, double c, double dt);
 //   v' = d v + b g dt,   p' = p + a v dt + cg g dt^2
 // which covers every order, law and sub-step count (see engineRecurrence).
 struct EngineRecurrence {
-    double dt = 0;        // the step [s], at its decimal value
-    double d = 1;         // damping factor per step
-    double oneMinusD = 0; // 1 - d, computed without cancellation
+    double dt = 0;         // the step [s], at its decimal value
+    double d = 1;          // damping factor per step
+    double oneMinusD = 0;  // 1 - d, computed without cancellation
     double a = 1, b = 1, cg = 1;
 };
 

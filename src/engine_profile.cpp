@@ -12,153 +12,161 @@ EngineProfile engineProfile(PhysicsEngine engine) {
     EngineProfile p;
     p.engine = engine;
     switch (engine) {
-    case PhysicsEngine::Custom:
-        p.damping = DampingLaw::LinearClamped;
-        p.restitutionCombine = CombineRule::Average;
-        p.frictionCombine = CombineRule::Average;
-        p.contactDistance = 0.0f;
-        break;
-    case PhysicsEngine::Jolt:
-        // BodyCreationSettings: mLinearDamping 0.05, mAngularDamping 0.05; PhysicsSettings:
-        // mSpeculativeContactDistance 0.02, mPenetrationSlop 0.02, mBaumgarte 0.2,
-        // mMinVelocityForRestitution 1; MotionProperties: mMaxLinearVelocity 500.
-        p.order = DampingOrder::GravityThenDamping;
-        p.damping = DampingLaw::LinearClamped;
-        p.linearDamping = 0.05f;
-        p.angularDamping = 0.05f;
-        p.restitutionThreshold = 1.0f;
-        p.restitutionBase = RestitutionBase::StepStart;
-        p.restitutionCombine = CombineRule::Max;
-        p.frictionCombine = CombineRule::GeometricMean;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.02f;
-        p.penetrationSlop = 0.02f;
-        p.positionCorrection = 0.2f;
-        p.correctionIsVelocity = false;
-        p.maxLinearSpeed = 500.0f;
-        break;
-    case PhysicsEngine::PhysX:
-        // PxRigidDynamic: linear damping 0 (Unity's drag 0), angular 0.05; bounce threshold
-        // 2 m/s (Unity's default, 0.2 x the tolerance speed 10 in PhysX); contact offset 0.02.
-        p.order = DampingOrder::GravityThenDamping;
-        p.damping = DampingLaw::LinearClamped;
-        p.linearDamping = 0.0f;
-        p.angularDamping = 0.05f;
-        p.restitutionThreshold = 2.0f;
-        p.restitutionBase = RestitutionBase::AfterGravity;
-        p.restitutionCombine = CombineRule::Average;
-        p.frictionCombine = CombineRule::Average;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.04f;
-        p.penetrationSlop = 0.0f;
-        p.positionCorrection = 0.8f;
-        p.correctionIsVelocity = true;
-        break;
-    case PhysicsEngine::Rapier:
-        p.substeps = 4;
-        p.order = DampingOrder::GravityThenDamping;
-        p.damping = DampingLaw::Rational;
-        p.linearDamping = 0.0f;
-        p.angularDamping = 0.0f;
-        p.restitutionThreshold = 0.0f;
-        p.restitutionBase = RestitutionBase::StepStart;
-        p.restitutionCombine = CombineRule::Average;
-        p.frictionCombine = CombineRule::Average;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.02f;
-        p.penetrationSlop = 0.005f;  // normalized_allowed_linear_error: the CCD stops this deep
-        p.positionCorrection = 0.2f;
-        p.correctionIsVelocity = false;
-        break;
-    case PhysicsEngine::Bullet:
-        p.order = DampingOrder::DampingThenGravity;
-        p.damping = DampingLaw::Power;
-        p.restitutionThreshold = 0.2f;  // Bullet 2.87 and later (ammo.js's older Bullet has none)
-        p.restitutionBase = RestitutionBase::StepStart;
-        p.restitutionCombine = CombineRule::Multiply;
-        p.frictionCombine = CombineRule::Multiply;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.02f;
-        p.positionCorrection = 0.2f;
-        p.correctionIsVelocity = true;
-        break;
-    case PhysicsEngine::Godot3:
-        p.order = DampingOrder::DampingThenGravity;
-        p.damping = DampingLaw::LinearClamped;
-        p.linearDamping = 0.1f;  // the project default, which a body's own value replaces
-        p.angularDamping = 0.1f;
-        p.firstStep = FirstStepRule::NoGravity;
-        p.restitutionBase = RestitutionBase::AfterGravity;
-        p.restitutionCombine = CombineRule::SumClamped;
-        p.frictionCombine = CombineRule::Min;
-        p.contact = ContactMethod::Penetration;
-        p.contactDistance = 0.0f;
-        p.penetrationSlop = 0.01f;
-        p.positionCorrection = 0.3f;
-        p.correctionIsVelocity = true;
-        break;
-    case PhysicsEngine::Godot3Bullet:
-        p.order = DampingOrder::DampingThenGravity;
-        p.damping = DampingLaw::LinearClamped;
-        p.linearDamping = 0.0f;
-        p.addedLinearDamping = 0.1f;  // the project default, added to the body's own value
-        p.angularDamping = 0.1f;
-        p.restitutionThreshold = 0.2f;  // Godot 3.2 bundles Bullet 2.89
-        p.firstStep = FirstStepRule::DampingOnly;
-        p.restitutionBase = RestitutionBase::StepStart;
-        p.restitutionCombine = CombineRule::SumClamped;
-        p.frictionCombine = CombineRule::Min;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.02f;  // Bullet's gContactBreakingThreshold, scaled by the shape's bound
-        p.positionCorrection = 0.2f;
-        p.correctionIsVelocity = true;
-        break;
-    case PhysicsEngine::Box2D:
-        // b2_linearSlop 0.005, b2_baumgarte 0.2, restitution threshold 1 m/s,
-        // b2_maxTranslation 2 m per step; a circle touches a polygon within its skin (0.01 m).
-        p.order = DampingOrder::GravityThenDamping;
-        p.damping = DampingLaw::Rational;
-        p.restitutionThreshold = 1.0f;
-        p.restitutionBase = RestitutionBase::AfterGravity;
-        p.restitutionCombine = CombineRule::Max;
-        p.frictionCombine = CombineRule::GeometricMean;
-        p.contact = ContactMethod::Speculative;
-        p.contactDistance = 0.01f;
-        p.penetrationSlop = 0.005f;
-        p.positionCorrection = 0.2f;
-        p.correctionIsVelocity = false;
-        p.maxStepDistance = 2.0f;
-        p.planar = true;
-        break;
+        case PhysicsEngine::Custom:
+            p.damping = DampingLaw::LinearClamped;
+            p.restitutionCombine = CombineRule::Average;
+            p.frictionCombine = CombineRule::Average;
+            p.contactDistance = 0.0f;
+            break;
+        case PhysicsEngine::Jolt:
+            // BodyCreationSettings: mLinearDamping 0.05, mAngularDamping 0.05; PhysicsSettings:
+            // mSpeculativeContactDistance 0.02, mPenetrationSlop 0.02, mBaumgarte 0.2,
+            // mMinVelocityForRestitution 1; MotionProperties: mMaxLinearVelocity 500.
+            p.order = DampingOrder::GravityThenDamping;
+            p.damping = DampingLaw::LinearClamped;
+            p.linearDamping = 0.05f;
+            p.angularDamping = 0.05f;
+            p.restitutionThreshold = 1.0f;
+            p.restitutionBase = RestitutionBase::StepStart;
+            p.restitutionCombine = CombineRule::Max;
+            p.frictionCombine = CombineRule::GeometricMean;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.02f;
+            p.penetrationSlop = 0.02f;
+            p.positionCorrection = 0.2f;
+            p.correctionIsVelocity = false;
+            p.maxLinearSpeed = 500.0f;
+            break;
+        case PhysicsEngine::PhysX:
+            // PxRigidDynamic: linear damping 0 (Unity's drag 0), angular 0.05; bounce threshold
+            // 2 m/s (Unity's default, 0.2 x the tolerance speed 10 in PhysX); contact offset 0.02.
+            p.order = DampingOrder::GravityThenDamping;
+            p.damping = DampingLaw::LinearClamped;
+            p.linearDamping = 0.0f;
+            p.angularDamping = 0.05f;
+            p.restitutionThreshold = 2.0f;
+            p.restitutionBase = RestitutionBase::AfterGravity;
+            p.restitutionCombine = CombineRule::Average;
+            p.frictionCombine = CombineRule::Average;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.04f;
+            p.penetrationSlop = 0.0f;
+            p.positionCorrection = 0.8f;
+            p.correctionIsVelocity = true;
+            break;
+        case PhysicsEngine::Rapier:
+            p.substeps = 4;
+            p.order = DampingOrder::GravityThenDamping;
+            p.damping = DampingLaw::Rational;
+            p.linearDamping = 0.0f;
+            p.angularDamping = 0.0f;
+            p.restitutionThreshold = 0.0f;
+            p.restitutionBase = RestitutionBase::StepStart;
+            p.restitutionCombine = CombineRule::Average;
+            p.frictionCombine = CombineRule::Average;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.02f;
+            p.penetrationSlop = 0.005f;  // normalized_allowed_linear_error: the CCD stops this deep
+            p.positionCorrection = 0.2f;
+            p.correctionIsVelocity = false;
+            break;
+        case PhysicsEngine::Bullet:
+            p.order = DampingOrder::DampingThenGravity;
+            p.damping = DampingLaw::Power;
+            p.restitutionThreshold = 0.2f;  // Bullet 2.87 and later (ammo.js's older Bullet has none)
+            p.restitutionBase = RestitutionBase::StepStart;
+            p.restitutionCombine = CombineRule::Multiply;
+            p.frictionCombine = CombineRule::Multiply;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.02f;
+            p.positionCorrection = 0.2f;
+            p.correctionIsVelocity = true;
+            break;
+        case PhysicsEngine::Godot3:
+            p.order = DampingOrder::DampingThenGravity;
+            p.damping = DampingLaw::LinearClamped;
+            p.linearDamping = 0.1f;  // the project default, which a body's own value replaces
+            p.angularDamping = 0.1f;
+            p.firstStep = FirstStepRule::NoGravity;
+            p.restitutionBase = RestitutionBase::AfterGravity;
+            p.restitutionCombine = CombineRule::SumClamped;
+            p.frictionCombine = CombineRule::Min;
+            p.contact = ContactMethod::Penetration;
+            p.contactDistance = 0.0f;
+            p.penetrationSlop = 0.01f;
+            p.positionCorrection = 0.3f;
+            p.correctionIsVelocity = true;
+            break;
+        case PhysicsEngine::Godot3Bullet:
+            p.order = DampingOrder::DampingThenGravity;
+            p.damping = DampingLaw::LinearClamped;
+            p.linearDamping = 0.0f;
+            p.addedLinearDamping = 0.1f;  // the project default, added to the body's own value
+            p.angularDamping = 0.1f;
+            p.restitutionThreshold = 0.2f;  // Godot 3.2 bundles Bullet 2.89
+            p.firstStep = FirstStepRule::DampingOnly;
+            p.restitutionBase = RestitutionBase::StepStart;
+            p.restitutionCombine = CombineRule::SumClamped;
+            p.frictionCombine = CombineRule::Min;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.02f;  // Bullet's gContactBreakingThreshold, scaled by the shape's bound
+            p.positionCorrection = 0.2f;
+            p.correctionIsVelocity = true;
+            break;
+        case PhysicsEngine::Box2D:
+            // b2_linearSlop 0.005, b2_baumgarte 0.2, restitution threshold 1 m/s,
+            // b2_maxTranslation 2 m per step; a circle touches a polygon within its skin (0.01 m).
+            p.order = DampingOrder::GravityThenDamping;
+            p.damping = DampingLaw::Rational;
+            p.restitutionThreshold = 1.0f;
+            p.restitutionBase = RestitutionBase::AfterGravity;
+            p.restitutionCombine = CombineRule::Max;
+            p.frictionCombine = CombineRule::GeometricMean;
+            p.contact = ContactMethod::Speculative;
+            p.contactDistance = 0.01f;
+            p.penetrationSlop = 0.005f;
+            p.positionCorrection = 0.2f;
+            p.correctionIsVelocity = false;
+            p.maxStepDistance = 2.0f;
+            p.planar = true;
+            break;
     }
     return p;
 }
 
 const char* engineName(PhysicsEngine engine) {
     switch (engine) {
-    case PhysicsEngine::Custom: return "custom";
-    case PhysicsEngine::Jolt: return "jolt";
-    case PhysicsEngine::PhysX: return "physx";
-    case PhysicsEngine::Rapier: return "rapier";
-    case PhysicsEngine::Bullet: return "bullet";
-    case PhysicsEngine::Godot3: return "godot3";
-    case PhysicsEngine::Godot3Bullet: return "godot3-bullet";
-    case PhysicsEngine::Box2D: return "box2d";
+        case PhysicsEngine::Custom:
+            return "custom";
+        case PhysicsEngine::Jolt:
+            return "jolt";
+        case PhysicsEngine::PhysX:
+            return "physx";
+        case PhysicsEngine::Rapier:
+            return "rapier";
+        case PhysicsEngine::Bullet:
+            return "bullet";
+        case PhysicsEngine::Godot3:
+            return "godot3";
+        case PhysicsEngine::Godot3Bullet:
+            return "godot3-bullet";
+        case PhysicsEngine::Box2D:
+            return "box2d";
     }
     return "unknown";
 }
 
 Status validateEngineProfile(const EngineProfile& p) {
-    const float values[] = {p.timestep,          p.linearDamping,     p.addedLinearDamping,
-                            p.angularDamping,    p.restitutionThreshold, p.contactDistance,
-                            p.penetrationSlop,   p.positionCorrection, p.maxLinearSpeed,
-                            p.maxStepDistance,   p.frictionWarmStart, p.splitImpulseCorrection};
+    const float values[] = {p.timestep,        p.linearDamping,        p.addedLinearDamping,
+                            p.angularDamping,  p.restitutionThreshold, p.contactDistance,
+                            p.penetrationSlop, p.positionCorrection,   p.maxLinearSpeed,
+                            p.maxStepDistance, p.frictionWarmStart,    p.splitImpulseCorrection};
     for (float value : values)
         if (!std::isfinite(value)) return Status::NonFiniteInput;
     if (!(p.timestep >= 1e-5f && p.timestep <= 1.0f)) return Status::InvalidStep;
     if (p.substeps < 1 || p.substeps > kMaxEngineSubsteps) return Status::InvalidSetting;
-    if (p.linearDamping < 0 || p.addedLinearDamping < 0 || p.angularDamping < 0 ||
-        p.restitutionThreshold < 0 || p.contactDistance < 0 || p.penetrationSlop < 0)
+    if (p.linearDamping < 0 || p.addedLinearDamping < 0 || p.angularDamping < 0 || p.restitutionThreshold < 0 ||
+        p.contactDistance < 0 || p.penetrationSlop < 0)
         return Status::InvalidSetting;
     if (p.positionCorrection < 0 || p.positionCorrection > 1) return Status::InvalidSetting;
     if (p.frictionWarmStart < 0 || p.frictionWarmStart > 1) return Status::InvalidSetting;
@@ -178,12 +186,18 @@ Status validateEngineProfile(const EngineProfile& p) {
 
 float combineMaterial(CombineRule rule, float a, float b) {
     switch (rule) {
-    case CombineRule::Average: return 0.5f * (a + b);
-    case CombineRule::Min: return std::min(a, b);
-    case CombineRule::Max: return std::max(a, b);
-    case CombineRule::Multiply: return a * b;
-    case CombineRule::GeometricMean: return std::sqrt(std::max(0.0f, a * b));
-    case CombineRule::SumClamped: return std::clamp(a + b, 0.0f, 1.0f);
+        case CombineRule::Average:
+            return 0.5f * (a + b);
+        case CombineRule::Min:
+            return std::min(a, b);
+        case CombineRule::Max:
+            return std::max(a, b);
+        case CombineRule::Multiply:
+            return a * b;
+        case CombineRule::GeometricMean:
+            return std::sqrt(std::max(0.0f, a * b));
+        case CombineRule::SumClamped:
+            return std::clamp(a + b, 0.0f, 1.0f);
     }
     return a;
 }
@@ -192,10 +206,14 @@ namespace detail {
 
 double dampingFactor(DampingLaw law, double c, double dt) {
     switch (law) {
-    case DampingLaw::None: return 1.0;
-    case DampingLaw::LinearClamped: return std::max(0.0, 1.0 - c * dt);
-    case DampingLaw::Rational: return 1.0 / (1.0 + c * dt);
-    case DampingLaw::Power: return std::pow(1.0 - std::min(c, 1.0), dt);
+        case DampingLaw::None:
+            return 1.0;
+        case DampingLaw::LinearClamped:
+            return std::max(0.0, 1.0 - c * dt);
+        case DampingLaw::Rational:
+            return 1.0 / (1.0 + c * dt);
+        case DampingLaw::Power:
+            return std::pow(1.0 - std::min(c, 1.0), dt);
     }
     return 1.0;
 }
@@ -207,12 +225,18 @@ EngineRecurrence engineRecurrence(const EngineProfile& profile) {
     r.d = dampingFactor(profile.damping, c, r.dt);
     // 1 - d without cancellation for the laws whose d is close to 1.
     switch (profile.damping) {
-    case DampingLaw::None: r.oneMinusD = 0.0; break;
-    case DampingLaw::LinearClamped: r.oneMinusD = std::min(1.0, c * r.dt); break;
-    case DampingLaw::Rational: r.oneMinusD = c * r.dt / (1.0 + c * r.dt); break;
-    case DampingLaw::Power:
-        r.oneMinusD = c >= 1.0 ? 1.0 : -std::expm1(r.dt * std::log1p(-c));
-        break;
+        case DampingLaw::None:
+            r.oneMinusD = 0.0;
+            break;
+        case DampingLaw::LinearClamped:
+            r.oneMinusD = std::min(1.0, c * r.dt);
+            break;
+        case DampingLaw::Rational:
+            r.oneMinusD = c * r.dt / (1.0 + c * r.dt);
+            break;
+        case DampingLaw::Power:
+            r.oneMinusD = c >= 1.0 ? 1.0 : -std::expm1(r.dt * std::log1p(-c));
+            break;
     }
     const double n = profile.substeps;
     // One step as v' = d v + b g dt, p' = p + a v dt + cg g dt^2 (see engine_internal.h).

@@ -50,10 +50,10 @@ constexpr double kBulletWarmStart = 0.85;
 // static shape and on the sphere's material (its arm turns with the body); it carries its own
 // impulses from step to step.
 struct ManifoldPoint {
-    DVec3 arm{0.0};        // from the centre to the point on the sphere, turned with the body
-    DVec3 onSurface{0.0};  // the point on the static shape
-    DVec3 normal{0.0};     // the normal it was found with
-    double distance = 0.0; // along the normal, as of the last refresh [m]; negative: penetration
+    DVec3 arm{0.0};                             // from the centre to the point on the sphere, turned with the body
+    DVec3 onSurface{0.0};                       // the point on the static shape
+    DVec3 normal{0.0};                          // the normal it was found with
+    double distance = 0.0;                      // along the normal, as of the last refresh [m]; negative: penetration
     double normalImpulse = 0.0, lateral = 0.0;  // the last solve's accumulated impulses (per unit mass)
     // This step's solve.
     DVec3 direction{0.0};  // the friction direction
@@ -61,22 +61,22 @@ struct ManifoldPoint {
 };
 
 struct Surface {
-    DVec3 normal{0.0};  // unit, towards the sphere
-    DVec3 touch{0.0};   // the sphere's centre where it touches the surface
-    double gap = 0.0;   // the sphere's gap at the step's start [m]; negative: penetration
+    DVec3 normal{0.0};                            // unit, towards the sphere
+    DVec3 touch{0.0};                             // the sphere's centre where it touches the surface
+    double gap = 0.0;                             // the sphere's gap at the step's start [m]; negative: penetration
     float restitution = -1.0f, friction = -1.0f;  // the surface's own material (negative: none)
     bool acting = false;
-    double target = 0.0;     // the normal velocity the solver aims at [m/s]
+    double target = 0.0;  // the normal velocity the solver aims at [m/s]
     double normalImpulse = 0.0;
     DVec3 frictionImpulse{0.0};
-    DVec3 tangent{0.0};      // PhysX: this step's first friction direction
+    DVec3 tangent{0.0};  // PhysX: this step's first friction direction
     double e = 0.0, mu = 0.0;
-    double approach = 0.0;   // normal speed towards the surface before the solve [m/s]
+    double approach = 0.0;  // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
-    bool carried = false;    // applied an impulse in the previous step (Rapier: no new bounce)
-    bool predictive = false; // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
-    double warmNormal = 0.0;   // Rapier: the last sub-step's impulses, warm-starting the next
-    int color = -1;            // Rapier: the solver colour of the contact (solved lowest first)
+    bool carried = false;     // applied an impulse in the previous step (Rapier: no new bounce)
+    bool predictive = false;  // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
+    double warmNormal = 0.0;  // Rapier: the last sub-step's impulses, warm-starting the next
+    int color = -1;           // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
     // Triangle meshes (Bullet): the manifold point of this surface.
     bool persists = false;   // acted in the previous step: its point may still be in the manifold
@@ -119,8 +119,8 @@ public:
               ProjectileResult& result)
         : mSettings(settings), mProfile(settings.engine), mWorld(&world), mRecorder(recorder), mResult(result),
           mRec(engineRecurrence(settings.engine)) {
-        mGravity = DVec3(decimalValue(settings.gravity.x), decimalValue(settings.gravity.y),
-                         decimalValue(settings.gravity.z));
+        mGravity =
+            DVec3(decimalValue(settings.gravity.x), decimalValue(settings.gravity.y), decimalValue(settings.gravity.z));
         if (mProfile.planar) mGravity.z = 0.0;
         mRadius = settings.radius;
         mRotates = mProfile.rotates && mRadius > 0.0;
@@ -214,9 +214,9 @@ private:
         double recorderReach;
     };
     Snapshot save() const {
-        return Snapshot{mPosition, mVelocity, mAngular, mPushVelocity, mSubstepPosition, mLastNormal,
-                        mContactNormal, mSurfaces, mCount, mTouching, mResult, mRecorder.size,
-                        mRecorder.needed, mRecorder.reach};
+        return Snapshot{mPosition,   mVelocity,      mAngular,         mPushVelocity,  mSubstepPosition,
+                        mLastNormal, mContactNormal, mSurfaces,        mCount,         mTouching,
+                        mResult,     mRecorder.size, mRecorder.needed, mRecorder.reach};
     }
     void restore(const Snapshot& s) {
         mPosition = s.position;
@@ -301,8 +301,8 @@ private:
         const double bend = chordBend(taken);
         const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
         const double reach = contactReach();
-        const double extent = (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) +
-                              2.0 * travel + 0.01;
+        const double extent =
+            (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) + 2.0 * travel + 0.01;
         region.capsule.origin = toR(a);
         region.capsule.displacement = toF(mCoastPositions[taken] - toD(region.capsule.origin));
         region.capsule.radius = static_cast<float>((extent + bend + 1e-3) * (1.0 + 1e-5));
@@ -317,7 +317,7 @@ private:
             return 0;
         }
         mContactSteps = std::min<std::uint64_t>(mContactSteps * 2, kMaxCoastSteps);
-        gTmp[4]+=taken;
+        gTmp[4] += taken;
         return taken;
     }
 
@@ -433,7 +433,8 @@ private:
     }
 
     bool step(bool first) {
-        ++gTmp[0]; if (mCount>0) ++gTmp[1];
+        ++gTmp[0];
+        if (mCount > 0) ++gTmp[1];
         const double dt = mRec.dt;
         const DVec3 v0 = mVelocity;
         DVec3 v, freeMotion;
@@ -452,8 +453,10 @@ private:
             freeMotion = mVelocity * dt;
         }
         const DVec3 before = mPosition;
-        if (acted && mProfile.engine == PhysicsEngine::Rapier) mPosition = mSubstepPosition;
-        else mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
+        if (acted && mProfile.engine == PhysicsEngine::Rapier)
+            mPosition = mSubstepPosition;
+        else
+            mPosition += acted ? (mVelocity + mPushVelocity) * dt : freeMotion;
         if (mProfile.planar) mPosition.z = before.z;
         if (mProfile.engine == PhysicsEngine::Rapier) rapierSweep(before);
         if (mProfile.engine == PhysicsEngine::Godot3Bullet) clampMotionCcd(before);
@@ -465,12 +468,16 @@ private:
                 s.warmFriction = s.acting ? s.frictionImpulse : DVec3(0.0);
             }
         }
-        if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity) correctJoltPositions(before);
-        else correctPositions();
+        if (mProfile.engine == PhysicsEngine::Jolt && !mProfile.correctionIsVelocity)
+            correctJoltPositions(before);
+        else
+            correctPositions();
         if (mProfile.engine == PhysicsEngine::Box2D) box2dTimeOfImpact(before);
         if (mMeshContacts) followManifoldPoints(mPosition - before);
-        if (mManifold) turnManifoldPoints();
-        else if (mProfile.frictionWarmStart > 0.0f) dropDriftedPoints(mPosition - before);
+        if (mManifold)
+            turnManifoldPoints();
+        else if (mProfile.frictionWarmStart > 0.0f)
+            dropDriftedPoints(mPosition - before);
 
         bool bounced = false;
         mTouching = false;
@@ -522,7 +529,8 @@ private:
             const double lift = std::max(0.0, -gapNow) + 0.01;
             const DVec3 clear = clearance(s.normal, known.data(), knownCount);
             const DVec3 from = mPosition + clear + s.normal * lift;
-            const DVec3 to = mPosition + clear - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            const DVec3 to =
+                mPosition + clear - s.normal * (reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) continue;
             DVec3 normal = glm::normalize(toD(hit.normal)), off(0.0);
@@ -681,7 +689,8 @@ private:
             }
             bool same = false;
             for (int j = 0; j < kept; ++j)
-                if (glm::dot(mSurfaces[j].normal, s.normal) > 0.999 && std::abs(mSurfaces[j].gap - s.gap) < 1e-4) same = true;
+                if (glm::dot(mSurfaces[j].normal, s.normal) > 0.999 && std::abs(mSurfaces[j].gap - s.gap) < 1e-4)
+                    same = true;
             if (!same) mSurfaces[kept++] = s;
         }
         mCount = kept;
@@ -821,8 +830,9 @@ private:
         const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
         for (int iteration = 0; iteration < 4; ++iteration) {
             const DVec3 from = mPosition + clear + s.normal * (std::max(0.0, -s.gap) + 0.01);
-            const DVec3 to = mPosition + clear - s.normal * (std::max(0.0, s.gap) + reach + 0.01 +
-                                                             std::max(0.0, -glm::dot(freeMotion, s.normal)));
+            const DVec3 to =
+                mPosition + clear -
+                s.normal * (std::max(0.0, s.gap) + reach + 0.01 + std::max(0.0, -glm::dot(freeMotion, s.normal)));
             CastHit hit;
             if (!cast(from, to, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
@@ -857,8 +867,7 @@ private:
         // already in the manifold may stay without that (followManifoldPoints).
         const double reachOfBox = std::abs(s.normal.x) + std::abs(s.normal.y) + std::abs(s.normal.z) - 1.0;
         s.fresh = s.acting && s.gap <= mRadius * reachOfBox;
-        if (s.acting && !s.fresh)
-            s.acting = s.persists && s.pointDistance <= reach && s.pointSlip <= reach;
+        if (s.acting && !s.fresh) s.acting = s.persists && s.pointDistance <= reach && s.pointSlip <= reach;
     }
 
     // A manifold point stays where it was found on the triangle and on the sphere: the sphere's
@@ -1099,10 +1108,18 @@ private:
         mPushVelocity = DVec3(0.0);
         if (!any) return false;
         switch (mProfile.engine) {
-        case PhysicsEngine::Rapier: solveRapier(v0, v); break;
-        case PhysicsEngine::PhysX: solvePhysX(v); break;
-        case PhysicsEngine::Box2D: solveBox2D(v, false); break;
-        default: solveSequential(v0, v); break;
+            case PhysicsEngine::Rapier:
+                solveRapier(v0, v);
+                break;
+            case PhysicsEngine::PhysX:
+                solvePhysX(v);
+                break;
+            case PhysicsEngine::Box2D:
+                solveBox2D(v, false);
+                break;
+            default:
+                solveSequential(v0, v);
+                break;
         }
         return true;
     }
@@ -1134,31 +1151,34 @@ private:
             const bool reaches = s.gap <= 0.0 || vn < -speculative;
             s.bounce = s.e > 0.0 && overThreshold && reaches && base < 0.0;
             switch (engine) {
-            case PhysicsEngine::Bullet:
-            case PhysicsEngine::Godot3Bullet: {
-                if (s.predictive) s.bounce = false;
-                double target = s.bounce ? -s.e * base : 0.0;
-                if (s.gap > 0.0) target -= s.gap / dt;
-                else if (s.gap > -0.04) target += mProfile.positionCorrection * -s.gap / dt;
-                else mPushVelocity += s.normal * (mProfile.splitImpulseCorrection * -s.gap / dt);
-                s.target = target;
-                break;
-            }
-            case PhysicsEngine::Godot3:
-                s.target = s.bounce ? -s.e * vn : 0.0;
-                mPushVelocity += s.normal * (mProfile.positionCorrection *
-                                             std::max(0.0, -s.gap - mProfile.penetrationSlop) / dt);
-                break;
-            case PhysicsEngine::Box2D:
-                s.target = s.bounce ? -s.e * vn : 0.0;
-                break;
-            default:
-                s.target = s.bounce ? -s.e * base : -speculative;
-                if (mProfile.correctionIsVelocity) {
-                    const double depth = -s.gap - mProfile.penetrationSlop;
-                    if (depth > 0.0) s.target += mProfile.positionCorrection * depth / dt;
+                case PhysicsEngine::Bullet:
+                case PhysicsEngine::Godot3Bullet: {
+                    if (s.predictive) s.bounce = false;
+                    double target = s.bounce ? -s.e * base : 0.0;
+                    if (s.gap > 0.0)
+                        target -= s.gap / dt;
+                    else if (s.gap > -0.04)
+                        target += mProfile.positionCorrection * -s.gap / dt;
+                    else
+                        mPushVelocity += s.normal * (mProfile.splitImpulseCorrection * -s.gap / dt);
+                    s.target = target;
+                    break;
                 }
-                break;
+                case PhysicsEngine::Godot3:
+                    s.target = s.bounce ? -s.e * vn : 0.0;
+                    mPushVelocity += s.normal * (mProfile.positionCorrection *
+                                                 std::max(0.0, -s.gap - mProfile.penetrationSlop) / dt);
+                    break;
+                case PhysicsEngine::Box2D:
+                    s.target = s.bounce ? -s.e * vn : 0.0;
+                    break;
+                default:
+                    s.target = s.bounce ? -s.e * base : -speculative;
+                    if (mProfile.correctionIsVelocity) {
+                        const double depth = -s.gap - mProfile.penetrationSlop;
+                        if (depth > 0.0) s.target += mProfile.positionCorrection * depth / dt;
+                    }
+                    break;
             }
         }
         if (mProfile.frictionWarmStart > 0.0f && engine == PhysicsEngine::Bullet) {
@@ -1270,9 +1290,12 @@ private:
                 // A gap is the most the point may close; a shallow penetration is pushed out
                 // through the velocity (erp), a deeper one by the split impulse, which moves the body
                 // without staying in its velocity (the deepest point's, once per surface).
-                if (p.distance > 0.0) target -= p.distance / dt;
-                else if (p.distance > -0.04) target += mProfile.positionCorrection * -p.distance / dt;
-                else push = std::max(push, mProfile.splitImpulseCorrection * -p.distance / dt);
+                if (p.distance > 0.0)
+                    target -= p.distance / dt;
+                else if (p.distance > -0.04)
+                    target += mProfile.positionCorrection * -p.distance / dt;
+                else
+                    push = std::max(push, mProfile.splitImpulseCorrection * -p.distance / dt);
                 p.target = target;
                 p.normalMass = massAlong(p.arm, n);
                 DVec3 slip = after + glm::cross(spin, p.arm);
@@ -1403,7 +1426,10 @@ private:
                     break;
                 }
                 const DVec3 axis = vertex ? (from - corner) / distance : n;
-                auto separation = [&](double u) { return glm::dot(c0 + motion * u - corner, axis) + (vertex ? 0.0 : target - glm::dot(at - corner, n)); };
+                auto separation = [&](double u) {
+                    return glm::dot(c0 + motion * u - corner, axis) +
+                           (vertex ? 0.0 : target - glm::dot(at - corner, n));
+                };
                 const double s1 = separation(t), s2 = separation(1.0);
                 if (s2 > target + tolerance) break;  // separated
                 if (s2 > target - tolerance) {
@@ -1413,8 +1439,10 @@ private:
                 // b2TimeOfImpact's root finder: bisection first, then the secant rule (exact
                 // for a separation linear in time).
                 const double middle = 0.5 * (t + 1.0);
-                if (std::abs(separation(middle) - target) < tolerance) t = middle;
-                else t = t + (target - s1) * (1.0 - t) / (s2 - s1);
+                if (std::abs(separation(middle) - target) < tolerance)
+                    t = middle;
+                else
+                    t = t + (target - s1) * (1.0 - t) / (s2 - s1);
             }
             if (!impact) return;
             const double alpha = alpha0 + (1.0 - alpha0) * t;
@@ -1567,7 +1595,7 @@ private:
         const double erp = h * erpInvDt;
         const double cfmCoefficient = (1.0 / erp - 1.0) * (1.0 / erp - 1.0) / ((1.0 / erp) * 4.0 * zeta * zeta);
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
-        const double maxCorrective = 3.0;  // normalized_max_corrective_velocity [m/s]
+        const double maxCorrective = 3.0;         // normalized_max_corrective_velocity [m/s]
         const double maxSpin = 0.25 * M_PI / dt;  // at most 45 degrees of rotation per step
         const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
@@ -1621,7 +1649,8 @@ private:
                 const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double dist =
+                    s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
                 const double rhs = std::max(dist, 0.0) / h + std::clamp(dist * erpInvDt, -maxCorrective, 0.0);
                 const double cf = dist <= 0.0 ? cfmFactor : 1.0;
                 const double next = cf * std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + rhs));
@@ -1639,7 +1668,8 @@ private:
                 const int i = order[q];
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
-                const double dist = s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
+                const double dist =
+                    s.gap + glm::dot(x - start, s.normal) + glm::dot(anchor[i] - anchor0(s, arm[i]), s.normal);
                 const double next = std::max(0.0, lambda[i] - (glm::dot(vel, s.normal) + std::max(dist, 0.0) / h));
                 vel += (next - lambda[i]) * s.normal;
                 lambda[i] = next;
@@ -1711,8 +1741,8 @@ private:
     // start deals with it.
     void rapierSweep(const DVec3& before) {
         const DVec3 motion = mPosition - before;
-        const double turn = 2.0 * std::atan(0.5 * glm::length(mAngular) * mRec.dt / mProfile.substeps) *
-                            mProfile.substeps * mRadius;
+        const double turn =
+            2.0 * std::atan(0.5 * glm::length(mAngular) * mRec.dt / mProfile.substeps) * mProfile.substeps * mRadius;
         if (glm::length(motion) + (mRotates ? turn : 0.0) <= 0.5 * mRadius) return;
         const double slop = mProfile.penetrationSlop, tolerance = 0.25 * slop;
         if (mRadius <= 2.0 * slop) return;
@@ -1794,7 +1824,8 @@ private:
         const DVec3 n = s.normal;
         const double radius = contactArm(s);
         const DVec3 arm = -radius * n;
-        const double mass = mRotates ? 0.8 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 0.8;
+        const double mass =
+            mRotates ? 0.8 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 0.8;
         const DVec3 tangents[2] = {s.tangent, glm::cross(n, s.tangent)};
         const double limit = s.mu * s.normalImpulse;
         for (int row = 0; row < 2; ++row) {
@@ -1853,7 +1884,8 @@ private:
         const double angle = glm::length(turn);
         if (angle <= 1e-6) return v;
         const DVec3 k = turn / angle;
-        return v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) + k * (glm::dot(k, v) * (1.0 - std::cos(angle)));
+        return v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) +
+               k * (glm::dot(k, v) * (1.0 - std::cos(angle)));
     }
 
     // Jolt's ContactConstraintManager::SolvePositionConstraints (mNumPositionSteps = 2, Baumgarte
@@ -1877,13 +1909,12 @@ private:
                 const Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 const DVec3 p2 = mPosition + arm[i];
-                const double separation =
-                    std::max(glm::dot(p2 - anchor[i], s.normal) + mProfile.penetrationSlop, -0.2);
+                const double separation = std::max(glm::dot(p2 - anchor[i], s.normal) + mProfile.penetrationSlop, -0.2);
                 if (separation >= 0.0) continue;
                 const DVec3 r2 = 0.5 * (anchor[i] + p2) - mPosition;
                 const DVec3 r2xn = glm::cross(r2, s.normal);
-                const double lambda = -mProfile.positionCorrection * separation /
-                                      (1.0 + invInertia * glm::dot(r2xn, r2xn));
+                const double lambda =
+                    -mProfile.positionCorrection * separation / (1.0 + invInertia * glm::dot(r2xn, r2xn));
                 mPosition += lambda * s.normal;
                 const DVec3 spin = lambda * invInertia * r2xn;
                 for (int j = 0; j < mCount; ++j) arm[j] = rotated(arm[j], spin);
@@ -1937,12 +1968,12 @@ private:
     double mAngularFactor = 1.0;
     DVec3 mPosition{0.0}, mVelocity{0.0}, mAngular{0.0};
     std::array<Surface, kMaxSurfaces> mSurfaces{};
-    DVec3 mPushVelocity{0.0};    // moves the position this step but is not kept in the velocity
-    DVec3 mSubstepPosition{0.0}; // Rapier: the position its sub-steps reached
+    DVec3 mPushVelocity{0.0};     // moves the position this step but is not kept in the velocity
+    DVec3 mSubstepPosition{0.0};  // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
-    std::uint64_t mCoastSteps = 8;  // the next coast's horizon [steps]
-    int mCoastWait = 0;             // steps to take one at a time before coasting again
+    std::uint64_t mCoastSteps = 8;    // the next coast's horizon [steps]
+    int mCoastWait = 0;               // steps to take one at a time before coasting again
     std::uint64_t mContactSteps = 8;  // the next contactCoast's horizon [steps]
     int mContactWait = 0;             // steps to take one at a time before contactCoast again
     std::array<DVec3, kMaxCoastSteps + 1> mCoastPositions{}, mCoastVelocities{};

@@ -63,8 +63,8 @@ inline double realUlps(const DVec3& p, double ulps) {
 }
 
 // The value a person meant by a float: the shortest decimal (at most 9 fractional digits)
-// that rounds to it, as a double (0.02f is 0.0199999995529651641845703125; this returns 0.02). Used for time steps and times,
-// so that step k lands at k * 0.02 s and not at 0.099999994 s, while staying deterministic.
+// that rounds to it, as a double (0.02f is 0.0199999995529651641845703125; this returns 0.02).
+// Used for time steps and times, so that step k lands at k * 0.02 s and not at 0.099999994 s, while staying deterministic.
 double decimalValue(float x);
 
 // The rotation of angle |w| t about w / |w| in double, exact for small angles (no NaN at 0).
@@ -84,8 +84,7 @@ inline double xMinusSinOverCube(double x) {
     if (std::abs(x) < 0.5) {
         const double x2 = x * x;
         // Taylor series; the first omitted term, x^10 / 13!, is below 1.5e-13 * 2^-10 here.
-        return 1.0 / 6.0 -
-               x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
+        return 1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 / 39916800.0)));
     }
     return (x - std::sin(x)) / (x * x * x);
 }

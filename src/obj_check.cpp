@@ -160,8 +160,9 @@ bool checkObjText(std::string_view text, std::string& reason) {
                     return false;
                 }
                 if (index < 0 && -index > vertices) {
-                    reason = where + "face corner " + quoted(corner) + " counts back past the first vertex, out of range (" +
-                             std::to_string(vertices) + " read so far)";
+                    reason = where + "face corner " + quoted(corner) +
+                             " counts back past the first vertex, out of range (" + std::to_string(vertices) +
+                             " read so far)";
                     return false;
                 }
                 if (index > largestIndex) {

@@ -45,8 +45,7 @@ Status normalizeQuaternion(Quat q, Quat& out) {
     return Status::Ok;
 }
 
-Status predictOrientation(Quat orientation, Vec3 angularVelocity, AngularFrame frame, float time,
-                          Quat& out) {
+Status predictOrientation(Quat orientation, Vec3 angularVelocity, AngularFrame frame, float time, Quat& out) {
     if (!isFinite(angularVelocity) || !isFinite(time)) return Status::NonFiniteInput;
     Quat q;
     if (Status s = normalizeQuaternion(orientation, q); s != Status::Ok) return s;

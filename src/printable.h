@@ -27,5 +27,5 @@ inline void appendPrintable(std::string& out, std::string_view text, std::string
     }
 }
 
-} // namespace detail
+}  // namespace detail
 FORESIGHT_NAMESPACE_END

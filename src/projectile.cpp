@@ -66,9 +66,7 @@ double firstEntry(double c, double b, double a, double limit, double fallback) {
     return std::clamp(best, 0.0, limit);
 }
 
-DVec3 decimalVector(const Vec3& v) {
-    return DVec3(decimalValue(v.x), decimalValue(v.y), decimalValue(v.z));
-}
+DVec3 decimalVector(const Vec3& v) { return DVec3(decimalValue(v.x), decimalValue(v.y), decimalValue(v.z)); }
 
 SegmentCast makeCast(const DVec3& from, const DVec3& to, float radius) {
     SegmentCast cast;
@@ -168,8 +166,7 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
             bounced = true;
         }
         const double t = static_cast<double>(i) * dt;
-        recorder.add(t, i == steps ? TrajectoryEvent::End
-                                   : (bounced ? TrajectoryEvent::Bounce : TrajectoryEvent::Step),
+        recorder.add(t, i == steps ? TrajectoryEvent::End : (bounced ? TrajectoryEvent::Bounce : TrajectoryEvent::Step),
                      p, v, normal);
     }
     result.position = toR(p);
@@ -192,8 +189,7 @@ public:
         const double step = decimalValue(mSettings.step);
         std::uint64_t gridIndex = 0;  // step points recorded so far
         while (mTime < endTime && !mStopped) {
-            const double gridTime =
-                std::min(static_cast<double>(gridIndex + 1) * step, endTime);
+            const double gridTime = std::min(static_cast<double>(gridIndex + 1) * step, endTime);
             if (mTime >= gridTime) {  // an impact landed exactly on the grid
                 ++gridIndex;
                 recordStep(gridTime, endTime);
@@ -215,8 +211,7 @@ public:
             }
         }
         if (!mStopped) {
-            if (!mEndRecorded)
-                mRecorder.add(endTime, TrajectoryEvent::End, mBody.position, mBody.velocity);
+            if (!mEndRecorded) mRecorder.add(endTime, TrajectoryEvent::End, mBody.position, mBody.velocity);
             mResult.time = static_cast<float>(endTime);
         }
         mResult.position = toR(mBody.position);
@@ -228,15 +223,13 @@ public:
 private:
     void recordStep(double time, double endTime) {
         mEndRecorded = time >= endTime;
-        mRecorder.add(time, mEndRecorded ? TrajectoryEvent::End : TrajectoryEvent::Step,
-                      mBody.position, mBody.velocity);
+        mRecorder.add(time, mEndRecorded ? TrajectoryEvent::End : TrajectoryEvent::Step, mBody.position,
+                      mBody.velocity);
     }
 
     // The normal speed of a one-micrometre hop off a surface with normal n (0 if gravity does
     // not press on it): below it, a bounce turns into sliding contact.
-    double restSpeed(const DVec3& n) const {
-        return std::sqrt(2.0 * std::max(0.0, -glm::dot(mGravity, n)) * 1e-6);
-    }
+    double restSpeed(const DVec3& n) const { return std::sqrt(2.0 * std::max(0.0, -glm::dot(mGravity, n)) * 1e-6); }
 
     // How far off a surface a body is placed after an impact: a few units in the last place
     // of the position type, so that rounding to Real never puts it on the surface's far side.
@@ -253,10 +246,8 @@ private:
         bool returnsToSurface = false;
         // Clear of the surfaces it was on: they can no longer be seen from behind at a start.
         const double clear = 2.0 * liftDistance();
-        if (mHadImpact && std::abs(glm::dot(mLastSurfaceNormal, p0 - mLastSurfacePoint)) > clear)
-            mHadImpact = false;
-        if (mHadContact && std::abs(glm::dot(mContactNormal, p0 - mContactPoint)) > clear)
-            mHadContact = false;
+        if (mHadImpact && std::abs(glm::dot(mLastSurfaceNormal, p0 - mLastSurfacePoint)) > clear) mHadImpact = false;
+        if (mHadContact && std::abs(glm::dot(mContactNormal, p0 - mContactPoint)) > clear) mHadContact = false;
         if (mHasLastSurface) {
             // After a bounce the body starts on the surface it left. A world need not report a
             // surface the cast starts on (two-sided triangles, most engines' meshes), so the
@@ -277,8 +268,7 @@ private:
         const DVec3 p1 = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
         CastHit hit;
         if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit)) {
-            const Impact found = locateImpact(p0, v0, mGravity, duration, hit, mHasLastSurface,
-                                              mLastSurfaceNormal);
+            const Impact found = locateImpact(p0, v0, mGravity, duration, hit, mHasLastSurface, mLastSurfaceNormal);
             arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
         }
@@ -302,16 +292,14 @@ private:
     // on) may be reported as hitting it at once; then it is cast again lifted off that surface
     // by liftDistance(), so that the surface cannot mask the obstacles ahead. A chord that starts
     // a hair behind a surface the body is on (seenFromBehind) is cast again from its front.
-    bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
-                  CastHit& hit) const {
+    bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface, CastHit& hit) const {
         if (!mWorld.castSegment(makeChordCast(p0 + mCastOffset, p1 + mCastOffset, mSettings.radius), hit)) return false;
         if (!onSurface && !mHadImpact && !mHadContact) return true;  // in free flight
         return recastOffSurfaces(p0, p1, onSurface, surface, hit);
     }
 
     // castPath's rest, for a hit near surfaces the body is on (kept out of the common path).
-    bool recastOffSurfaces(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface,
-                           CastHit& hit) const {
+    bool recastOffSurfaces(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface, CastHit& hit) const {
         DVec3 start = p0, end = p1;
         for (int round = 0; round < 2; ++round) {  // at most the two surfaces of seenFromBehind
             const DVec3* n = seenFromBehind(hit, start);
@@ -364,8 +352,7 @@ private:
         const DVec3 normal = toD(hit.normal);
         const DVec3 position = toD(hit.position);
         const auto matches = [&](const DVec3& n, const DVec3& point) {
-            return glm::dot(normal, n) <= -0.999 &&
-                   std::abs(glm::dot(n, start - point)) <= tolerance &&
+            return glm::dot(normal, n) <= -0.999 && std::abs(glm::dot(n, start - point)) <= tolerance &&
                    std::abs(glm::dot(n, position - start)) <= tolerance;
         };
         if (mHadImpact && matches(mLastSurfaceNormal, mLastSurfacePoint)) return &mLastSurfaceNormal;
@@ -374,7 +361,7 @@ private:
     }
 
     struct Impact {
-        double time;         // since the start of the motion
+        double time;  // since the start of the motion
         DVec3 normal;
         DVec3 surfacePoint;  // a point of the surface's tangent plane (body centre at contact)
     };
@@ -383,8 +370,8 @@ private:
     // cast's `hit` (castPath's, lifted or not). The parabola is solved against
     // the plane tangent to the surface at the hit; the chord up to that time is cast again, so
     // that a surface the parabola meets before the chord does (a corner) is not missed.
-    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, double limit,
-                        CastHit hit, bool onSurface, const DVec3& surface) const {
+    Impact locateImpact(const DVec3& p0, const DVec3& v0, const DVec3& a, double limit, CastHit hit, bool onSurface,
+                        const DVec3& surface) const {
         Impact found{};
         for (int attempt = 0;; ++attempt) {
             found.normal = toD(hit.normal);
@@ -392,14 +379,12 @@ private:
             // centre touches) whether or not the cast was lifted off the path: solve for it.
             found.surfacePoint = toD(hit.position);
             const DVec3& n = found.normal;
-            found.time = firstEntry(glm::dot(n, p0 - found.surfacePoint), glm::dot(n, v0),
-                                    0.5 * glm::dot(n, a), limit,
+            found.time = firstEntry(glm::dot(n, p0 - found.surfacePoint), glm::dot(n, v0), 0.5 * glm::dot(n, a), limit,
                                     static_cast<double>(hit.fraction) * limit);
             if (attempt == 4 || found.time <= 0.0) return found;
             const DVec3 p = p0 + v0 * found.time + 0.5 * a * found.time * found.time;
             CastHit earlier;
-            if (!castPath(p0, p, onSurface, surface, earlier) || earlier.fraction >= 1.0f - 1e-6f)
-                return found;
+            if (!castPath(p0, p, onSurface, surface, earlier) || earlier.fraction >= 1.0f - 1e-6f) return found;
             hit = earlier;
             limit = found.time;
         }
@@ -422,7 +407,7 @@ private:
     void arriveAt(const DVec3& p0, const DVec3& v0, double s, const DVec3& n, const DVec3& surfacePoint) {
         DVec3 p = backedOff(p0 + v0 * s + 0.5 * mGravity * s * s, v0 + mGravity * s);
         p -= n * glm::dot(n, p - surfacePoint);  // onto the surface the world reported
-        p += n * skinDistance(p);                 // and surely on its front side
+        p += n * skinDistance(p);                // and surely on its front side
         keepInFront(p, n, surfacePoint);
         mBody = {p, v0 + mGravity * s};
         mTime += s;
@@ -464,8 +449,10 @@ private:
         int slot = mRecentCount;
         for (int i = 0; i < mRecentCount; ++i)
             if (glm::dot(mRecent[i].normal, n) > 1.0 - 1e-9) slot = i;
-        if (slot == kRecentSurfaces) slot = mRecentOldest++ % kRecentSurfaces;
-        else if (slot == mRecentCount) ++mRecentCount;
+        if (slot == kRecentSurfaces)
+            slot = mRecentOldest++ % kRecentSurfaces;
+        else if (slot == mRecentCount)
+            ++mRecentCount;
         mRecent[static_cast<std::size_t>(slot)] = {n, point};
     }
 
@@ -643,8 +630,7 @@ private:
                 const DVec3 along = n - glm::dot(n, floor) * floor;
                 const double length = glm::length(along);
                 if (length > 1e-6)
-                    v = bounceVelocity(mBody.velocity, along / length, mSettings.restitution,
-                                       mSettings.friction);
+                    v = bounceVelocity(mBody.velocity, along / length, mSettings.restitution, mSettings.friction);
                 v -= glm::dot(v, floor) * floor;
             }
         }
@@ -696,11 +682,10 @@ private:
 
 Status validateProjectileSettings(const ProjectileSettings& settings) {
     if (!(settings.step > 0.0f) || !std::isfinite(settings.step)) return Status::InvalidStep;
-    if (!isFinite(settings.gravity) || !std::isfinite(settings.restitution) ||
-        !std::isfinite(settings.friction) || !std::isfinite(settings.radius))
+    if (!isFinite(settings.gravity) || !std::isfinite(settings.restitution) || !std::isfinite(settings.friction) ||
+        !std::isfinite(settings.radius))
         return Status::NonFiniteInput;
-    if (!(settings.restitution >= 0.0f && settings.restitution <= 1.0f))
-        return Status::InvalidRestitution;
+    if (!(settings.restitution >= 0.0f && settings.restitution <= 1.0f)) return Status::InvalidRestitution;
     if (!(settings.friction >= 0.0f)) return Status::InvalidFriction;
     if (!(settings.radius >= 0.0f)) return Status::InvalidRadius;
     if (settings.method == ProjectileMethod::Engine) return validateEngineProfile(settings.engine);
@@ -720,21 +705,18 @@ std::uint64_t steppedStepCount(float time, float step) {
     // Taken at their decimal values (3 / 0.02, not 3 / 0.0199999995), and quotients within 1e-6
     // (relative) of an integer are that integer, so that rounding never adds a step.
     const double nearest = std::nearbyint(quotient);
-    if (std::abs(quotient - nearest) <= 1e-6 * std::max(1.0, quotient))
-        return static_cast<std::uint64_t>(nearest);
+    if (std::abs(quotient - nearest) <= 1e-6 * std::max(1.0, quotient)) return static_cast<std::uint64_t>(nearest);
     return static_cast<std::uint64_t>(std::ceil(quotient));
 }
 
-std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings,
-                               std::size_t expectedEvents) {
+std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings, std::size_t expectedEvents) {
     const std::uint64_t steps = steppedStepCount(time, settingsStep(settings));
     const std::uint64_t capped = std::min<std::uint64_t>(steps, settings.maxSteps);
     return static_cast<std::size_t>(capped) + 3 + 2 * expectedEvents;
 }
 
 Status predictProjectile(RVec3 position, Vec3 velocity, float time, const ProjectileSettings& settings,
-                         const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
-                         ProjectileResult& out) {
+                         const CollisionWorld* world, std::span<TrajectoryPoint> trajectory, ProjectileResult& out) {
     if (!detail::isFinite(position) || !detail::isFinite(velocity) || !std::isfinite(time))
         return Status::NonFiniteInput;
     if (Status s = validateProjectileSettings(settings); s != Status::Ok) return s;
@@ -752,8 +734,7 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     ProjectileResult result;
     Status status;
     if (settings.method == ProjectileMethod::Engine) {
-        status = runEngineProjectile(toD(position), toD(velocity), steps, settings, collisionWorld, recorder,
-                                     result);
+        status = runEngineProjectile(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
     } else if (settings.method == ProjectileMethod::Stepped) {
         status = runStepped(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
     } else {
@@ -789,15 +770,16 @@ RVec3 renderedPosition(std::span<const TrajectoryPoint> trajectory, float step, 
     const double alpha = std::max(0.0, steps - static_cast<double>(k));
     const TrajectoryPoint& point = trajectory[k];
     switch (smoothing) {
-    case RenderSmoothing::None: return point.position;
-    case RenderSmoothing::Interpolate: {
-        if (k == 0) return point.position;
-        if (k == last && alpha > 0.0) return point.position;  // past the end: the last step
-        const DVec3 previous = toD(trajectory[k - 1].position);
-        return toR(previous + std::min(alpha, 1.0) * (toD(point.position) - previous));
-    }
-    case RenderSmoothing::Extrapolate:
-        return toR(toD(point.position) + toD(point.velocity) * (alpha * dt));
+        case RenderSmoothing::None:
+            return point.position;
+        case RenderSmoothing::Interpolate: {
+            if (k == 0) return point.position;
+            if (k == last && alpha > 0.0) return point.position;  // past the end: the last step
+            const DVec3 previous = toD(trajectory[k - 1].position);
+            return toR(previous + std::min(alpha, 1.0) * (toD(point.position) - previous));
+        }
+        case RenderSmoothing::Extrapolate:
+            return toR(toD(point.position) + toD(point.velocity) * (alpha * dt));
     }
     return point.position;
 }

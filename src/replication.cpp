@@ -76,8 +76,8 @@ double clampedAge(double time, double timestamp, float limit, bool& held) {
 bool quickValid(const DeadReckoningState& s) {
     const int algorithm = static_cast<int>(s.algorithm);
     if (algorithm < 1 || algorithm > kDeadReckoningAlgorithmCount) return false;
-    if (!isFinite(s.position) || !isFinite(s.velocity) || !isFinite(s.acceleration) ||
-        !isFinite(s.angularVelocity) || !isFinite(s.orientation))
+    if (!isFinite(s.position) || !isFinite(s.velocity) || !isFinite(s.acceleration) || !isFinite(s.angularVelocity) ||
+        !isFinite(s.orientation))
         return false;
     const Quat& q = s.orientation;
     return q.w != 0.0f || q.x != 0.0f || q.y != 0.0f || q.z != 0.0f;
@@ -215,8 +215,8 @@ void DeadReckoningReceiver::reset() {
     *this = DeadReckoningReceiver(settings);
 }
 
-Status DeadReckoningReceiver::extrapolate(const Snapshot& update, double time, DeadReckoningResult& result,
-                                          Pose& pose, bool& held) const {
+Status DeadReckoningReceiver::extrapolate(const Snapshot& update, double time, DeadReckoningResult& result, Pose& pose,
+                                          bool& held) const {
     const double age = clampedAge(time, update.timestamp, mSettings.extrapolationLimit, held);
     const float ageF = static_cast<float>(age);
     // Only with an infinite extrapolationLimit: an age beyond float range.
@@ -248,7 +248,8 @@ Status DeadReckoningReceiver::showExtrapolated(double time, ReceivedPose& out, P
             if (remaining > 0.0) {
                 shown.position = target.position + mCurrentOffset * remaining;
                 shown.velocity = target.velocity;
-                shown.orientation = glm::normalize(scaleRotation(mCurrentRotationOffset, remaining) * target.orientation);
+                shown.orientation =
+                    glm::normalize(scaleRotation(mCurrentRotationOffset, remaining) * target.orientation);
                 blended = true;
             }
         } else {
@@ -422,7 +423,8 @@ UpdateOutcome DeadReckoningReceiver::receiveInterpolated(double timestamp, const
     // difference at the last render time fades out linearly over blendTime instead of popping
     // (a teleport still snaps).
     ReceivedPose beforeRaw;
-    const bool rendered = mHasRendered && mBufferCount > 0 && showInterpolated(mLastRenderTime, beforeRaw) == Status::Ok;
+    const bool rendered =
+        mHasRendered && mBufferCount > 0 && showInterpolated(mLastRenderTime, beforeRaw) == Status::Ok;
     ReceivedPose before = beforeRaw;
     if (rendered) applySwitchOffset(mLastRenderTime, before);
     // Where it goes: after every buffered update stamped earlier (usually at the end).
@@ -614,8 +616,8 @@ inline void sinCosPolynomials(float r, float& sinPoly, float& sine, float& cosin
     const float z = r * r;
     sinPoly = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z;
     sine = r + r * sinPoly;
-    cosine = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z - 0.5f * z +
-             1.0f;
+    cosine =
+        ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z - 0.5f * z + 1.0f;
 }
 
 // sin, cos and sin(h)/h of 0 <= h < kReductionLimit: the Cody-Waite reduction, then the
@@ -662,10 +664,22 @@ SinCos sinCosHalfAngle(double h) {
     float sinPoly, s, c;
     sinCosPolynomials(r, sinPoly, s, c);
     switch (k & 3) {
-        case 0: out.sine = s; out.cosine = c; break;
-        case 1: out.sine = c; out.cosine = -s; break;
-        case 2: out.sine = -s; out.cosine = -c; break;
-        default: out.sine = -c; out.cosine = s; break;
+        case 0:
+            out.sine = s;
+            out.cosine = c;
+            break;
+        case 1:
+            out.sine = c;
+            out.cosine = -s;
+            break;
+        case 2:
+            out.sine = -s;
+            out.cosine = -c;
+            break;
+        default:
+            out.sine = -c;
+            out.cosine = s;
+            break;
     }
     out.sinc = k == 0 ? 1.0f + sinPoly : out.sine / static_cast<float>(h);
     return out;
@@ -701,7 +715,8 @@ inline Quat turnedOrientation(const Quat& a, const Quat& b, float cosine, float 
 // below 3e-9 at x = 2).
 inline float xMinusSinSeriesF(float z) {
     return 1.0f / 6.0f -
-           z * (1.0f / 120.0f - z * (1.0f / 5040.0f - z * (1.0f / 362880.0f - z * (1.0f / 39916800.0f - z / 6227020800.0f))));
+           z * (1.0f / 120.0f -
+                z * (1.0f / 5040.0f - z * (1.0f / 362880.0f - z * (1.0f / 39916800.0f - z / 6227020800.0f))));
 }
 
 // (x - sin x) / x^3 for x >= 0 in float, with sin x given: Taylor series below 2 (the direct
@@ -756,8 +771,8 @@ Status prepareDeadReckoning(const DeadReckoningState& state, double timestamp, P
     p.mAxisTerm = toF(b);
     p.mAxis = toF(axis);
     p.mKernel = algorithm == DeadReckoningAlgorithm::Static ? kKernelStatic
-                : deadReckoningInBodyAxes(algorithm)     ? kKernelBody
-                                                         : kKernelWorld;
+                : deadReckoningInBodyAxes(algorithm)        ? kKernelBody
+                                                            : kKernelWorld;
     p.mAlgorithm = algorithm;
     out = p;
     return Status::Ok;
@@ -765,7 +780,8 @@ Status prepareDeadReckoning(const DeadReckoningState& state, double timestamp, P
 
 // One prepared entity (the scalar form; DeadReckoningBatch's fallback). False when the result
 // overflows: `result` is then the update as given.
-bool detail::PreparedAccess::extrapolateOne(const PreparedDeadReckoning& e, double time, double limit, DeadReckoningResult& result) {
+bool detail::PreparedAccess::extrapolateOne(const PreparedDeadReckoning& e, double time, double limit,
+                                            DeadReckoningResult& result) {
     if (e.mKernel == kKernelStatic) {
         result.position = e.mPosition;
         result.velocity = e.mVelocity;
@@ -998,22 +1014,24 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
     const std::span<const PreparedDeadReckoning> all(mPrepared);
     // Body-axis entities get their orientation from the body pass (the same formula, with the
     // sine and cosine it computes anyway).
-    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0 && u.mKernel != kKernelBody, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
-        putQuat(mTurnOrientation, slot, m.mOrientation);
-        putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
-        mTurnTimestamp[slot] = m.mTimestamp;
-        mTurnHalfRate[slot] = m.mHalfRate;
-    });
-    assignToGroup(mBody, all, entity, u.mKernel == kKernelBody, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
-        put(mBodyPosition, slot, m.mPosition);
-        put(mBodyVelocity, slot, m.mVelocity);
-        put(mBodyAcceleration, slot, m.mAcceleration);
-        put(mBodyAxis, slot, m.mAxis);
-        putQuat(mBodyOrientation, slot, m.mOrientation);
-        putQuat(mBodyAxisTerm, slot, m.mAxisTerm);
-        mBodyTimestamp[slot] = m.mTimestamp;
-        mBodyHalfRate[slot] = m.mHalfRate;
-    });
+    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0 && u.mKernel != kKernelBody,
+                  [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+                      putQuat(mTurnOrientation, slot, m.mOrientation);
+                      putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
+                      mTurnTimestamp[slot] = m.mTimestamp;
+                      mTurnHalfRate[slot] = m.mHalfRate;
+                  });
+    assignToGroup(mBody, all, entity, u.mKernel == kKernelBody,
+                  [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+                      put(mBodyPosition, slot, m.mPosition);
+                      put(mBodyVelocity, slot, m.mVelocity);
+                      put(mBodyAcceleration, slot, m.mAcceleration);
+                      put(mBodyAxis, slot, m.mAxis);
+                      putQuat(mBodyOrientation, slot, m.mOrientation);
+                      putQuat(mBodyAxisTerm, slot, m.mAxisTerm);
+                      mBodyTimestamp[slot] = m.mTimestamp;
+                      mBodyHalfRate[slot] = m.mHalfRate;
+                  });
     return Status::Ok;
 }
 
@@ -1126,12 +1144,16 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
                 const float ax = mBodyAcceleration.x[s], ay = mBodyAcceleration.y[s], az = mBodyAcceleration.z[s];
                 const float cUV = t * zz * ex * (ux * vx + uy * vy + uz * vz);
                 const float cUA = t2 * (0.5f - sincX + c1) * (ux * ax + uy * ay + uz * az);
-                const float dx = cV * vx + cUxV * (uy * vz - uz * vy) + cUV * ux + cA * ax + cUxA * (uy * az - uz * ay) + cUA * ux;
-                const float dy = cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
-                const float dz = cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
+                const float dx =
+                    cV * vx + cUxV * (uy * vz - uz * vy) + cUV * ux + cA * ax + cUxA * (uy * az - uz * ay) + cUA * ux;
+                const float dy =
+                    cV * vy + cUxV * (uz * vx - ux * vz) + cUV * uy + cA * ay + cUxA * (uz * ax - ux * az) + cUA * uy;
+                const float dz =
+                    cV * vz + cUxV * (ux * vy - uy * vx) + cUV * uz + cA * az + cUxA * (ux * ay - uy * ax) + cUA * uz;
                 // q d q^-1 = d + w c + q.xyz x c with c = 2 q.xyz x d.
                 const Quat q = quatAt(mBodyOrientation, s);
-                const float cx = 2.0f * (q.y * dz - q.z * dy), cy = 2.0f * (q.z * dx - q.x * dz), cz = 2.0f * (q.x * dy - q.y * dx);
+                const float cx = 2.0f * (q.y * dz - q.z * dy), cy = 2.0f * (q.z * dx - q.x * dz),
+                            cz = 2.0f * (q.x * dy - q.y * dx);
                 px[j] = mBodyPosition.x[s] + Real(dx + q.w * cx + (q.y * cz - q.z * cy));
                 py[j] = mBodyPosition.y[s] + Real(dy + q.w * cy + (q.z * cx - q.x * cz));
                 pz[j] = mBodyPosition.z[s] + Real(dz + q.w * cz + (q.x * cy - q.y * cx));

@@ -75,8 +75,7 @@ DVec3 closestOnTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DV
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
     const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
     const double denom = 1.0 / (va + vb + vc);
     return a + ab * (vb * denom) + ac * (vc * denom);
 }
@@ -85,8 +84,7 @@ DVec3 closestOnTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DV
 // relative margin so that a segment through a shared edge hits one of the two triangles.
 bool insideTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DVec3& c, const DVec3& n) {
     const double margin = -1e-9 * glm::dot(n, glm::cross(b - a, c - a));
-    return glm::dot(n, glm::cross(b - a, p - a)) >= margin &&
-           glm::dot(n, glm::cross(c - b, p - b)) >= margin &&
+    return glm::dot(n, glm::cross(b - a, p - a)) >= margin && glm::dot(n, glm::cross(c - b, p - b)) >= margin &&
            glm::dot(n, glm::cross(a - c, p - c)) >= margin;
 }
 
@@ -95,8 +93,7 @@ bool insideTriangle(const DVec3& p, const DVec3& a, const DVec3& b, const DVec3&
 // Returns true when the entry test should run.
 bool surfaceRule(const Ray& ray, double signedDistance, const DVec3& outward, Candidate& best) {
     if (signedDistance > ray.tolerance) return true;
-    if (signedDistance >= -ray.tolerance && glm::dot(outward, ray.direction) < 0.0)
-        best.offer(0.0, outward);
+    if (signedDistance >= -ray.tolerance && glm::dot(outward, ray.direction) < 0.0) best.offer(0.0, outward);
     return false;
 }
 
@@ -248,8 +245,7 @@ Status validateMaterial(const SurfaceMaterial& m) {
 }
 
 Status validatePlane(const Plane& plane) {
-    if (!isFinite(plane.normal) || !isFinite(static_cast<double>(plane.distance)))
-        return Status::NonFiniteInput;
+    if (!isFinite(plane.normal) || !isFinite(static_cast<double>(plane.distance))) return Status::NonFiniteInput;
     if (!(glm::length(toD(plane.normal)) > 0.0)) return Status::ZeroVector;
     return Status::Ok;
 }
@@ -267,21 +263,18 @@ Status validateBox(const OrientedBox& box) {
     if (!(box.halfExtents.x > 0.0f && box.halfExtents.y > 0.0f && box.halfExtents.z > 0.0f))
         return Status::DegenerateShape;
     if (!std::isfinite(box.rounding)) return Status::NonFiniteInput;
-    if (!(box.rounding >= 0.0f) ||
-        box.rounding > std::min({box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}))
+    if (!(box.rounding >= 0.0f) || box.rounding > std::min({box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}))
         return Status::InvalidRadius;
     return Status::Ok;
 }
 
 Status validateTriangle(const Triangle& triangle) {
-    if (!isFinite(triangle.a) || !isFinite(triangle.b) || !isFinite(triangle.c))
-        return Status::NonFiniteInput;
+    if (!isFinite(triangle.a) || !isFinite(triangle.b) || !isFinite(triangle.c)) return Status::NonFiniteInput;
     const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
     const double twiceArea = glm::length(glm::cross(b - a, c - a));
     const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
     // Zero area, or a sliver whose height is under 1e-6 of its longest edge (unstable normal).
-    if (!(twiceArea > 2e-12) || !(twiceArea > 1e-6 * longest * longest))
-        return Status::DegenerateShape;
+    if (!(twiceArea > 2e-12) || !(twiceArea > 1e-6 * longest * longest)) return Status::DegenerateShape;
     return Status::Ok;
 }
 
@@ -419,8 +412,8 @@ Capsule prepareCapsule(const SegmentCast& capsule) {
     Capsule c;
     c.a = glm::dvec3(capsule.origin);
     c.b = c.a + glm::dvec3(capsule.displacement);
-    const double magnitude = std::max({std::abs(c.a.x), std::abs(c.a.y), std::abs(c.a.z), std::abs(c.b.x),
-                                       std::abs(c.b.y), std::abs(c.b.z)});
+    const double magnitude = std::max(
+        {std::abs(c.a.x), std::abs(c.a.y), std::abs(c.a.z), std::abs(c.b.x), std::abs(c.b.y), std::abs(c.b.z)});
     c.radius = std::max(0.0, static_cast<double>(capsule.radius)) + 1e-4 + 1e-6 * magnitude;
     c.valid = std::isfinite(magnitude) && std::isfinite(c.radius);
     return c;
@@ -639,8 +632,8 @@ PlaneRegionTester::PlaneRegionTester(const PlaneRegion& region) {
     mNormal = normal / length;
     mDistance = glm::dot(mNormal, point);
     // The plane of a mesh's floor holds its vertices up to their float rounding; 10 um besides.
-    const double magnitude = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z),
-                                       std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
+    const double magnitude = std::max(
+        {std::abs(point.x), std::abs(point.y), std::abs(point.z), std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
     mTolerance = 1e-5 + 1e-6 * magnitude;
     // The anchor must lie in the cross-section: the start within the radius of the plane.
     const double height = glm::dot(mNormal, mA) - mDistance;

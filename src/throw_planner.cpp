@@ -28,14 +28,14 @@ constexpr double kRefinementGoal = 0.5;
 /// One evaluated throw.
 struct Candidate {
     DVec3 velocity{0};
-    double distance = kInfinity; // at the fuse time, to the target [m]
+    double distance = kInfinity;  // at the fuse time, to the target [m]
     ProjectileResult result;
-    bool hasImpact = false;      // a first impact was recorded
+    bool hasImpact = false;  // a first impact was recorded
     double impactTime = -1;
     DVec3 impactNormal{0};
     DVec3 impactPosition{0};
-    DVec3 residual{0};           // final position - target [m]
-    bool coarse = false;         // predicted with the grid's coarse step: not verified
+    DVec3 residual{0};    // final position - target [m]
+    bool coarse = false;  // predicted with the grid's coarse step: not verified
 };
 
 /// The planner's state for one call (all on the stack).
@@ -44,10 +44,9 @@ public:
     Planner(const ThrowPlanRequest& request, const CollisionWorld* world, std::span<ThrowPlan> plans,
             std::span<TrajectoryPoint> scratch)
         : mRequest(request), mWorld(world), mPlans(plans), mScratch(scratch),
-          mWanted(std::min<std::size_t>(request.maxPlans, plans.size())),
-          mStart(toD(request.start)), mTarget(toD(request.target)),
-          mRadius(request.acceptanceRadius), mFuse(detail::decimalValue(request.fuseTime)),
-          mMaxSpeed(request.maxSpeed), mMinSpeed(request.minSpeed),
+          mWanted(std::min<std::size_t>(request.maxPlans, plans.size())), mStart(toD(request.start)),
+          mTarget(toD(request.target)), mRadius(request.acceptanceRadius),
+          mFuse(detail::decimalValue(request.fuseTime)), mMaxSpeed(request.maxSpeed), mMinSpeed(request.minSpeed),
           mCosDistinct(std::cos(std::clamp(static_cast<double>(request.distinctAngle), 0.0, kPi))) {
         const DVec3 gravity = toD(request.settings.gravity);
         mGravity = glm::length(gravity);
@@ -102,8 +101,7 @@ private:
 
     /// True when the grid predicts with a coarser step than the request's (gridStep).
     bool coarseGrid() const {
-        return mRequest.settings.method == ProjectileMethod::Exact &&
-               mRequest.budget.gridStep > mRequest.settings.step;
+        return mRequest.settings.method == ProjectileMethod::Exact && mRequest.budget.gridStep > mRequest.settings.step;
     }
 
     /// Runs one prediction; false when the budget is spent (candidate untouched). `velocity` is
@@ -118,9 +116,9 @@ private:
         ProjectileSettings settings = mRequest.settings;
         if (coarse) settings.step = mRequest.budget.gridStep;
         ProjectileResult result;
-        const Status status = predictProjectile(mRequest.start, Vec3(velocity), mRequest.fuseTime,
-                                                settings, mWorld, mScratch, result);
-        if (status != Status::Ok) return true; // a miss: work caps or overflow on this throw
+        const Status status =
+            predictProjectile(mRequest.start, Vec3(velocity), mRequest.fuseTime, settings, mWorld, mScratch, result);
+        if (status != Status::Ok) return true;  // a miss: work caps or overflow on this throw
         c.result = result;
         c.residual = toD(result.position) - mTarget;
         c.distance = glm::length(c.residual);
@@ -158,8 +156,8 @@ private:
     }
 
     /// True when a and b count as the same plan (ThrowPlanRequest::distinctAngle).
-    bool samePlan(const DVec3& velocityA, bool impactA, const DVec3& normalA, const DVec3& velocityB,
-                  bool impactB, const DVec3& normalB) const {
+    bool samePlan(const DVec3& velocityA, bool impactA, const DVec3& normalA, const DVec3& velocityB, bool impactB,
+                  const DVec3& normalB) const {
         const double speedA = glm::length(velocityA), speedB = glm::length(velocityB);
         if (speedA == 0 || speedB == 0) {
             if (speedA != speedB) return false;
@@ -176,8 +174,8 @@ private:
         if (!(c.distance <= mRadius) || !withinSpeed(c.velocity)) return;
         for (std::size_t i = 0; i < mAccepted; ++i) {
             ThrowPlan& plan = mPlans[i];
-            if (samePlan(c.velocity, c.hasImpact, c.impactNormal, toD(plan.launchVelocity),
-                         plan.firstImpactTime >= 0, toD(plan.firstImpactNormal))) {
+            if (samePlan(c.velocity, c.hasImpact, c.impactNormal, toD(plan.launchVelocity), plan.firstImpactTime >= 0,
+                         toD(plan.firstImpactNormal))) {
                 if (c.distance < plan.distance) plan = toPlan(c);
                 return;
             }
@@ -201,8 +199,8 @@ private:
     bool nearAcceptedPlan(const Candidate& c) const {
         for (std::size_t i = 0; i < mAccepted; ++i) {
             const ThrowPlan& plan = mPlans[i];
-            if (samePlan(c.velocity, c.hasImpact, c.impactNormal, toD(plan.launchVelocity),
-                         plan.firstImpactTime >= 0, toD(plan.firstImpactNormal)))
+            if (samePlan(c.velocity, c.hasImpact, c.impactNormal, toD(plan.launchVelocity), plan.firstImpactTime >= 0,
+                         toD(plan.firstImpactNormal)))
                 return true;
         }
         return false;
@@ -220,7 +218,7 @@ private:
         for (int impact = 0; impact < 256; ++impact) {
             // The descending crossing of the plane: height + w s - g s^2 / 2 = 0.
             const double discriminant = w * w + 2 * g * height;
-            if (discriminant < 0) return x + u * (mFuse - t); // never comes down to the plane
+            if (discriminant < 0) return x + u * (mFuse - t);  // never comes down to the plane
             const double landing = (w + std::sqrt(discriminant)) / g;
             if (!(landing > 0) || t + landing >= mFuse) return x + u * (mFuse - t);
             t += landing;
@@ -241,8 +239,7 @@ private:
         if (mGravity == 0) {
             // Straight lines: the throw that arrives at the fuse time.
             const DVec3 velocity = (mTarget - mStart) / mFuse;
-            if (glm::length(velocity) <= mMaxSpeed && glm::length(velocity) >= mMinSpeed)
-                addSeed(velocity);
+            if (glm::length(velocity) <= mMaxSpeed && glm::length(velocity) >= mMinSpeed) addSeed(velocity);
             return;
         }
         for (const float fraction : mRequest.budget.seedLandingFractions) {
@@ -297,7 +294,7 @@ private:
     /// Damped Gauss-Newton on the launch velocity, from `start`.
     void refine(Candidate current) {
         const std::uint32_t limit = mPredictions + mRequest.budget.refinementPredictions;
-        const double h = std::max(1e-4, 5e-4 * mMaxSpeed); // forward-difference step [m/s]
+        const double h = std::max(1e-4, 5e-4 * mMaxSpeed);  // forward-difference step [m/s]
         double damping = 1e-3;
         while (mPredictions < limit && !budgetSpent()) {
             if (current.distance <= mRadius * kRefinementGoal) return;
@@ -332,7 +329,7 @@ private:
                 // No step longer than half the speed cap: the model is local.
                 const double length = glm::length(delta);
                 if (length > 0.5 * mMaxSpeed) delta *= 0.5 * mMaxSpeed / length;
-                if (length < 1e-9 * mMaxSpeed) return; // converged as far as it can
+                if (length < 1e-9 * mMaxSpeed) return;  // converged as far as it can
                 Candidate trial;
                 if (!evaluate(clampSpeed(current.velocity + delta), trial)) return;
                 if (trial.distance < current.distance) {
@@ -341,7 +338,7 @@ private:
                     improved = true;
                 } else {
                     damping *= 8;
-                    if (damping > 1e8) return; // stuck at a discontinuity or a minimum
+                    if (damping > 1e8) return;  // stuck at a discontinuity or a minimum
                 }
             }
         }
@@ -384,9 +381,8 @@ private:
         const ThrowPlanBudget& budget = mRequest.budget;
         const double azimuthSpacing = 2 * kPi / budget.azimuthSamples;
         const double elevationSpacing =
-            budget.elevationSamples > 1
-                ? (kGridHighestElevation - kGridLowestElevation) / (budget.elevationSamples - 1)
-                : 0.0;
+            budget.elevationSamples > 1 ? (kGridHighestElevation - kGridLowestElevation) / (budget.elevationSamples - 1)
+                                        : 0.0;
         // Cells closer than this in direction fall into the same basin: keep the closer one.
         const double cosNeighbour = std::cos(1.5 * std::max(azimuthSpacing, elevationSpacing));
         for (std::uint32_t s = 0; s < budget.speedSamples; ++s) {
@@ -463,24 +459,22 @@ private:
     std::size_t mCellCount = 0;
 };
 
-} // namespace
+}  // namespace
 
 Status validateThrowPlanRequest(const ThrowPlanRequest& request) {
-    if (!isFinite(request.start) || !isFinite(request.target) ||
-        !std::isfinite(request.acceptanceRadius) || !std::isfinite(request.fuseTime) ||
-        !std::isfinite(request.maxSpeed) || !std::isfinite(request.minSpeed) ||
+    if (!isFinite(request.start) || !isFinite(request.target) || !std::isfinite(request.acceptanceRadius) ||
+        !std::isfinite(request.fuseTime) || !std::isfinite(request.maxSpeed) || !std::isfinite(request.minSpeed) ||
         !std::isfinite(request.distinctAngle))
         return Status::NonFiniteInput;
     if (Status s = validateProjectileSettings(request.settings); s != Status::Ok) return s;
     if (!(request.fuseTime > 0.0f)) return Status::InvalidFuse;
     if (!(request.acceptanceRadius > 0.0f)) return Status::InvalidRadius;
-    if (!(request.maxSpeed > 0.0f) || !(request.minSpeed >= 0.0f) ||
-        !(request.minSpeed <= request.maxSpeed))
+    if (!(request.maxSpeed > 0.0f) || !(request.minSpeed >= 0.0f) || !(request.minSpeed <= request.maxSpeed))
         return Status::InvalidSpeed;
     const ThrowPlanBudget& b = request.budget;
-    if (request.maxPlans == 0 || b.azimuthSamples == 0 || b.elevationSamples == 0 ||
-        b.speedSamples == 0 || b.refinements == 0 || b.refinements > kMaxThrowPlanRefinements ||
-        b.refinementPredictions == 0 || b.maxPredictions == 0)
+    if (request.maxPlans == 0 || b.azimuthSamples == 0 || b.elevationSamples == 0 || b.speedSamples == 0 ||
+        b.refinements == 0 || b.refinements > kMaxThrowPlanRefinements || b.refinementPredictions == 0 ||
+        b.maxPredictions == 0)
         return Status::InvalidIterations;
     if (!std::isfinite(request.budget.gridStep) || request.budget.gridStep < 0.0f) return Status::InvalidStep;
     if (b.maxTotalSteps == 0) return Status::InvalidIterations;
@@ -505,9 +499,8 @@ std::size_t throwPlanScratchSize(const ThrowPlanRequest& request) {
     return trajectoryCapacity(request.fuseTime, request.settings, 1);
 }
 
-Status planThrow(const ThrowPlanRequest& request, const CollisionWorld* world,
-                 std::span<ThrowPlan> plans, std::span<TrajectoryPoint> scratch,
-                 ThrowPlanResult& out) {
+Status planThrow(const ThrowPlanRequest& request, const CollisionWorld* world, std::span<ThrowPlan> plans,
+                 std::span<TrajectoryPoint> scratch, ThrowPlanResult& out) {
     if (Status s = validateThrowPlanRequest(request); s != Status::Ok) return s;
     Planner planner(request, world, plans, scratch);
     if (!plans.empty()) planner.run();
@@ -515,11 +508,10 @@ Status planThrow(const ThrowPlanRequest& request, const CollisionWorld* world,
     return Status::Ok;
 }
 
-Status predictThrowPlan(const ThrowPlanRequest& request, const ThrowPlan& plan,
-                        const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
-                        ProjectileResult& out) {
-    return predictProjectile(request.start, plan.launchVelocity, request.fuseTime, request.settings,
-                             world, trajectory, out);
+Status predictThrowPlan(const ThrowPlanRequest& request, const ThrowPlan& plan, const CollisionWorld* world,
+                        std::span<TrajectoryPoint> trajectory, ProjectileResult& out) {
+    return predictProjectile(request.start, plan.launchVelocity, request.fuseTime, request.settings, world, trajectory,
+                             out);
 }
 
 FORESIGHT_NAMESPACE_END

@@ -16,8 +16,7 @@ struct PreparedVehicle {
     double speed;   // signed: negative when reversing
 };
 
-Status prepare(const VehicleState& start, float time, const VehicleSettings& settings,
-               PreparedVehicle& out) {
+Status prepare(const VehicleState& start, float time, const VehicleSettings& settings, PreparedVehicle& out) {
     if (!isFinite(start.position) || !isFinite(start.velocity) || !isFinite(start.angularVelocity) ||
         !isFinite(settings.forward) || !isFinite(time))
         return Status::NonFiniteInput;
@@ -36,8 +35,8 @@ Status prepare(const VehicleState& start, float time, const VehicleSettings& set
     return Status::Ok;
 }
 
-Status finish(const DVec3& position, const DVec3& velocity, const DQuat& orientation,
-              const VehicleState& start, VehicleState& out) {
+Status finish(const DVec3& position, const DVec3& velocity, const DQuat& orientation, const VehicleState& start,
+              VehicleState& out) {
     VehicleState result;
     result.position = toR(position);
     result.velocity = toF(velocity);
@@ -60,8 +59,8 @@ float signedVehicleSpeed(Vec3 velocity, Vec3 forwardWorld) {
     return static_cast<float>(glm::dot(toD(velocity), toD(forwardWorld)) < 0.0 ? -speed : speed);
 }
 
-Status predictVehicleIterative(const VehicleState& start, float time, int iterations,
-                               const VehicleSettings& settings, VehicleState& out) {
+Status predictVehicleIterative(const VehicleState& start, float time, int iterations, const VehicleSettings& settings,
+                               VehicleState& out) {
     if (iterations < 1 || iterations > kMaxVehicleIterations) return Status::InvalidIterations;
     PreparedVehicle v;
     if (Status s = prepare(start, time, settings, v); s != Status::Ok) return s;
@@ -76,8 +75,7 @@ Status predictVehicleIterative(const VehicleState& start, float time, int iterat
     return finish(v.position, v.velocity, v.orientation, start, out);
 }
 
-Status predictVehicleExact(const VehicleState& start, float time, const VehicleSettings& settings,
-                           VehicleState& out) {
+Status predictVehicleExact(const VehicleState& start, float time, const VehicleSettings& settings, VehicleState& out) {
     PreparedVehicle v;
     if (Status s = prepare(start, time, settings, v); s != Status::Ok) return s;
     const double t = time;
@@ -97,8 +95,7 @@ Status predictVehicleExact(const VehicleState& start, float time, const VehicleS
     const DVec3 wxf = glm::cross(w, f);
     DVec3 displacement = (t * f + c1 * wxf + c2 * glm::cross(w, wxf)) * v.speed;
     if (body) displacement = v.orientation * displacement;
-    const DQuat orientation =
-        compose(v.orientation, rotationFromAngularVelocityD(w, t), settings.frame);
+    const DQuat orientation = compose(v.orientation, rotationFromAngularVelocityD(w, t), settings.frame);
     const DVec3 velocity = (orientation * v.forward) * v.speed;
     return finish(v.position + displacement, velocity, orientation, start, out);
 }

@@ -40,12 +40,14 @@ Aimed aim(const AimShot& shot, const AimTarget& target) {
     std::size_t count = 99;
     Aimed out;
     out.status = foresight::aimProjectile(shot, target, storage, count);
-    if (out.status == Status::Ok) out.solutions.assign(storage.begin(), storage.begin() + static_cast<std::ptrdiff_t>(count));
+    if (out.status == Status::Ok)
+        out.solutions.assign(storage.begin(), storage.begin() + static_cast<std::ptrdiff_t>(count));
     return out;
 }
 
 DVec3 targetAt(const AimTarget& target, double t) {
-    return ftest::toD(target.position) + ftest::toD(target.velocity) * t + ftest::toD(target.acceleration) * (0.5 * t * t);
+    return ftest::toD(target.position) + ftest::toD(target.velocity) * t +
+           ftest::toD(target.acceleration) * (0.5 * t * t);
 }
 
 DVec3 gravityOf(const AimShot& shot) {
@@ -175,7 +177,8 @@ TEST(Aim, BeyondTheRangeLimitIsEmptyAndJustInsideGivesTwoArcs) {
 // straight up, straight down, 0.1 mm off vertical, and 1000 m/s at 100 m (elevation 4.9e-4 rad).
 TEST(Aim, NearVerticalAndNearHorizontalShotsAreAccurate) {
     const AimShot shot = shotAt(40.0f);
-    for (const AimTarget& target : {staticAt(0, 50, 0), staticAt(0, -20, 0), staticAt(1e-4, 50, 0), staticAt(0, 81.5, 1e-4)}) {
+    for (const AimTarget& target :
+         {staticAt(0, 50, 0), staticAt(0, -20, 0), staticAt(1e-4, 50, 0), staticAt(0, 81.5, 1e-4)}) {
         const Aimed a = aim(shot, target);
         ASSERT_EQ(a.status, Status::Ok);
         ASSERT_FALSE(a.solutions.empty());
@@ -487,9 +490,9 @@ TEST(Aim, DoesNotAllocate) {
     for (const AimConstraint constraint : {AimConstraint::Speed, AimConstraint::HorizontalSpeed,
                                            AimConstraint::ApexAboveStart, AimConstraint::ApexAboveTarget}) {
         for (const float gravity : {0.0f, -9.81f}) {
-            if (gravity == 0.0f && (constraint == AimConstraint::ApexAboveStart ||
-                                    constraint == AimConstraint::ApexAboveTarget))
-                continue; // an apex needs gravity (refused: ZeroVector)
+            if (gravity == 0.0f &&
+                (constraint == AimConstraint::ApexAboveStart || constraint == AimConstraint::ApexAboveTarget))
+                continue;  // an apex needs gravity (refused: ZeroVector)
             AimShot shot;
             shot.from = ftest::toR(DVec3(0, 1.5, 0));
             shot.constraint = constraint;
@@ -511,7 +514,7 @@ TEST(Aim, DoesNotAllocate) {
         }
     }
     EXPECT_EQ(calls, 6u);
-    EXPECT_GE(total, calls); // every shot has a solution: the solvers ran to the end
+    EXPECT_GE(total, calls);  // every shot has a solution: the solvers ran to the end
     EXPECT_EQ(allocations, 0);
 }
 
@@ -522,8 +525,7 @@ TEST(Aim, OverflowIsNonFiniteResult) {
     // 1e39 m/s, beyond float.
     std::array<FiringSolution, 4> storage{};
     std::size_t count = 0;
-    const Status status =
-        foresight::aimProjectile(shot, staticAt(1e-35, 1e4, 0), storage, count);
+    const Status status = foresight::aimProjectile(shot, staticAt(1e-35, 1e4, 0), storage, count);
     EXPECT_TRUE(status == Status::NonFiniteResult || (status == Status::Ok && count == 0)) << int(status);
 }
 
@@ -532,15 +534,15 @@ TEST(Aim, OverflowIsNonFiniteResult) {
 
 struct ScanReport {
     std::uint64_t problems = 0;
-    std::uint64_t scanRoots = 0;     ///< roots the scan finds (crossings and clear touches)
-    std::uint64_t solverRoots = 0;   ///< solutions the solver reports
-    std::uint64_t missed = 0;        ///< scan roots without a solver solution near them
-    std::uint64_t spurious = 0;      ///< solver solutions that miss the target by > 1e-3 m, flown
-                                     ///< by the closed-form parabola or by predictProjectile
-    std::uint64_t flown = 0;         ///< solver solutions flown by predictProjectile
-    std::uint64_t unmatched = 0;     ///< solver solutions the scan did not see (but that hit)
-    std::uint64_t grazing = 0;       ///< problems built to graze (double roots)
-    std::uint64_t closePairs = 0;    ///< scan roots within 1e-2 s of the next (near-double roots)
+    std::uint64_t scanRoots = 0;    ///< roots the scan finds (crossings and clear touches)
+    std::uint64_t solverRoots = 0;  ///< solutions the solver reports
+    std::uint64_t missed = 0;       ///< scan roots without a solver solution near them
+    std::uint64_t spurious = 0;     ///< solver solutions that miss the target by > 1e-3 m, flown
+                                    ///< by the closed-form parabola or by predictProjectile
+    std::uint64_t flown = 0;        ///< solver solutions flown by predictProjectile
+    std::uint64_t unmatched = 0;    ///< solver solutions the scan did not see (but that hit)
+    std::uint64_t grazing = 0;      ///< problems built to graze (double roots)
+    std::uint64_t closePairs = 0;   ///< scan roots within 1e-2 s of the next (near-double roots)
 };
 
 // One random problem: target in a 100 m box, up to 12 m/s and 4 m/s^2, speed 1..40 m/s, gravity
@@ -555,7 +557,8 @@ void randomProblem(ftest::Random& random, AimShot& shot, AimTarget& target, bool
     target.velocity = Vec3(static_cast<float>(random.uniform(-12, 12)), static_cast<float>(random.uniform(-6, 6)),
                            static_cast<float>(random.uniform(-12, 12)));
     target.acceleration = random.uniform() < 0.25 ? Vec3(0.0f)
-                                                  : Vec3(static_cast<float>(random.uniform(-4, 4)), static_cast<float>(random.uniform(-4, 4)),
+                                                  : Vec3(static_cast<float>(random.uniform(-4, 4)),
+                                                         static_cast<float>(random.uniform(-4, 4)),
                                                          static_cast<float>(random.uniform(-4, 4)));
     shot.speed = static_cast<float>(random.uniform(1, 40));
     grazing = random.uniform() < 0.25;
@@ -593,7 +596,10 @@ int scanRoots(const AimShot& shot, const AimTarget& target, int samples, std::ve
         for (int i = 0; i < 100; ++i) {
             const double m = 0.5 * (a + b);
             const double fm = miss(m);
-            if ((fm < 0) == (fa < 0)) a = m, fa = fm; else b = m;
+            if ((fm < 0) == (fa < 0))
+                a = m, fa = fm;
+            else
+                b = m;
         }
         return 0.5 * (a + b);
     };
@@ -613,7 +619,10 @@ int scanRoots(const AimShot& shot, const AimTarget& target, int samples, std::ve
             const double sign = minimum ? 1.0 : -1.0;
             for (int k = 0; k < 100; ++k) {
                 const double a = lo + 0.381966 * (hi - lo), b = hi - 0.381966 * (hi - lo);
-                if (sign * miss(a) < sign * miss(b)) hi = b; else lo = a;
+                if (sign * miss(a) < sign * miss(b))
+                    hi = b;
+                else
+                    lo = a;
             }
             const double extremum = 0.5 * (lo + hi);
             const double value = miss(extremum);
@@ -648,14 +657,16 @@ ScanReport compareWithScan(std::uint64_t problems, int samples, std::uint64_t se
         }
         scanRoots(shot, target, samples, scanned);
         report.scanRoots += scanned.size();
-        for (std::size_t i = 1; i < scanned.size(); ++i) report.closePairs += scanned[i] - scanned[i - 1] < 1e-2 ? 1 : 0;
+        for (std::size_t i = 1; i < scanned.size(); ++i)
+            report.closePairs += scanned[i] - scanned[i - 1] < 1e-2 ? 1 : 0;
         report.solverRoots += solved.solutions.size();
         // Float times: the solver's root rounded to a float (6e-8 relative); the scan's root is
         // bisected to double. Two roots are the same within 1e-5 s (relative, at least 1e-5).
         auto near = [](double a, double b) { return std::fabs(a - b) <= 1e-5 * std::max(1.0, std::fabs(b)); };
         for (const double root : scanned) {
-            const bool found = std::any_of(solved.solutions.begin(), solved.solutions.end(),
-                                           [&](const FiringSolution& s) { return near(static_cast<double>(s.time), root); });
+            const bool found =
+                std::any_of(solved.solutions.begin(), solved.solutions.end(),
+                            [&](const FiringSolution& s) { return near(static_cast<double>(s.time), root); });
             if (!found) {
                 // A root at the window's end may fall on either side of maxTime.
                 if (root > static_cast<double>(shot.maxTime) * (1 - 1e-6)) continue;
@@ -682,16 +693,17 @@ ScanReport compareWithScan(std::uint64_t problems, int samples, std::uint64_t se
 
 void printReport(const char* name, const ScanReport& r) {
     const auto u = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
-    std::printf("[aim scan] %s: %llu problems (%llu built to graze; %llu root pairs under 10 ms apart), scan roots "
-                "%llu, solver solutions %llu (each flown by predictProjectile: %llu)\n",
-                name, u(r.problems), u(r.grazing), u(r.closePairs), u(r.scanRoots), u(r.solverRoots), u(r.flown));
-    std::printf("[aim scan] %s: miss rate %llu / %llu scan roots = %.3g; spurious (miss > 1e-3 m) %llu / %llu "
-                "solutions = %.3g; solver-only hits %llu\n",
-                name, u(r.missed), u(r.scanRoots),
-                r.scanRoots > 0 ? static_cast<double>(r.missed) / static_cast<double>(r.scanRoots) : 0.0, u(r.spurious),
-                u(r.solverRoots),
-                r.solverRoots > 0 ? static_cast<double>(r.spurious) / static_cast<double>(r.solverRoots) : 0.0,
-                u(r.unmatched));
+    std::printf(
+        "[aim scan] %s: %llu problems (%llu built to graze; %llu root pairs under 10 ms apart), scan roots "
+        "%llu, solver solutions %llu (each flown by predictProjectile: %llu)\n",
+        name, u(r.problems), u(r.grazing), u(r.closePairs), u(r.scanRoots), u(r.solverRoots), u(r.flown));
+    std::printf(
+        "[aim scan] %s: miss rate %llu / %llu scan roots = %.3g; spurious (miss > 1e-3 m) %llu / %llu "
+        "solutions = %.3g; solver-only hits %llu\n",
+        name, u(r.missed), u(r.scanRoots),
+        r.scanRoots > 0 ? static_cast<double>(r.missed) / static_cast<double>(r.scanRoots) : 0.0, u(r.spurious),
+        u(r.solverRoots),
+        r.solverRoots > 0 ? static_cast<double>(r.spurious) / static_cast<double>(r.solverRoots) : 0.0, u(r.unmatched));
 }
 
 #ifdef NDEBUG
@@ -703,9 +715,9 @@ constexpr std::uint64_t kScanProblems = 10000;  // Debug and sanitizer builds ar
 TEST(AimScan, QuarticSolverAgreesWithABruteForceTimeScan) {
     const ScanReport r = compareWithScan(kScanProblems, 1000, 0x5eed);
     printReport("random problems", r);
-    EXPECT_GT(r.scanRoots, kScanProblems / 2);  // the problems have roots to find
+    EXPECT_GT(r.scanRoots, kScanProblems / 2);     // the problems have roots to find
     EXPECT_GT(r.closePairs, kScanProblems / 100);  // and near-double roots among them
-    EXPECT_EQ(r.flown, r.solverRoots);  // every solution flown
+    EXPECT_EQ(r.flown, r.solverRoots);             // every solution flown
     EXPECT_EQ(r.missed, 0u);
     EXPECT_EQ(r.spurious, 0u);
     EXPECT_EQ(r.unmatched, 0u);
@@ -720,7 +732,7 @@ TEST(AimScan, DISABLED_MillionRandomProblems) {
     EXPECT_EQ(r.spurious, 0u);
 }
 
-} // namespace
+}  // namespace
 
 // The precision envelope: a huge maxTime must not hide a solution (the search ends where the
 // target may leave the envelope), and speeds or positions beyond it are refused.

@@ -11,7 +11,6 @@
 #include <new>
 #include <vector>
 
-
 namespace {
 
 using foresight::AngularFrame;
@@ -82,12 +81,12 @@ TEST_F(Allocation, CharacterOrientationVehicleDoNotAllocate) {
     const long n = allocationsDuring([&] {
         s[0] = foresight::predictLinear(character, 0.5f, outCharacter);
         s[1] = foresight::predictAccelerated(character, Vec3(0.0f, -9.81f, 0.0f), 0.5f, outCharacter);
-        s[2] = foresight::predictOrientation(glm::identity<foresight::Quat>(), Vec3(0.0f, 0.25f, 0.0f), AngularFrame::Body,
-                                             2.0f, q);
+        s[2] = foresight::predictOrientation(glm::identity<foresight::Quat>(), Vec3(0.0f, 0.25f, 0.0f),
+                                             AngularFrame::Body, 2.0f, q);
         s[3] = foresight::predictVehicleExact(vehicle, 2.0f, settings, outVehicle);
         s[4] = foresight::predictVehicleIterative(vehicle, 2.0f, 4, settings, outVehicle);
         s[5] = foresight::predictVehicleIterative(vehicle, 2.0f, 1000, settings, outVehicle);
-        s[6] = foresight::predictLinear(character, -1.0f, outCharacter); // a refusal
+        s[6] = foresight::predictLinear(character, -1.0f, outCharacter);  // a refusal
         s[7] = foresight::Status::Ok;
         (void)foresight::statusMessage(s[6]);
     });
@@ -108,15 +107,16 @@ TEST_F(Allocation, ProjectilesDoNotAllocate) {
             ProjectileResult free;
             Status s[3] = {};
             const long n = allocationsDuring([&] {
-                s[0] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, &world, points,
-                                                    result);
+                s[0] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, &world,
+                                                    points, result);
                 s[1] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, &world,
                                                     std::span<TrajectoryPoint>(points.data(), 3), truncated);
-                s[2] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, nullptr, {}, free);
+                s[2] = foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.5f, 4.0f, 12.0f), 3.0f, settings, nullptr, {},
+                                                    free);
             });
             EXPECT_EQ(n, 0) << "method " << static_cast<int>(method) << " radius " << radius;
             for (const Status st : s) EXPECT_EQ(st, Status::Ok);
-            EXPECT_GT(result.bounces, 0u); // the call did real work
+            EXPECT_GT(result.bounces, 0u);  // the call did real work
         }
     }
 }
@@ -124,14 +124,17 @@ TEST_F(Allocation, ProjectilesDoNotAllocate) {
 TEST_F(Allocation, RestingAndCallbackWorldDoNotAllocate) {
     // Contact handling (sliding, rest) and a user CallbackWorld.
     const foresight::CollisionWorld& base = world;
-    auto forward = [&base](const foresight::SegmentCast& cast, foresight::CastHit& hit) { return base.castSegment(cast, hit); };
+    auto forward = [&base](const foresight::SegmentCast& cast, foresight::CastHit& hit) {
+        return base.castSegment(cast, hit);
+    };
     const foresight::CallbackWorld callbackWorld = foresight::CallbackWorld::wrap(forward);
     ProjectileSettings settings;
     settings.friction = 0.5f;
     ProjectileResult result;
     Status s = Status::NonFiniteInput;
     const long n = allocationsDuring([&] {
-        s = foresight::predictProjectile(rv(0, 1, 0), Vec3(2.0f, 0.0f, 0.0f), 3.0f, settings, &callbackWorld, points, result);
+        s = foresight::predictProjectile(rv(0, 1, 0), Vec3(2.0f, 0.0f, 0.0f), 3.0f, settings, &callbackWorld, points,
+                                         result);
     });
     EXPECT_EQ(n, 0);
     EXPECT_EQ(s, Status::Ok);
@@ -151,7 +154,7 @@ TEST_F(Allocation, StaticWorldCastsDoNotAllocate) {
         }
     });
     EXPECT_EQ(n, 0);
-    EXPECT_EQ(hits, 200); // every cast reaches at least the floor
+    EXPECT_EQ(hits, 200);  // every cast reaches at least the floor
 }
 
 TEST_F(Allocation, ReplicationDoesNotAllocate) {
@@ -197,11 +200,11 @@ TEST_F(Allocation, ReplicationDoesNotAllocate) {
             truth.position = rv(3.0 * t, -0.5 * t * t, 1.0 * t + 0.1 * (k % 7));
             foresight::SendDecision decision;
             if (sender.update(t, truth, decision) == Status::Ok && decision.send()) ++sent;
-            if (decision.send() || k % 2 == 0) { // every other tick: the ring wraps
+            if (decision.send() || k % 2 == 0) {  // every other tick: the ring wraps
                 for (foresight::DeadReckoningReceiver& r : receivers) {
                     (void)r.receive(t, truth, t + 0.05);
-                    (void)r.receive(t, truth, t + 0.05); // duplicate
-                    (void)r.receive(t, bad, t + 0.05);   // invalid
+                    (void)r.receive(t, truth, t + 0.05);  // duplicate
+                    (void)r.receive(t, bad, t + 0.05);    // invalid
                 }
             }
             for (foresight::DeadReckoningReceiver& r : receivers) {
@@ -224,4 +227,4 @@ TEST_F(Allocation, ReplicationDoesNotAllocate) {
     EXPECT_EQ(preparedRefused, 0u);
 }
 
-} // namespace
+}  // namespace

@@ -79,8 +79,8 @@ TEST(BulletSimulation, DropMatchesClosedForm) {
         simulation.frequency = frequency;
         const double dt = step(simulation);
         RigidBodySimulationResult result;
-        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, h + r, 0), Vec3(0), 4.0f, settings,
-                                                         simulation, result),
+        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, h + r, 0), Vec3(0), 4.0f, settings, simulation,
+                                                         result),
                   Status::Ok);
         const double t0 = std::sqrt(2.0 * h / kG), v0 = kG * t0;
         double expectedTouch = t0, touchTolerance = 1e-5, rebound = 0.0;
@@ -113,11 +113,12 @@ TEST(BulletSimulation, DropMatchesClosedForm) {
             expectedTouch += 2.0 * leaving / kG;
             touchTolerance += dt + 2.0 * rebound / kG;
         }
-        std::printf("[ drop %5.0f Hz ] %zu impacts; first 6 bounces: max |touch time - closed form| %.3g s "
-                    "(%.2f steps; bound %.2f steps), max |apex - e^2k h| %.3g m (bound %.3g m), rebound speed "
-                    "off by up to %.2f g dt, impact time - touch %.2f steps at most\n",
-                    static_cast<double>(frequency), result.impacts.size(), worstTouch, worstTouch / dt,
-                    touchTolerance / dt, worstApex, worstApexTolerance, worstRebound, worstTime / dt);
+        std::printf(
+            "[ drop %5.0f Hz ] %zu impacts; first 6 bounces: max |touch time - closed form| %.3g s "
+            "(%.2f steps; bound %.2f steps), max |apex - e^2k h| %.3g m (bound %.3g m), rebound speed "
+            "off by up to %.2f g dt, impact time - touch %.2f steps at most\n",
+            static_cast<double>(frequency), result.impacts.size(), worstTouch, worstTouch / dt, touchTolerance / dt,
+            worstApex, worstApexTolerance, worstRebound, worstTime / dt);
         // The first touch is on the exact parabola (leapfrog start): float rounding only.
         EXPECT_NEAR(result.impacts[0].touchTime, t0, 1e-5);
         EXPECT_NEAR(static_cast<double>(result.impacts[0].touchPosition.y), r, 1e-5);
@@ -135,9 +136,9 @@ TEST(BulletSimulation, PlainEulerStartLandsHalfAStepEarly) {
     simulation.leapfrogStart = false;
     const double dt = step(simulation);
     RigidBodySimulationResult result;
-    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 1.05f, 0), Vec3(0), 1.0f, settings, simulation,
-                                                     result),
-              Status::Ok);
+    ASSERT_EQ(
+        foresight::simulateProjectileRigidBody(scene, RVec3(0, 1.05f, 0), Vec3(0), 1.0f, settings, simulation, result),
+        Status::Ok);
     ASSERT_FALSE(result.impacts.empty());
     const double t0 = std::sqrt(2.0 / kG);
     // Height error g t dt / 2 at speed g t: dt / 2 early (to first order).
@@ -152,8 +153,8 @@ TEST(BulletSimulation, FrictionlessFloorKeepsHorizontalVelocity) {
     settings.radius = 0.1f;
     RigidBodySimulationSettings simulation;
     RigidBodySimulationResult result;
-    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 2, 0), Vec3(3, 1, -2), 3.0f, settings,
-                                                     simulation, result),
+    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 2, 0), Vec3(3, 1, -2), 3.0f, settings, simulation,
+                                                     result),
               Status::Ok);
     EXPECT_GE(result.impacts.size(), 4u);
     EXPECT_EQ(result.velocity.x, 3.0f);
@@ -224,8 +225,8 @@ TEST(BulletSimulation, WallReflectsWithRestitution) {
 
     // With gravity: the normal component reflects (on the face), gravity goes on.
     settings.gravity = Vec3(0, -foresight::kDefaultGravity, 0);
-    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 3, 0), Vec3(6, 2, 0), 0.6f, settings,
-                                                     simulation, result),
+    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 3, 0), Vec3(6, 2, 0), 0.6f, settings, simulation,
+                                                     result),
               Status::Ok);
     ASSERT_EQ(result.impacts.size(), 1u);
     EXPECT_NEAR(static_cast<double>(result.velocity.x), -0.7 * 6.0, 1e-4);
@@ -240,9 +241,9 @@ TEST(BulletSimulation, RestitutionZeroLandsAndStays) {
     settings.restitution = 0.0f;
     RigidBodySimulationSettings simulation;
     RigidBodySimulationResult result;
-    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0, 2, 0), Vec3(0), 2.0f, settings, simulation,
-                                                     result),
-              Status::Ok);
+    ASSERT_EQ(
+        foresight::simulateProjectileRigidBody(scene, RVec3(0, 2, 0), Vec3(0), 2.0f, settings, simulation, result),
+        Status::Ok);
     EXPECT_EQ(result.radius, static_cast<double>(0.02f));  // pointRadius
     ASSERT_EQ(result.impacts.size(), 1u);
     EXPECT_TRUE(result.atRest);
@@ -259,17 +260,17 @@ TEST(BulletSimulation, SamplesAndPartialLastStep) {
     simulation.frequency = 240.0f;
     RigidBodySimulationResult result;
     // 0.1 s = 24 steps exactly; 0.101 s = 24 steps and one of 1 ms.
-    ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0), Vec3(1, 5, 0), 0.1f, settings, simulation,
-                                                     result),
-              Status::Ok);
+    ASSERT_EQ(
+        foresight::simulateProjectileRigidBody(scene, RVec3(0), Vec3(1, 5, 0), 0.1f, settings, simulation, result),
+        Status::Ok);
     ASSERT_EQ(result.samples.size(), 25u);
     EXPECT_EQ(result.samples.front().event, TrajectoryEvent::Start);
     EXPECT_EQ(result.samples.back().event, TrajectoryEvent::End);
     EXPECT_EQ(result.samples.back().time, 0.1f);
     for (float t : {0.1f, 0.101f, 0.0f}) {
-        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, RVec3(0), Vec3(1, 5, 0), t, settings, simulation,
-                                                         result),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::simulateProjectileRigidBody(scene, RVec3(0), Vec3(1, 5, 0), t, settings, simulation, result),
+            Status::Ok);
         EXPECT_EQ(result.samples.size(), t == 0.101f ? 26u : t == 0.0f ? 2u : 25u);
         // Free flight on the exact parabola (leapfrog, including the short last step): float
         // rounding of ~25 position updates.
@@ -296,12 +297,12 @@ TEST(BulletSimulation, SceneUnchangedAndDeterministic) {
     RigidBodySimulationSettings simulation;
     RigidBodySimulationResult first, second;
     for (const RVec3& start : {RVec3(0, 2, 0), RVec3(-2, 2, 0)}) {
-        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, start, Vec3(3, 2, 0.5f), 3.0f, settings, simulation,
-                                                         first),
-                  Status::Ok);
-        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, start, Vec3(3, 2, 0.5f), 3.0f, settings, simulation,
-                                                         second),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::simulateProjectileRigidBody(scene, start, Vec3(3, 2, 0.5f), 3.0f, settings, simulation, first),
+            Status::Ok);
+        ASSERT_EQ(
+            foresight::simulateProjectileRigidBody(scene, start, Vec3(3, 2, 0.5f), 3.0f, settings, simulation, second),
+            Status::Ok);
         EXPECT_EQ(scene.objectCount(), objects);
         EXPECT_EQ(scene.world().getNumCollisionObjects(), bulletObjects);
         EXPECT_EQ(scene.dynamicsWorld().getNumConstraints(), 0);
@@ -332,7 +333,8 @@ TEST(BulletSimulation, RefusesBadInput) {
     RigidBodySimulationSettings simulation;
     RigidBodySimulationResult result;
     result.radius = 123.0;
-    const auto run = [&](RVec3 p, Vec3 v, float t, const ProjectileSettings& s, const RigidBodySimulationSettings& sim) {
+    const auto run = [&](RVec3 p, Vec3 v, float t, const ProjectileSettings& s,
+                         const RigidBodySimulationSettings& sim) {
         return foresight::simulateProjectileRigidBody(scene, p, v, t, s, sim, result);
     };
     EXPECT_EQ(run(RVec3(nan), Vec3(0), 1.0f, settings, simulation), Status::NonFiniteInput);
@@ -386,9 +388,9 @@ TEST(BulletSimulation, RefusesBadInput) {
 TEST(BulletSimulation, FastThrowsStayInATriangleRoom) {
     BulletScene scene;
     const double lo = -2.0, hi = 2.0, top = 3.0;
-    const RVec3 c[8] = {toR(DVec3(lo, 0, lo)), toR(DVec3(hi, 0, lo)), toR(DVec3(hi, 0, hi)), toR(DVec3(lo, 0, hi)),
-                        toR(DVec3(lo, top, lo)), toR(DVec3(hi, top, lo)), toR(DVec3(hi, top, hi)),
-                        toR(DVec3(lo, top, hi))};
+    const RVec3 c[8] = {toR(DVec3(lo, 0, lo)),   toR(DVec3(hi, 0, lo)),   toR(DVec3(hi, 0, hi)),
+                        toR(DVec3(lo, 0, hi)),   toR(DVec3(lo, top, lo)), toR(DVec3(hi, top, lo)),
+                        toR(DVec3(hi, top, hi)), toR(DVec3(lo, top, hi))};
     const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5}};
     std::vector<Triangle> room;
     for (const auto& f : faces) {
@@ -409,8 +411,8 @@ TEST(BulletSimulation, FastThrowsStayInATriangleRoom) {
                           random.uniform(lo + 0.5, hi - 0.5));
         const DVec3 velocity = random.direction() * random.uniform(10.0, 40.0);
         RigidBodySimulationResult result;
-        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, toR(start), toF(velocity), 2.0f, settings,
-                                                         simulation, result),
+        ASSERT_EQ(foresight::simulateProjectileRigidBody(scene, toR(start), toF(velocity), 2.0f, settings, simulation,
+                                                         result),
                   Status::Ok);
         impacts += static_cast<long>(result.impacts.size());
         bool outside = false;
@@ -427,8 +429,10 @@ TEST(BulletSimulation, FastThrowsStayInATriangleRoom) {
                           << " left the room";
         }
     }
-    std::printf("[ room ] 200 throws at 10 to 40 m/s, %ld escaped, %ld impacts; deepest penetration %.3g m "
-                "(radius %.3g m)\n", escaped, impacts, deepest, r);
+    std::printf(
+        "[ room ] 200 throws at 10 to 40 m/s, %ld escaped, %ld impacts; deepest penetration %.3g m "
+        "(radius %.3g m)\n",
+        escaped, impacts, deepest, r);
     EXPECT_EQ(escaped, 0);
     // CCD stops a fast sphere 0.2 r inside a surface (see bullet_simulation.h); the discrete
     // steps at most 0.5 r (its threshold) plus float rounding.
@@ -468,8 +472,9 @@ TEST(BulletSimulation, MatchesTheExactPredictor) {
                                                          simulated),
                   Status::Ok);
         ProjectileResult predicted;
-        ASSERT_EQ(foresight::predictProjectile(toR(start), toF(velocity), 3.0f, settings, &reference, points, predicted),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::predictProjectile(toR(start), toF(velocity), 3.0f, settings, &reference, points, predicted),
+            Status::Ok);
         std::vector<TrajectoryPoint> bounces;
         for (std::size_t k = 0; k < predicted.trajectorySize; ++k)
             if (points[k].event == TrajectoryEvent::Bounce) bounces.push_back(points[k]);
@@ -485,9 +490,10 @@ TEST(BulletSimulation, MatchesTheExactPredictor) {
         return std::array<double, 3>{v[v.size() / 2], v[v.size() * 9 / 10], v.back()};
     };
     const auto l = summary(landing), t1 = summary(firstTime), t2 = summary(secondTime);
-    std::printf("[ vs exact ] 100 throws: first landing point median %.3g m, 90%% %.3g m, max %.3g m; first bounce "
-                "time median %.3g s, max %.3g s; second bounce time median %.3g s, 90%% %.3g s, max %.3g s (dt %.3g s)\n",
-                l[0], l[1], l[2], t1[0], t1[2], t2[0], t2[1], t2[2], dt);
+    std::printf(
+        "[ vs exact ] 100 throws: first landing point median %.3g m, 90%% %.3g m, max %.3g m; first bounce "
+        "time median %.3g s, max %.3g s; second bounce time median %.3g s, 90%% %.3g s, max %.3g s (dt %.3g s)\n",
+        l[0], l[1], l[2], t1[0], t1[2], t2[0], t2[1], t2[2], dt);
     // Before the first bounce both follow the same parabola (leapfrog: exact), so the first
     // landing point differs by float rounding of Bullet's positions (~1e-6 m per step).
     EXPECT_LE(l[2], 2e-3);

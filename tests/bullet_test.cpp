@@ -154,9 +154,10 @@ struct Deviation {
     long casts = 0, hits = 0, mismatched = 0, sharedEdges = 0;
     double fraction = 0, position = 0, normal = 0, surfaceGap = 0;
     void print(const char* label) const {
-        std::printf("[ %s ] %ld casts, %ld hits, %ld hit/miss mismatches; max |d fraction * length| %.3g m, "
-                    "max position %.3g m, max normal %.3g, max gap %.3g m; %ld hits on a shared edge\n",
-                    label, casts, hits, mismatched, fraction, position, normal, surfaceGap, sharedEdges);
+        std::printf(
+            "[ %s ] %ld casts, %ld hits, %ld hit/miss mismatches; max |d fraction * length| %.3g m, "
+            "max position %.3g m, max normal %.3g, max gap %.3g m; %ld hits on a shared edge\n",
+            label, casts, hits, mismatched, fraction, position, normal, surfaceGap, sharedEdges);
     }
 };
 
@@ -175,8 +176,8 @@ bool normalOfTriangleAt(const std::vector<Triangle>& mesh, const DVec3& point, c
     return false;
 }
 
-void compare(const StaticWorld& reference, const BulletWorld& bullet, const SegmentCast& cast,
-             Deviation& dev, double positionTolerance, double normalTolerance, long maxMismatches,
+void compare(const StaticWorld& reference, const BulletWorld& bullet, const SegmentCast& cast, Deviation& dev,
+             double positionTolerance, double normalTolerance, long maxMismatches,
              const std::vector<Triangle>* mesh = nullptr) {
     CastHit expected, actual;
     const bool hitExpected = reference.castSegment(cast, expected);
@@ -198,7 +199,8 @@ void compare(const StaticWorld& reference, const BulletWorld& bullet, const Segm
     const double df = std::abs(static_cast<double>(expected.fraction) - static_cast<double>(actual.fraction)) * length;
     const double dp = glm::length(toD(expected.position) - toD(actual.position));
     double dn = glm::length(toD(expected.normal) - toD(actual.normal));
-    if (dn > normalTolerance && mesh != nullptr && normalOfTriangleAt(*mesh, toD(actual.position), toD(actual.normal))) {
+    if (dn > normalTolerance && mesh != nullptr &&
+        normalOfTriangleAt(*mesh, toD(actual.position), toD(actual.normal))) {
         ++dev.sharedEdges;
         dn = 0.0;
     }
@@ -213,8 +215,9 @@ void compare(const StaticWorld& reference, const BulletWorld& bullet, const Segm
                                      << ftest::describe(toD(cast.displacement)) << " radius " << cast.radius
                                      << " fractions " << expected.fraction << " / " << actual.fraction;
     EXPECT_LE(dn, normalTolerance) << "normals " << ftest::describe(toD(expected.normal)) << " vs "
-                                   << ftest::describe(toD(actual.normal)) << " at " << ftest::describe(toD(actual.position))
-                                   << " from " << ftest::describe(toD(cast.origin)) << " by "
+                                   << ftest::describe(toD(actual.normal)) << " at "
+                                   << ftest::describe(toD(actual.position)) << " from "
+                                   << ftest::describe(toD(cast.origin)) << " by "
                                    << ftest::describe(toD(cast.displacement));
     EXPECT_LT(glm::dot(toD(actual.normal), toD(cast.displacement)), 0.0);
 }
@@ -291,8 +294,8 @@ TEST(BulletWorld, SweptSpheresMatchStaticWorldOnPrimitives) {
         if (solidDistance(w.reference, origin) < radius + 1e-3) continue;
         const DVec3 displacement = random.direction() * random.uniform(0.05, 12.0);
         ++made;
-        compare(w.reference, bullet, SegmentCast{toR(origin), toF(displacement), static_cast<float>(radius)},
-                dev, 1e-4, 1e-3, 0);
+        compare(w.reference, bullet, SegmentCast{toR(origin), toF(displacement), static_cast<float>(radius)}, dev, 1e-4,
+                1e-3, 0);
     }
     dev.print("spheres on primitives");
     EXPECT_GT(dev.hits, 2000);
@@ -330,8 +333,8 @@ TEST(BulletWorld, SweptSpheresAgainstMeshesWithinBulletsSweepTolerance) {
             SegmentCast other = cast;
             other.radius = hitActual ? r + 1.1e-3f : std::max(0.0f, r - 1.1e-3f);
             const bool explained = w.reference.castSegment(other, ignored) == hitActual;
-            EXPECT_TRUE(explained) << "from " << ftest::describe(origin) << " by "
-                                   << ftest::describe(displacement) << " radius " << radius;
+            EXPECT_TRUE(explained) << "from " << ftest::describe(origin) << " by " << ftest::describe(displacement)
+                                   << " radius " << radius;
             ++grazes;
             continue;
         }
@@ -366,10 +369,11 @@ TEST(BulletWorld, SweptSpheresAgainstMeshesWithinBulletsSweepTolerance) {
         EXPECT_LE(normalError, 0.15);
         EXPECT_LT(glm::dot(toD(actual.normal), displacement), 0.0);
     }
-    std::printf("[ spheres on meshes ] %ld casts, %ld hits, %ld near-graze hit/miss differences; Bullet's "
-                "centre %.3g to %.3g m off touching, max distance to the exact hit centre %.3g m, max normal "
-                "error %.3g\n",
-                casts, hits, grazes, minGap, maxGap, maxPosition, maxNormal);
+    std::printf(
+        "[ spheres on meshes ] %ld casts, %ld hits, %ld near-graze hit/miss differences; Bullet's "
+        "centre %.3g to %.3g m off touching, max distance to the exact hit centre %.3g m, max normal "
+        "error %.3g\n",
+        casts, hits, grazes, minGap, maxGap, maxPosition, maxNormal);
     EXPECT_GT(hits, 2000);
     EXPECT_LE(grazes, casts / 100);
 }
@@ -393,9 +397,9 @@ TEST(BulletWorld, RaysAgainstMeshesMatchStaticWorld) {
 // Enumerated edge cases, each through both worlds (and against the expected answer).
 TEST(BulletWorld, EdgeCases) {
     TwinWorld w;
-    w.add(Plane{Vec3(0, 1, 0), 0});                          // floor y = 0
-    w.add(Sphere{RVec3(0, 3, 0), 1.0f});                     // ball centred 3 m up
-    w.add(OrientedBox{RVec3(5, 1, 0), Vec3(1, 1, 1)});       // crate x 4..6, y 0..2
+    w.add(Plane{Vec3(0, 1, 0), 0});                                            // floor y = 0
+    w.add(Sphere{RVec3(0, 3, 0), 1.0f});                                       // ball centred 3 m up
+    w.add(OrientedBox{RVec3(5, 1, 0), Vec3(1, 1, 1)});                         // crate x 4..6, y 0..2
     w.mesh = {Triangle{RVec3(-6, 2, -1), RVec3(-4, 2, -1), RVec3(-5, 2, 1)}};  // a shelf at y = 2
     w.finishMesh();
     const BulletWorld bullet(w.scene.world());
@@ -413,7 +417,8 @@ TEST(BulletWorld, EdgeCases) {
         {"zero length sphere on the floor", RVec3(1, 0.5f, 1), Vec3(0), 0.5f, false, 0, Vec3(0)},
         {"ray down onto the floor", RVec3(1, 1, 1), Vec3(0, -2, 0), 0.0f, true, 0.5f, Vec3(0, 1, 0)},
         {"ray starts on the floor, moves in", RVec3(1, 0, 1), Vec3(0.5f, -1, 0), 0.0f, true, 0, Vec3(0, 1, 0)},
-        {"ray starts 5 um behind the floor, moves in", RVec3(1, -5e-6f, 1), Vec3(0, -1, 0), 0.0f, true, 0, Vec3(0, 1, 0)},
+        {"ray starts 5 um behind the floor, moves in", RVec3(1, -5e-6f, 1), Vec3(0, -1, 0), 0.0f, true, 0,
+         Vec3(0, 1, 0)},
         {"ray starts on the floor, moves out", RVec3(1, 0, 1), Vec3(0.5f, 1, 0), 0.0f, false, 0, Vec3(0)},
         {"ray starts on the floor, parallel", RVec3(1, 0, 3), Vec3(3, 0, 0), 0.0f, false, 0, Vec3(0)},
         {"ray parallel 1 mm above the floor", RVec3(-2, 1e-3f, 1), Vec3(3, 0, 0), 0.0f, false, 0, Vec3(0)},
@@ -476,22 +481,22 @@ TEST(BulletWorld, StartsOnSurfacesMatchStaticWorld) {
     for (int i = 0; i < 3000; ++i) {
         DVec3 origin;
         switch (i % 3) {
-        case 0:  // on the floor
-            origin = DVec3(random.uniform(-9, 8), 0.0, random.uniform(-9, 9));
-            break;
-        case 1: {  // on a sphere
-            const Sphere& s = spheres[static_cast<std::size_t>(i / 3) % spheres.size()];
-            origin = toD(s.center) + random.direction() * static_cast<double>(s.radius);
-            break;
-        }
-        default: {  // on a box face
-            const OrientedBox& b = boxes[static_cast<std::size_t>(i / 3) % boxes.size()];
-            DVec3 local(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
-            const int axis = static_cast<int>(random.next() % 3);
-            local[axis] = (random.next() & 1) ? 1.0 : -1.0;
-            origin = toD(b.center) + ftest::toD(b.orientation) * (local * toD(b.halfExtents));
-            break;
-        }
+            case 0:  // on the floor
+                origin = DVec3(random.uniform(-9, 8), 0.0, random.uniform(-9, 9));
+                break;
+            case 1: {  // on a sphere
+                const Sphere& s = spheres[static_cast<std::size_t>(i / 3) % spheres.size()];
+                origin = toD(s.center) + random.direction() * static_cast<double>(s.radius);
+                break;
+            }
+            default: {  // on a box face
+                const OrientedBox& b = boxes[static_cast<std::size_t>(i / 3) % boxes.size()];
+                DVec3 local(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+                const int axis = static_cast<int>(random.next() % 3);
+                local[axis] = (random.next() & 1) ? 1.0 : -1.0;
+                origin = toD(b.center) + ftest::toD(b.orientation) * (local * toD(b.halfExtents));
+                break;
+            }
         }
         const DVec3 displacement = random.direction() * random.uniform(0.05, 6.0);
         compare(w.reference, bullet, SegmentCast{toR(origin), toF(displacement), 0.0f}, dev, 1e-4, 1e-3, 0, &w.mesh);
@@ -541,10 +546,13 @@ TEST(BulletWorld, ProjectilesStayInAClosedRoom) {
         deviations.push_back(glm::length(end - toD(viaStatic.position)));
     }
     std::sort(deviations.begin(), deviations.end());
-    const auto quantile = [&](double q) { return deviations[static_cast<std::size_t>(q * static_cast<double>(deviations.size() - 1))]; };
-    std::printf("[ projectiles ] 1000 throws of 3 s, %ld outside; landing distance BulletWorld vs StaticWorld: "
-                "median %.3g m, 90%% %.3g m, 99%% %.3g m, max %.3g m\n",
-                outside, quantile(0.5), quantile(0.9), quantile(0.99), deviations.back());
+    const auto quantile = [&](double q) {
+        return deviations[static_cast<std::size_t>(q * static_cast<double>(deviations.size() - 1))];
+    };
+    std::printf(
+        "[ projectiles ] 1000 throws of 3 s, %ld outside; landing distance BulletWorld vs StaticWorld: "
+        "median %.3g m, 90%% %.3g m, 99%% %.3g m, max %.3g m\n",
+        outside, quantile(0.5), quantile(0.9), quantile(0.99), deviations.back());
     EXPECT_EQ(outside, 0);
     // The two worlds differ by float rounding of the scene (~1e-6 m per hit); chaotic
     // trajectories (bounces off the boulder, corners) amplify it, so the bound is on most
@@ -582,9 +590,10 @@ TEST(BulletWorld, ProjectilesStayInAClosedRoom) {
     std::sort(ballDeviations.begin(), ballDeviations.end());
     // No bound on the landing distance here: balls rolling off the ramp, whose contacts Bullet
     // reports up to 1 mm early, end up elsewhere (the numbers are printed for the record).
-    std::printf("[ projectiles ] 150 balls of radius 0.1 m, %ld outside; landing distance BulletWorld vs "
-                "StaticWorld: median %.3g m, 90%% %.3g m, max %.3g m\n",
-                ballsOutside, ballDeviations[75], ballDeviations[135], ballDeviations.back());
+    std::printf(
+        "[ projectiles ] 150 balls of radius 0.1 m, %ld outside; landing distance BulletWorld vs "
+        "StaticWorld: median %.3g m, 90%% %.3g m, max %.3g m\n",
+        ballsOutside, ballDeviations[75], ballDeviations[135], ballDeviations.back());
     EXPECT_EQ(ballsOutside, 0);
 }
 
@@ -608,8 +617,8 @@ TEST(BulletWorld, CastsDoNotAllocate) {
         ProjectileSettings settings;
         for (int i = 0; i < 20; ++i) {
             settings.radius = (i % 2) ? 0.0f : 0.2f;
-            (void)foresight::predictProjectile(RVec3(0, 3, 0), toF(random.direction() * 10.0), 3.0f, settings,
-                                               &bullet, points, result);
+            (void)foresight::predictProjectile(RVec3(0, 3, 0), toF(random.direction() * 10.0), 3.0f, settings, &bullet,
+                                               points, result);
         }
     };
     run();  // warm-up
@@ -674,8 +683,9 @@ TEST(BulletWorld, MayTouchFirstTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
                 // The promise: swept spheres inside the capsule hit nothing.
                 for (int k = 0; k < 8; ++k) {
                     SegmentCast inside;
-                    const DVec3 from = a + d * random.uniform(0, 1) + random.direction() * random.uniform(0, 0.3) *
-                                                                       static_cast<double>(capsule.radius);
+                    const DVec3 from =
+                        a + d * random.uniform(0, 1) +
+                        random.direction() * random.uniform(0, 0.3) * static_cast<double>(capsule.radius);
                     const DVec3 to = a + d * random.uniform(0, 1);
                     inside.origin = toR(from);
                     inside.displacement = toF(to - from);
@@ -746,9 +756,10 @@ TEST(BulletWorld, MayTouchFirstTouchAndIsOnlyPlaneAnswerAsStaticWorld) {
             }
         }
     }
-    std::printf("[ bullet regions ] mayTouch: %d of %d as StaticWorld (%d clear); isOnlyPlane on the yard: %d of "
-                "%d as StaticWorld (%d promises)\n",
-                touchAgree, touchCases, clear, planeAgree, yardPlaneCases, promises);
+    std::printf(
+        "[ bullet regions ] mayTouch: %d of %d as StaticWorld (%d clear); isOnlyPlane on the yard: %d of "
+        "%d as StaticWorld (%d promises)\n",
+        touchAgree, touchCases, clear, planeAgree, yardPlaneCases, promises);
     // The shapes are the same floats in both worlds. StaticWorld offers a box whose bounds in the
     // box's frame meet the capsule's; Bullet one whose world bounds do: each set holds boxes the
     // other leaves out (rarely: a capsule that passes a box's corner).

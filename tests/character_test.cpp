@@ -64,8 +64,8 @@ TEST(Character, AcceleratedMatchesClosedForm) {
     ASSERT_EQ(foresight::predictAccelerated(start, a, 0.5f, out), Status::Ok);
     // p + v t + a t^2 / 2 = (1.5, 1 - 9.81/8, 2 + 0.25); v + a t = (3, -4.905, 5).
     const double ay = static_cast<double>(a.y);
-    EXPECT_VEC_NEAR(out.position, DVec3(1.5, 1.0 + ay * 0.125, 2.25), 2e-6); // float, values ~2
-    EXPECT_VEC_NEAR(out.velocity, DVec3(3.0, ay * 0.5, 5.0), 2e-6);          // float, values ~5
+    EXPECT_VEC_NEAR(out.position, DVec3(1.5, 1.0 + ay * 0.125, 2.25), 2e-6);  // float, values ~2
+    EXPECT_VEC_NEAR(out.velocity, DVec3(3.0, ay * 0.5, 5.0), 2e-6);           // float, values ~5
 }
 
 TEST(Character, AcceleratedWithZeroAccelerationEqualsLinear) {
@@ -84,7 +84,7 @@ TEST(Character, TimeZeroReturnsStartExactly) {
     const PointState start = makeState(RVec3(Real(1.25), Real(-3.5), Real(1e3)), Vec3(9.0f, -8.0f, 7.0f));
     PointState out = sentinel();
     ASSERT_EQ(foresight::predictLinear(start, 0.0f, out), Status::Ok);
-    EXPECT_EQ(out.position, start.position); // p + v * 0 is exactly p
+    EXPECT_EQ(out.position, start.position);  // p + v * 0 is exactly p
     EXPECT_EQ(out.velocity, start.velocity);
     out = sentinel();
     ASSERT_EQ(foresight::predictAccelerated(start, Vec3(1.0f, 2.0f, 3.0f), 0.0f, out), Status::Ok);
@@ -174,4 +174,4 @@ TEST(Character, StatusMessagesAreNeverNull) {
     }
 }
 
-} // namespace
+}  // namespace

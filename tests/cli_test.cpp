@@ -53,7 +53,7 @@ struct CliRun {
 /// Runs the CLI with `args`, feeding `input` on standard input, in `directory` (if not empty).
 /// Kills it after 20 s (a hang is a failure, not a stuck test run).
 CliRun runCli(const std::vector<std::string>& args, const std::string& input = std::string(),
-           const fs::path& directory = fs::path()) {
+              const fs::path& directory = fs::path()) {
     CliRun run;
     int in[2], out[2], err[2];
     if (pipe(in) != 0 || pipe(out) != 0 || pipe(err) != 0) {
@@ -84,7 +84,7 @@ CliRun runCli(const std::vector<std::string>& args, const std::string& input = s
     close(in[0]);
     close(out[1]);
     close(err[1]);
-    signal(SIGPIPE, SIG_IGN); // the child may exit without reading all of its input
+    signal(SIGPIPE, SIG_IGN);  // the child may exit without reading all of its input
 
     std::size_t written = 0;
     bool inOpen = true;
@@ -99,7 +99,8 @@ CliRun runCli(const std::vector<std::string>& args, const std::string& input = s
         if (inOpen) fds.push_back({in[1], POLLOUT, 0});
         if (outOpen) fds.push_back({out[0], POLLIN, 0});
         if (errOpen) fds.push_back({err[0], POLLIN, 0});
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
             kill(pid, SIGKILL);
             ADD_FAILURE() << "the CLI did not finish within 20 s";
@@ -164,7 +165,9 @@ protected:
         return path;
     }
     /// Runs `predict` on `scenario` written to a file.
-    CliRun predict(const std::string& scenario) const { return runCli({"predict", write("scenario.json", scenario).string()}); }
+    CliRun predict(const std::string& scenario) const {
+        return runCli({"predict", write("scenario.json", scenario).string()});
+    }
 
     fs::path mDir;
 };
@@ -226,7 +229,7 @@ TEST_F(cli, SpecExampleRunsWithExactValues) {
     const Json& turret = byId(output, "turret");
     const Json& q = turret["orientation"];
     const double sign = q["w"].get<double>() < 0 ? -1.0 : 1.0;
-    EXPECT_NEAR(sign * q["w"].get<double>(), std::cos(0.25), 1e-6); // float quaternion
+    EXPECT_NEAR(sign * q["w"].get<double>(), std::cos(0.25), 1e-6);  // float quaternion
     EXPECT_NEAR(sign * q["x"].get<double>(), 0.0, 1e-6);
     EXPECT_NEAR(sign * q["y"].get<double>(), std::sin(0.25), 1e-6);
     EXPECT_NEAR(sign * q["z"].get<double>(), 0.0, 1e-6);
@@ -244,19 +247,19 @@ TEST_F(cli, SteppedGrenadeHasStartPlusOnePointPerStep) {
     EXPECT_EQ(grenade["at_rest"], false);
     ASSERT_TRUE(grenade.contains("bounces"));
     const Json& trajectory = grenade["trajectory"];
-    ASSERT_EQ(trajectory.size(), 151u); // ceil(3 / 0.02) = 150 steps, plus the start
+    ASSERT_EQ(trajectory.size(), 151u);  // ceil(3 / 0.02) = 150 steps, plus the start
     EXPECT_EQ(trajectory.front()["event"], "start");
     EXPECT_EQ(trajectory.front()["t"], 0);
     EXPECT_EQ(vec(trajectory.front()["position"]), (std::array<double, 3>{0, 1.5, 0}));
     EXPECT_EQ(trajectory.back()["event"], "end");
-    EXPECT_NEAR(trajectory.back()["t"].get<double>(), 3.0, 1e-5); // float time
+    EXPECT_NEAR(trajectory.back()["t"].get<double>(), 3.0, 1e-5);  // float time
     int bounces = 0;
     for (const auto& point : trajectory) {
         const std::string event = point["event"];
         EXPECT_TRUE(event == "start" || event == "step" || event == "bounce" || event == "end") << event;
         if (event == "bounce") {
             ++bounces;
-            EXPECT_EQ(vec(point["normal"]), (std::array<double, 3>{0, 1, 0})); // the floor
+            EXPECT_EQ(vec(point["normal"]), (std::array<double, 3>{0, 1, 0}));  // the floor
         }
     }
     EXPECT_GT(bounces, 0);
@@ -278,9 +281,9 @@ TEST_F(cli, ExactDropBouncesAtTheClosedFormTime) {
     for (const auto& point : p["trajectory"]) {
         if (point["event"] != "bounce") continue;
         found = true;
-        EXPECT_NEAR(point["t"].get<double>(), impact, 1e-5); // float time
+        EXPECT_NEAR(point["t"].get<double>(), impact, 1e-5);  // float time
         EXPECT_NEAR(point["position"][1].get<double>(), 0.0, 1e-5);
-        EXPECT_NEAR(point["velocity"][1].get<double>(), 0.5 * 9.81 * impact, 1e-4); // e * g * t
+        EXPECT_NEAR(point["velocity"][1].get<double>(), 0.5 * 9.81 * impact, 1e-4);  // e * g * t
         EXPECT_EQ(vec(point["normal"]), (std::array<double, 3>{0, 1, 0}));
     }
     EXPECT_TRUE(found);
@@ -296,7 +299,7 @@ TEST_F(cli, StopAtFirstHitAndTrajectoryFalse) {
         R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
     const Json output = parseOutput(run);
     const Json& p = output["predictions"][0];
-    EXPECT_EQ(p["id"], 7); // integer ids echo as integers
+    EXPECT_EQ(p["id"], 7);  // integer ids echo as integers
     EXPECT_FALSE(p.contains("trajectory"));
     EXPECT_EQ(p["stopped_at_hit"], true);
     EXPECT_EQ(p["bounces"], 0);
@@ -314,7 +317,7 @@ TEST_F(cli, LongTrajectoriesAreComplete) {
     const Json output = parseOutput(run);
     const Json& p = output["predictions"][0];
     EXPECT_EQ(p["bounces"], 1000);
-    ASSERT_EQ(p["trajectory"].size(), 1002u); // start, 1000 bounces, end
+    ASSERT_EQ(p["trajectory"].size(), 1002u);  // start, 1000 bounces, end
     EXPECT_EQ(p["trajectory"].back()["event"], "end");
     EXPECT_NEAR(p["position"][1].get<double>(), 0.005, 1e-6);
 }
@@ -336,18 +339,20 @@ TEST_F(cli, CarExactArcAndTheArticleLoopDiffer) {
     const std::string car = R"("position": [0, 0, 0], "velocity": [0, 0, 10],
         "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": 2)";
     const CliRun run = predict(R"({"predictions": [
-        {"id": "iterative", "model": "vehicle", "method": "iterative", "iterations": 4, )" + car + R"(},
-        {"id": "exact", "model": "vehicle", )" + car + R"(}]})");
+        {"id": "iterative", "model": "vehicle", "method": "iterative", "iterations": 4, )" +
+                               car + R"(},
+        {"id": "exact", "model": "vehicle", )" +
+                               car + R"(}]})");
     const Json output = parseOutput(run);
     const auto iterative = vec(byId(output, "iterative")["position"]);
     const auto exact = vec(byId(output, "exact")["position"]);
-    EXPECT_EQ(byId(output, "exact")["method"], "exact"); // the default
+    EXPECT_EQ(byId(output, "exact")["method"], "exact");  // the default
     // The arc: radius v / w = 20 m, angle w t = 1 rad, turning +Z towards +X.
-    EXPECT_NEAR(exact[0], 20.0 * (1.0 - std::cos(1.0)), 1e-4); // float velocities, 2 s
+    EXPECT_NEAR(exact[0], 20.0 * (1.0 - std::cos(1.0)), 1e-4);  // float velocities, 2 s
     EXPECT_NEAR(exact[1], 0.0, 1e-6);
     EXPECT_NEAR(exact[2], 20.0 * std::sin(1.0), 1e-4);
     const double dx = iterative[0] - exact[0], dz = iterative[2] - exact[2];
-    EXPECT_GT(std::sqrt(dx * dx + dz * dz), 1.0); // the article's 4 steps are about 2 m off
+    EXPECT_GT(std::sqrt(dx * dx + dz * dz), 1.0);  // the article's 4 steps are about 2 m off
 }
 
 TEST_F(cli, WorldFrameAndInputQuaternionsAreNormalised) {
@@ -362,8 +367,8 @@ TEST_F(cli, WorldFrameAndInputQuaternionsAreNormalised) {
 }
 
 TEST_F(cli, NumbersPrintShort) {
-    const CliRun run = predict(scenarioWith(
-        R"({"model": "linear", "position": [0.1, 0.2, 0.3], "velocity": [0.1, 0.2, 0.3], "time": 0})"));
+    const CliRun run = predict(
+        scenarioWith(R"({"model": "linear", "position": [0.1, 0.2, 0.3], "velocity": [0.1, 0.2, 0.3], "time": 0})"));
     ASSERT_EQ(run.status, 0) << run.err;
     // Positions are doubles, velocities floats: both print as their shortest decimal.
     EXPECT_NE(run.out.find("\"position\": [0.1, 0.2, 0.3]"), std::string::npos) << run.out;
@@ -400,36 +405,42 @@ TEST_F(cli, EmptyPredictionsGiveAnEmptyResult) {
 // ---------------------------------------------------------------------------------------------
 // Meshes
 
-const char* kFloorObj = "# 20 x 20 floor at y = 0, a quad\n"
-                        "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 4 3 2\n";
+const char* kFloorObj =
+    "# 20 x 20 floor at y = 0, a quad\n"
+    "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 4 3 2\n";
 
 TEST_F(cli, MeshIsLoadedRelativeToTheScenarioFile) {
     write("level/floor.obj", kFloorObj);
-    const fs::path scenario = write("level/scenario.json", scenarioWith(
-        R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
-        R"({"meshes": [{"file": "floor.obj"}]})"));
+    const fs::path scenario = write(
+        "level/scenario.json",
+        scenarioWith(
+            R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
+            R"({"meshes": [{"file": "floor.obj"}]})"));
     // CliRun from elsewhere: the mesh is found next to the scenario, not in the current directory.
     const CliRun run = runCli({"predict", scenario.string()}, std::string(), kData);
     const Json output = parseOutput(run);
     const Json& p = output["predictions"][0];
     EXPECT_EQ(p["stopped_at_hit"], true);
-    EXPECT_NEAR(p["time"].get<double>(), std::sqrt(4.0 / 9.81), 1e-5); // sqrt(2 h / g), h = 2
+    EXPECT_NEAR(p["time"].get<double>(), std::sqrt(4.0 / 9.81), 1e-5);  // sqrt(2 h / g), h = 2
 }
 
 TEST_F(cli, MeshFromStandardInputIsRelativeToTheCurrentDirectory) {
     write("floor.obj", kFloorObj);
-    const CliRun run = runCli({"predict", "-"}, scenarioWith(
-        R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
-        R"({"meshes": [{"file": "floor.obj"}]})"), mDir);
+    const CliRun run = runCli(
+        {"predict", "-"},
+        scenarioWith(
+            R"({"model": "projectile", "position": [0, 2, 0], "velocity": [0, 0, 0], "time": 1, "stop_at_first_hit": true})",
+            R"({"meshes": [{"file": "floor.obj"}]})"),
+        mDir);
     const Json output = parseOutput(run);
     EXPECT_EQ(output["predictions"][0]["stopped_at_hit"], true);
 }
 
 TEST_F(cli, DegenerateMeshTrianglesAreSkippedWithAWarning) {
     write("floor.obj", std::string(kFloorObj) + "v 0 0 0\nf 1 5 5\n");
-    const CliRun run = predict(scenarioWith(
-        R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
-        R"({"meshes": [{"file": "floor.obj"}]})"));
+    const CliRun run =
+        predict(scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+                             R"({"meshes": [{"file": "floor.obj"}]})"));
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_NE(run.err.find("warning: world.meshes[0]"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("degenerate"), std::string::npos) << run.err;
@@ -437,7 +448,7 @@ TEST_F(cli, DegenerateMeshTrianglesAreSkippedWithAWarning) {
 
 struct MeshCase {
     const char* name;
-    const char* obj; // null: no file at all
+    const char* obj;  // null: no file at all
     const char* reason;
 };
 
@@ -448,9 +459,9 @@ class cli_mesh : public cli, public ::testing::WithParamInterface<MeshCase> {};
 TEST_P(cli_mesh, ExitsTwoNamingThePathAndTheReason) {
     const MeshCase& c = GetParam();
     if (c.obj != nullptr) write("mesh.obj", c.obj);
-    const CliRun run = predict(scenarioWith(
-        R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
-        R"({"meshes": [{"file": "mesh.obj"}]})"));
+    const CliRun run =
+        predict(scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+                             R"({"meshes": [{"file": "mesh.obj"}]})"));
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find("world.meshes[0].file"), std::string::npos) << run.err;
@@ -480,26 +491,26 @@ INSTANTIATE_TEST_SUITE_P(
 struct ErrorCase {
     const char* name;
     std::string scenario;
-    std::string expected; ///< must appear in standard error
+    std::string expected;  ///< must appear in standard error
 };
 
 std::string linear(const std::string& extra) {
     return scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1)" + extra + "}");
 }
 std::string projectile(const std::string& extra) {
-    return scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1)" + extra + "}");
+    return scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1)" + extra +
+                        "}");
 }
 std::string vehicle(const std::string& extra) {
     return scenarioWith(R"({"model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 1], "time": 1,
-        "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 1, 0])" + extra + "}");
+        "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 1, 0])" +
+                        extra + "}");
 }
 std::string orientation(const std::string& quaternion, const std::string& extra = std::string()) {
     return scenarioWith(R"({"model": "orientation", "orientation": )" + quaternion +
                         R"(, "angular_velocity": [0, 1, 0], "time": 1)" + extra + "}");
 }
-std::string world(const std::string& members) {
-    return R"({"world": {)" + members + R"(}, "predictions": []})";
-}
+std::string world(const std::string& members) { return R"({"world": {)" + members + R"(}, "predictions": []})"; }
 
 void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 
@@ -528,35 +539,48 @@ INSTANTIATE_TEST_SUITE_P(
                   "predictions[0].orientation.v: unknown key"},
         ErrorCase{"DuplicateKey", linear(R"(, "time": 2)"), "predictions[0].time: duplicate key"},
         // Types.
-        ErrorCase{"VectorOfStrings", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": "fast", "time": 1})"),
+        ErrorCase{"VectorOfStrings",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": "fast", "time": 1})"),
                   "predictions[0].velocity: expected 3 finite numbers"},
-        ErrorCase{"VectorOfTwo", scenarioWith(R"({"model": "linear", "position": [0, 0], "velocity": [1, 0, 0], "time": 1})"),
+        ErrorCase{"VectorOfTwo",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0], "velocity": [1, 0, 0], "time": 1})"),
                   "predictions[0].position: expected 3 finite numbers"},
-        ErrorCase{"TimeAsString", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": "1"})"),
+        ErrorCase{"TimeAsString",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": "1"})"),
                   "predictions[0].time: expected a finite number"},
-        ErrorCase{"BooleanAsNumber", projectile(R"(, "trajectory": 1)"), "predictions[0].trajectory: expected true or false"},
-        ErrorCase{"StopAtFirstHitAsString", projectile(R"(, "stop_at_first_hit": "yes")"), "predictions[0].stop_at_first_hit"},
-        ErrorCase{"IdAsObject", linear(R"(, "id": {"name": "x"})"), "predictions[0].id: expected a string or an integer"},
+        ErrorCase{"BooleanAsNumber", projectile(R"(, "trajectory": 1)"),
+                  "predictions[0].trajectory: expected true or false"},
+        ErrorCase{"StopAtFirstHitAsString", projectile(R"(, "stop_at_first_hit": "yes")"),
+                  "predictions[0].stop_at_first_hit"},
+        ErrorCase{"IdAsObject", linear(R"(, "id": {"name": "x"})"),
+                  "predictions[0].id: expected a string or an integer"},
         ErrorCase{"ModelAsNumber", scenarioWith(R"({"model": 3})"), "predictions[0].model: expected a string"},
         ErrorCase{"PredictionNotAnObject", scenarioWith("[1, 2]"), "predictions[0]: expected an object"},
         ErrorCase{"RootNotAnObject", "[]", "(root): expected a JSON object"},
         ErrorCase{"PredictionsMissing", R"({"world": {}})", "predictions: missing required field"},
         ErrorCase{"PredictionsNotAnArray", R"({"predictions": {}})", "predictions: expected an array"},
-        ErrorCase{"ShapesNotAnArray", world(R"("planes": {"normal": [0, 1, 0], "distance": 0})"), "world.planes: expected an array"},
+        ErrorCase{"ShapesNotAnArray", world(R"("planes": {"normal": [0, 1, 0], "distance": 0})"),
+                  "world.planes: expected an array"},
         // Non-finite numbers: 1e400 overflows a double; 1e39 overflows a float velocity.
-        ErrorCase{"HugeLiteral", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e400, 0, 0], "time": 1})"),
+        ErrorCase{"HugeLiteral",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e400, 0, 0], "time": 1})"),
                   "predictions[0].velocity[0]: expected a finite number"},
-        ErrorCase{"HugeLiteralInTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1e999})"),
+        ErrorCase{"HugeLiteralInTime",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1e999})"),
                   "predictions[0].time: expected a finite number"},
-        ErrorCase{"BeyondFloatRange", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e39, 0, 0], "time": 1})"),
+        ErrorCase{"BeyondFloatRange",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1e39, 0, 0], "time": 1})"),
                   "predictions[0].velocity: expected 3 finite numbers"},
-        ErrorCase{"NonFiniteGravity", R"({"gravity": [0, -1e400, 0], "predictions": []})", "gravity[1]: expected a finite number"},
+        ErrorCase{"NonFiniteGravity", R"({"gravity": [0, -1e400, 0], "predictions": []})",
+                  "gravity[1]: expected a finite number"},
         // Ranges.
-        ErrorCase{"NegativeTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1})"),
+        ErrorCase{"NegativeTime",
+                  scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": -1})"),
                   "predictions[0].time: "},
         ErrorCase{"ZeroStep", projectile(R"(, "step": 0)"), "predictions[0].step: "},
         ErrorCase{"NegativeStep", projectile(R"(, "step": -0.02)"), "predictions[0].step: "},
-        ErrorCase{"ZeroIterations", vehicle(R"(, "method": "iterative", "iterations": 0)"), "predictions[0].iterations: "},
+        ErrorCase{"ZeroIterations", vehicle(R"(, "method": "iterative", "iterations": 0)"),
+                  "predictions[0].iterations: "},
         ErrorCase{"IterationsAboveTheCap", vehicle(R"(, "method": "iterative", "iterations": 2097152)"),
                   "predictions[0].iterations: expected an integer in [1, 1048576]"},
         ErrorCase{"FractionalIterations", vehicle(R"(, "iterations": 2.5)"), "predictions[0].iterations: "},
@@ -570,67 +594,84 @@ INSTANTIATE_TEST_SUITE_P(
                   "predictions[0].orientation.w: expected a finite number"},
         ErrorCase{"QuaternionMissingComponent", orientation(R"({"w": 1, "x": 0, "y": 0})"),
                   "predictions[0].orientation.z: missing required field"},
-        ErrorCase{"QuaternionAsArray", orientation("[1, 0, 0, 0]"), "predictions[0].orientation: expected a quaternion"},
-        ErrorCase{"ZeroPlaneNormal", world(R"("planes": [{"normal": [0, 0, 0], "distance": 0}])"), "world.planes[0].normal: "},
-        ErrorCase{"ZeroSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": 0}])"), "world.spheres[0].radius: "},
-        ErrorCase{"NegativeSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": -1}])"), "world.spheres[0].radius: "},
+        ErrorCase{"QuaternionAsArray", orientation("[1, 0, 0, 0]"),
+                  "predictions[0].orientation: expected a quaternion"},
+        ErrorCase{"ZeroPlaneNormal", world(R"("planes": [{"normal": [0, 0, 0], "distance": 0}])"),
+                  "world.planes[0].normal: "},
+        ErrorCase{"ZeroSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": 0}])"),
+                  "world.spheres[0].radius: "},
+        ErrorCase{"NegativeSphereRadius", world(R"("spheres": [{"center": [0, 0, 0], "radius": -1}])"),
+                  "world.spheres[0].radius: "},
         ErrorCase{"FlatBox", world(R"("boxes": [{"center": [0, 0, 0], "half_extents": [1, 0, 1],
                                     "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}])"),
                   "world.boxes[0].half_extents: "},
         ErrorCase{"ZeroBoxOrientation", world(R"("boxes": [{"center": [0, 0, 0], "half_extents": [1, 1, 1],
                                     "orientation": {"w": 0, "x": 0, "y": 0, "z": 0}}])"),
                   "world.boxes[0].orientation: "},
-        ErrorCase{"DegenerateTriangle", world(R"("triangles": [[[0, 0, 0], [1, 0, 0], [2, 0, 0]]])"), "world.triangles[0]: "},
-        ErrorCase{"TriangleWithTwoVertices", world(R"("triangles": [[[0, 0, 0], [1, 0, 0]]])"), "world.triangles[0]: expected 3 vertices"},
+        ErrorCase{"DegenerateTriangle", world(R"("triangles": [[[0, 0, 0], [1, 0, 0], [2, 0, 0]]])"),
+                  "world.triangles[0]: "},
+        ErrorCase{"TriangleWithTwoVertices", world(R"("triangles": [[[0, 0, 0], [1, 0, 0]]])"),
+                  "world.triangles[0]: expected 3 vertices"},
         ErrorCase{"TriangleVertex", world(R"("triangles": [[[0, 0, 0], [1, 0, 0], [0, "a", 1]]])"),
                   "world.triangles[0][2]: expected 3 finite numbers"},
         // Names.
-        ErrorCase{"UnknownModel", scenarioWith(R"({"model": "teleport"})"), "predictions[0].model: unknown model \"teleport\""},
-        ErrorCase{"UnknownDeadReckoningAlgorithm", scenarioWith(R"({"model": "dead_reckoning", "algorithm": "DRM_FPW"})"),
+        ErrorCase{"UnknownModel", scenarioWith(R"({"model": "teleport"})"),
+                  "predictions[0].model: unknown model \"teleport\""},
+        ErrorCase{"UnknownDeadReckoningAlgorithm",
+                  scenarioWith(R"({"model": "dead_reckoning", "algorithm": "DRM_FPW"})"),
                   "predictions[0].algorithm: unknown algorithm \"DRM_FPW\" (expected STATIC, FPW"},
-        ErrorCase{"UnknownProjectileMethod", projectile(R"(, "method": "iterative")"), "predictions[0].method: unknown method"},
+        ErrorCase{"UnknownProjectileMethod", projectile(R"(, "method": "iterative")"),
+                  "predictions[0].method: unknown method"},
         ErrorCase{"UnknownVehicleMethod", vehicle(R"(, "method": "stepped")"), "predictions[0].method: unknown method"},
         // Engine-matched projectiles (docs/engines.md).
         ErrorCase{"EngineMissing", projectile(R"(, "method": "engine")"), "predictions[0].engine: "},
         ErrorCase{"EngineUnknownProfile", projectile(R"(, "method": "engine", "engine": {"profile": "havok"})"),
                   "predictions[0].engine.profile: unknown profile \"havok\""},
-        ErrorCase{"EngineZeroSubsteps", projectile(R"(, "method": "engine", "engine": {"profile": "rapier", "substeps": 0})"),
+        ErrorCase{"EngineZeroSubsteps",
+                  projectile(R"(, "method": "engine", "engine": {"profile": "rapier", "substeps": 0})"),
                   "predictions[0].engine.substeps: expected an integer in [1, 64]"},
         ErrorCase{"EngineNegativeDamping",
                   projectile(R"(, "method": "engine", "engine": {"profile": "jolt", "linear_damping": -1})"),
                   "predictions[0].engine.linear_damping: "},
-        ErrorCase{"EngineZeroTimestep", projectile(R"(, "method": "engine", "engine": {"profile": "jolt", "timestep": 0})"),
+        ErrorCase{"EngineZeroTimestep",
+                  projectile(R"(, "method": "engine", "engine": {"profile": "jolt", "timestep": 0})"),
                   "predictions[0].engine.timestep: "},
         ErrorCase{"EngineTriangleMeshNotBoolean",
                   projectile(R"(, "method": "engine", "engine": {"profile": "bullet", "triangle_mesh": 1})"),
                   "predictions[0].engine.triangle_mesh: "},
-        ErrorCase{"EngineUnknownField", projectile(R"(, "method": "engine", "engine": {"profile": "custom", "slop": 1})"),
+        ErrorCase{"EngineUnknownField",
+                  projectile(R"(, "method": "engine", "engine": {"profile": "custom", "slop": 1})"),
                   "predictions[0].engine.slop: unknown key"},
-        ErrorCase{"EngineOnExactMethod", projectile(R"(, "engine": {"profile": "jolt"})"), "predictions[0].engine: unknown key"},
+        ErrorCase{"EngineOnExactMethod", projectile(R"(, "engine": {"profile": "jolt"})"),
+                  "predictions[0].engine: unknown key"},
         ErrorCase{"UnknownFrame", orientation(R"({"w": 1, "x": 0, "y": 0, "z": 0})", R"(, "frame": "local")"),
                   "predictions[0].frame: unknown frame"},
         // Missing required fields.
         ErrorCase{"MissingTime", scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0]})"),
                   "predictions[0].time: missing required field"},
-        ErrorCase{"MissingModel", scenarioWith(R"({"position": [0, 0, 0]})"), "predictions[0].model: missing required field"},
+        ErrorCase{"MissingModel", scenarioWith(R"({"position": [0, 0, 0]})"),
+                  "predictions[0].model: missing required field"},
         ErrorCase{"MissingAcceleration",
                   scenarioWith(R"({"model": "accelerated", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1})"),
                   "predictions[0].acceleration: missing required field"},
-        ErrorCase{"MissingPlaneDistance", world(R"("planes": [{"normal": [0, 1, 0]}])"), "world.planes[0].distance: missing required field"},
+        ErrorCase{"MissingPlaneDistance", world(R"("planes": [{"normal": [0, 1, 0]}])"),
+                  "world.planes[0].distance: missing required field"},
         ErrorCase{"MissingMeshFile", world(R"("meshes": [{}])"), "world.meshes[0].file: missing required field"},
         // Invalid JSON: the position is named.
         ErrorCase{"InvalidJson", "{\"predictions\": [\n  {\"model\": linear}\n]}", "line 2, column"},
         ErrorCase{"TrailingGarbage", R"({"predictions": []} x)", "invalid JSON"},
-        ErrorCase{"EmptyFile", "", "invalid JSON"},
-        ErrorCase{"OnlyWhitespace", " \n\t ", "invalid JSON"},
+        ErrorCase{"EmptyFile", "", "invalid JSON"}, ErrorCase{"OnlyWhitespace", " \n\t ", "invalid JSON"},
         ErrorCase{"DeeplyNested", std::string(100000, '['), "nested deeper than"},
-        ErrorCase{"DeeplyNestedObjects", [] {
+        ErrorCase{"DeeplyNestedObjects",
+                  [] {
                       std::string text;
                       for (int i = 0; i < 50000; ++i) text += "{\"a\":";
                       return text;
-                  }(), "nested deeper than"},
+                  }(),
+                  "nested deeper than"},
         // Work caps: refused at once, not run for hours.
-        ErrorCase{"WorkCap", scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1e8})"),
+        ErrorCase{"WorkCap",
+                  scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [1, 0, 0], "time": 1e8})"),
                   "predictions[0]: "},
         ErrorCase{"WorkCapTinyStep", projectile(R"(, "step": 1e-30)"), "the cap is 1048576"}),
     [](const ::testing::TestParamInfo<ErrorCase>& param) { return std::string(param.param.name); });
@@ -653,8 +694,11 @@ TEST_F(cli, AWholeFileHasABudgetForWorkAndOutput) {
     CliRun run = predict(R"({"gravity": [0, 0, 0], "predictions": [)" + one + "," + one + "," + one + "]}");
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.out, "");
-    EXPECT_NE(run.err.find("predictions: the projectile trajectories have 3145653 points in all; one file may print at most 1048576"),
-              std::string::npos) << run.err;
+    EXPECT_NE(
+        run.err.find(
+            "predictions: the projectile trajectories have 3145653 points in all; one file may print at most 1048576"),
+        std::string::npos)
+        << run.err;
     EXPECT_LT(run.seconds, 5.0);
     // Nine of them, without trajectories: the work is capped too.
     std::string many = R"({"gravity": [0, 0, 0], "predictions": [)";
@@ -702,13 +746,15 @@ TEST_F(cli, UnreadableFilesNameThePathAndTheReason) {
 
 TEST_F(cli, BeyondThePrecisionEnvelopeIsRefusedNotWrong) {
     // At x = 1e16 a throw along +z used to end at z = -52.8 instead of 36.
-    CliRun run = predict(scenarioWith(R"({"model": "projectile", "position": [1e16, 1, 0], "velocity": [0, 5, 12], "time": 3})",
-                                      R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    CliRun run =
+        predict(scenarioWith(R"({"model": "projectile", "position": [1e16, 1, 0], "velocity": [0, 5, 12], "time": 3})",
+                             R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find("predictions[0]"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("precision envelope"), std::string::npos) << run.err;
-    run = runCli({"aim", "-"}, R"({"shots": [{"from": [0, 0, 0], "speed": 3e38, "target": {"position": [1000, 0, 0]}}]})");
+    run = runCli({"aim", "-"},
+                 R"({"shots": [{"from": [0, 0, 0], "speed": 3e38, "target": {"position": [1000, 0, 0]}}]})");
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.err.find("precision envelope"), std::string::npos) << run.err;
 }
@@ -719,7 +765,8 @@ TEST_F(cli, JsonIsReadWholeAndMessagesStayOnOneLine) {
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.err.find("a NUL byte at offset 19"), std::string::npos) << run.err;
     // A key holding a newline and escape codes is reported on one line, escaped.
-    run = predict(scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1, "bad\nkey\u001b[31m": 1})"));
+    run = predict(scenarioWith(
+        R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1, "bad\nkey\u001b[31m": 1})"));
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_NE(run.err.find("bad\\x0akey\\x1b[31m: unknown key"), std::string::npos) << run.err;
@@ -731,9 +778,9 @@ TEST_F(cli, DevicesAndPipesAreNeverReadWithoutEnd) {
     const fs::path fifo = mDir / "mesh.fifo";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     for (const std::string& mesh : {std::string("/dev/zero"), fifo.string()}) {
-        const CliRun run = predict(scenarioWith(
-            R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
-            R"({"meshes": [{"file": ")" + mesh + R"("}]})"));
+        const CliRun run =
+            predict(scenarioWith(R"({"model": "linear", "position": [0, 0, 0], "velocity": [0, 0, 0], "time": 1})",
+                                 R"({"meshes": [{"file": ")" + mesh + R"("}]})"));
         EXPECT_EQ(run.status, 2) << mesh;
         EXPECT_NE(run.err.find("not a regular file"), std::string::npos) << run.err;
     }
@@ -751,7 +798,8 @@ TEST_F(cli, ExtremeButValidInputsNeverPrintNaN) {
     // Finite inputs whose results may overflow: either a result without NaN/inf or exit 2.
     const std::vector<std::string> scenarios = {
         scenarioWith(R"({"model": "linear", "position": [1e308, 0, 0], "velocity": [3e38, 0, 0], "time": 3e38})"),
-        scenarioWith(R"({"model": "accelerated", "position": [0, 0, 0], "velocity": [0, 0, 0], "acceleration": [3e38, 3e38, 0], "time": 3e38})"),
+        scenarioWith(
+            R"({"model": "accelerated", "position": [0, 0, 0], "velocity": [0, 0, 0], "acceleration": [3e38, 3e38, 0], "time": 3e38})"),
         scenarioWith(R"({"model": "orientation", "orientation": {"w": 3e38, "x": 3e38, "y": 3e38, "z": 3e38},
             "angular_velocity": [3e38, 3e38, 3e38], "time": 3e38})"),
         scenarioWith(R"({"model": "orientation", "orientation": {"w": 1e-40, "x": 0, "y": 0, "z": 0},
@@ -760,7 +808,8 @@ TEST_F(cli, ExtremeButValidInputsNeverPrintNaN) {
             "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 3e38, 0], "time": 3e38})"),
         scenarioWith(R"({"model": "vehicle", "method": "iterative", "iterations": 1048576, "position": [0, 0, 0],
             "velocity": [0, 0, 3e38], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 1, 0], "time": 1})"),
-        scenarioWith(R"({"model": "projectile", "position": [0, 1e30, 0], "velocity": [3e38, 3e38, 0], "time": 1, "step": 0.5})"),
+        scenarioWith(
+            R"({"model": "projectile", "position": [0, 1e30, 0], "velocity": [3e38, 3e38, 0], "time": 1, "step": 0.5})"),
         R"({"gravity": [0, -3e38, 0], "predictions": [{"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0],
             "time": 1, "step": 0.5}], "world": {"planes": [{"normal": [0, 1, 0], "distance": 0}]}})",
     };
@@ -810,7 +859,8 @@ TEST_F(cli, UsageErrorsExitTwo) {
 TEST_F(cli, DemoPrintsATable) {
     const CliRun run = runCli({"demo"});
     ASSERT_EQ(run.status, 0) << run.err;
-    for (const char* text : {"runner", "grenade", "car", "difference", "bounces", "linear", "accelerated", "stepped", "exact"}) {
+    for (const char* text :
+         {"runner", "grenade", "car", "difference", "bounces", "linear", "accelerated", "stepped", "exact"}) {
         EXPECT_NE(run.out.find(text), std::string::npos) << text << "\n" << run.out;
     }
     // The car's exact arc ends at 20 (1 - cos 1), 0, 20 sin 1 = 9.194, 0, 16.829.
@@ -827,7 +877,7 @@ TEST_F(cli, DemoJsonHasEveryPredictionWithTrajectories) {
         EXPECT_TRUE(prediction.contains("model"));
         if (prediction.contains("trajectory")) ++trajectories;
     }
-    EXPECT_GE(trajectories, 2); // grenade stepped and exact
+    EXPECT_GE(trajectories, 2);  // grenade stepped and exact
     EXPECT_GE(byId(output, "grenade_stepped")["bounces"].get<int>(), 1);
 }
 
@@ -859,7 +909,7 @@ TEST_F(cli, DemoHasTheCourtyardGrenade) {
         // [-15, 15]^2 (a point projectile touches a wall at most), above the floor.
         EXPECT_GE(grenade["bounces"].get<int>(), 3) << id;
         const auto position = grenade["position"].get<std::vector<double>>();
-        EXPECT_GE(position[0], -15.0 - 1e-9) << id; // 1e-9: the skin a bounce leaves is ulps
+        EXPECT_GE(position[0], -15.0 - 1e-9) << id;  // 1e-9: the skin a bounce leaves is ulps
         EXPECT_LE(position[0], 15.0) << id;
         EXPECT_GE(position[1], -1e-9) << id;
         EXPECT_GE(position[2], -15.0) << id;
@@ -918,7 +968,7 @@ TEST_F(cli, DemoWritesFiles) {
     const fs::path scenario = mDir / "scenario.json";
     const CliRun run = runCli({"demo", "--json", json.string(), "--scenario", scenario.string()});
     ASSERT_EQ(run.status, 0) << run.err;
-    EXPECT_NE(run.out.find("difference"), std::string::npos); // the table still goes to stdout
+    EXPECT_NE(run.out.find("difference"), std::string::npos);  // the table still goes to stdout
     EXPECT_TRUE(Json::accept(readFile(json)));
     EXPECT_EQ(readFile(scenario), readFile(kData / "demo_scenario.json"));
     // The level mesh goes beside the scenario, the same bytes as `foresight level --obj`; so
@@ -963,17 +1013,17 @@ TEST_F(cli, LevelWritesEveryFormatAndSaysWhat) {
 TEST_F(cli, LevelRefusesBadUsageWithStatusTwo) {
     struct Case {
         std::vector<std::string> args;
-        std::string message; ///< part of standard error
+        std::string message;  ///< part of standard error
     };
     const std::string missingDir = (mDir / "no-such-dir" / "level.obj").string();
     const std::vector<Case> cases{
-        {{"level"}, "nothing to write"},                                  // no output file
-        {{"level", "--room"}, "nothing to write"},                        // still none
+        {{"level"}, "nothing to write"},            // no output file
+        {{"level", "--room"}, "nothing to write"},  // still none
         {{"level", "--gltf", (mDir / "x.glb").string()}, "x.glb: expected a file name ending in .gltf"},
         {{"level", "--glb", (mDir / "x.gltf").string()}, "x.gltf: expected a file name ending in .glb"},
         {{"level", "--obj", missingDir}, missingDir + ": cannot write"},  // unwritable
         {{"level", "--room-size", "1", "0", "1", "--obj", (mDir / "r.obj").string()}, "--room-size"},
-        {{"level", "--room-size", "1", "2", "--obj", (mDir / "r.obj").string()}, "room-size"}, // 2 numbers
+        {{"level", "--room-size", "1", "2", "--obj", (mDir / "r.obj").string()}, "room-size"},  // 2 numbers
         {{"level", "--frobnicate"}, "frobnicate"},
     };
     for (const auto& c : cases) {
@@ -991,7 +1041,7 @@ TEST_F(cli, AccuracyPrintsTheTables) {
     EXPECT_NE(run.out.find("Projectile"), std::string::npos) << run.out;
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // compare: the predictions against a Bullet rigid body (built with the Bullet backend)
@@ -1071,7 +1121,10 @@ TEST_F(cli, CompareRefusesBadUsageWithStatusTwo) {
         {{"compare", (mDir / "missing.json").string()}, "missing.json: cannot read"},
         {{"compare", file.string(), "--frequency", "100"}, "--frequency must be between 240 and 100000"},
         {{"compare", file.string(), "--builtin"}, "either FILE or --builtin"},
-        {{"compare", write("bad.json", scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 1], "time": 1})")).string()},
+        {{"compare",
+          write("bad.json",
+                scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 1], "time": 1})"))
+              .string()},
          "predictions[0].velocity"},
     };
     for (const auto& c : cases) {
@@ -1083,31 +1136,47 @@ TEST_F(cli, CompareRefusesBadUsageWithStatusTwo) {
 }
 
 TEST_F(cli, CompareEngineRefusesWhatTheHarnessesCannotBuild) {
-    const std::string box = R"({"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 0.9659258, "x": 0.2588190, "y": 0, "z": 0}})";
-    const std::string throwJson = R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 3, "radius": 0.1})";
+    const std::string box =
+        R"({"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 0.9659258, "x": 0.2588190, "y": 0, "z": 0}})";
+    const std::string throwJson =
+        R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 3, "radius": 0.1})";
     struct Case {
         std::vector<std::string> args;
         const char* message;
     };
-    const fs::path good = write("good.json", scenarioWith(throwJson, R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
+    const fs::path good =
+        write("good.json", scenarioWith(throwJson, R"({"planes": [{"normal": [0, 1, 0], "distance": 0}]})"));
     const Case cases[] = {
         {{"compare", good.string(), "--engine", "havok"}, "unknown --engine \"havok\"; expected one of jolt, physx"},
         {{"compare", "--builtin", "--engine", "jolt"}, "--engine compares a scenario FILE"},
         {{"compare", "--engine", "jolt"}, "expected a scenario FILE"},
-        {{"compare", write("sphere.json", scenarioWith(throwJson, R"({"spheres": [{"center": [0, 0, 5], "radius": 1}]})")).string(),
+        {{"compare",
+          write("sphere.json", scenarioWith(throwJson, R"({"spheres": [{"center": [0, 0, 5], "radius": 1}]})"))
+              .string(),
           "--engine", "jolt"},
          "world.spheres: compare --engine sends planes and boxes"},
-        {{"compare", write("tri.json", scenarioWith(throwJson, R"({"triangles": [[[0, 0, 0], [1, 0, 0], [0, 0, 1]]]})")).string(),
+        {{"compare",
+          write("tri.json", scenarioWith(throwJson, R"({"triangles": [[[0, 0, 0], [1, 0, 0], [0, 0, 1]]]})")).string(),
           "--engine", "physx"},
          "world.triangles: compare --engine sends planes and boxes"},
-        {{"compare", write("tilted.json", scenarioWith(throwJson, R"({"boxes": [)" + box + "]}")).string(), "--engine", "box2d"},
+        {{"compare", write("tilted.json", scenarioWith(throwJson, R"({"boxes": [)" + box + "]}")).string(), "--engine",
+          "box2d"},
          "world.boxes[0].orientation: box2d runs in the x-y plane"},
-        {{"compare", write("long.json", scenarioWith(R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 4000})")).string(),
+        {{"compare",
+          write(
+              "long.json",
+              scenarioWith(R"({"model": "projectile", "position": [0, 1.5, 0], "velocity": [1, 6, 5], "time": 4000})"))
+              .string(),
           "--engine", "jolt"},
          "predictions[0].time: the engine would take"},
-        {{"compare", good.string(), "--engine", "jolt", "--harness-dir", (mDir / "nowhere").string()}, "cannot run Jolt"},
+        {{"compare", good.string(), "--engine", "jolt", "--harness-dir", (mDir / "nowhere").string()},
+         "cannot run Jolt"},
         {{"compare",
-          write("rounded.json", scenarioWith(throwJson, R"({"boxes": [{"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": 0.05}]})"))
+          write(
+              "rounded.json",
+              scenarioWith(
+                  throwJson,
+                  R"({"boxes": [{"center": [0, 1, 6], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": 0.05}]})"))
               .string(),
           "--engine", "physx"},
          "world.boxes[0].rounding: physx builds sharp boxes here"},
@@ -1180,7 +1249,8 @@ TEST_F(cli, CompareEngineBuildsJoltBoxesWithTheirRounding) {
     const std::pair<const char*, const char*> cases[] = {{"0", "[1, 5, 7]"}, {"0.05", "[1, 6, 8]"}};
     for (const auto& [rounding, velocity] : cases) {
         const std::string scenario = scenarioWith(
-            std::string(R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": )") +
+            std::string(
+                R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": )") +
                 velocity + R"(, "time": 3, "radius": 0.1, "restitution": 0.5, "friction": 0.3})",
             std::string(R"({"planes": [{"normal": [0, 1, 0], "distance": 0}],
                 "boxes": [{"center": [0.4, 0.6, 7], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": )") +
@@ -1198,7 +1268,8 @@ TEST_F(cli, CompareBuiltinPrintsTheReadmeTable) {
     if (!compareIsBuilt()) GTEST_SKIP() << "foresight was built without Bullet";
     const CliRun run = runCli({"compare", "--builtin"});
     ASSERT_EQ(run.status, 0) << run.err;
-    for (const char* scene : {"| flat floor |", "| wall |", "| ramp |", "| stairs |", "| room mesh |", "| demo level |"})
+    for (const char* scene :
+         {"| flat floor |", "| wall |", "| ramp |", "| stairs |", "| room mesh |", "| demo level |"})
         EXPECT_NE(run.out.find(scene), std::string::npos) << scene;
     // On the flat floor every exact throw ends within a centimetre of the physics ("Within 1 cm"
     // column: stepped / exact / Bullet's own), the article's loop none.
@@ -1252,13 +1323,14 @@ TEST_F(cli, PredictSvgDrawsEveryPathInBothViewsAndKeepsTheJson) {
 // A plane's own material: refused out of range with its path; the engine method combines it
 // with the projectile's (Jolt: the larger restitution), the exact method ignores it.
 TEST_F(cli, ShapeMaterialsReachTheEngineMethodOnly) {
-    const std::string bad = scenarioWith(
-        R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0], "time": 1})",
-        R"({"planes": [{"normal": [0, 1, 0], "distance": 0, "restitution": 1.5}],
+    const std::string bad =
+        scenarioWith(R"({"model": "projectile", "position": [0, 1, 0], "velocity": [0, 0, 0], "time": 1})",
+                     R"({"planes": [{"normal": [0, 1, 0], "distance": 0, "restitution": 1.5}],
             "boxes": [{"center": [0, 1, 5], "half_extents": [1, 1, 1], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "friction": -1}]})");
     const CliRun refused = runCli({"predict", write("bad.json", bad).string()});
     EXPECT_EQ(refused.status, 2);
-    EXPECT_NE(refused.err.find("world.planes[0].restitution: expected a restitution in [0, 1]"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("world.planes[0].restitution: expected a restitution in [0, 1]"), std::string::npos)
+        << refused.err;
     EXPECT_NE(refused.err.find("world.boxes[0].friction: expected a friction >= 0"), std::string::npos) << refused.err;
 
     const auto drop = [&](const char* world, const char* method) {
@@ -1301,9 +1373,12 @@ TEST_F(cli, PicturesFarFromTheOriginFinishWithoutNaN) {
     // A walk drawn at x = 1e16 stopped the tick loop from advancing (a hang with growing memory);
     // at 1e308 it wrote "-nan" into the SVG. A far sphere must not spoil the picture either.
     const std::vector<std::string> scenarios = {
-        scenarioWith(R"({"id": "walk", "model": "linear", "position": [1e16, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
-        scenarioWith(R"({"id": "walk", "model": "linear", "position": [1e308, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
-        scenarioWith(R"({"id": "walk", "model": "linear", "position": [-1e308, 1, -1e308], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(
+            R"({"id": "walk", "model": "linear", "position": [1e16, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(
+            R"({"id": "walk", "model": "linear", "position": [1e308, 1, 0], "velocity": [0, 0, 1], "time": 2})"),
+        scenarioWith(
+            R"({"id": "walk", "model": "linear", "position": [-1e308, 1, -1e308], "velocity": [0, 0, 1], "time": 2})"),
         scenarioWith(R"({"id": "lob", "model": "projectile", "position": [0, 1, 0], "velocity": [0, 5, 4], "time": 2})",
                      R"({"spheres": [{"center": [1e308, 0, 0], "radius": 1}]})"),
     };
@@ -1429,16 +1504,19 @@ TEST_F(cli, PlanVelocitiesEndWithinTheRadiusWhenPredicted) {
         EXPECT_LE(plan.at("speed").get<double>(), 20.0 * (1 + 1e-6));
         ASSERT_TRUE(plan.at("trajectory").is_array());
         EXPECT_EQ(plan["trajectory"].back().at("event"), "end");
-        const Json scenario = {
-            {"world", Json::parse(kPlanDocument).at("world")},
-            {"predictions",
-             {{{"model", "projectile"}, {"position", {0, 1.5, 0}}, {"velocity", plan.at("velocity")},
-               {"time", 3}, {"restitution", 0.5}, {"trajectory", false}}}}};
+        const Json scenario = {{"world", Json::parse(kPlanDocument).at("world")},
+                               {"predictions",
+                                {{{"model", "projectile"},
+                                  {"position", {0, 1.5, 0}},
+                                  {"velocity", plan.at("velocity")},
+                                  {"time", 3},
+                                  {"restitution", 0.5},
+                                  {"trajectory", false}}}}};
         const Json predicted = parseOutput(predict(scenario.dump()));
         const Json& end = predicted.at("predictions").at(0).at("position");
         const double dx = end[0].get<double>() - 1, dy = end[1].get<double>(), dz = end[2].get<double>() - 8;
         EXPECT_LE(std::sqrt(dx * dx + dy * dy + dz * dz), 0.4) << plan.dump();
-        EXPECT_EQ(end, plan.at("position")); // the same prediction, printed the same way
+        EXPECT_EQ(end, plan.at("position"));  // the same prediction, printed the same way
     }
     // Out of reach (300 m at 10 m/s for 2 s): no plan, not an error; how close it came.
     const Json& far = output["throws"][1];
@@ -1470,11 +1548,11 @@ TEST_F(cli, PlanRefusesBadInputNamingEveryPath) {
     EXPECT_EQ(missing.status, 2);
     EXPECT_NE(missing.err.find("throws[0].target: missing required field"), std::string::npos) << missing.err;
     EXPECT_NE(missing.err.find("throws[0].fuse: missing required field"), std::string::npos) << missing.err;
-    const CliRun cap = runCli({"plan", "-"},
-                              R"({"throws": [{"start": [0, 1, 0], "target": [1, 0, 1], "fuse": 1e6, "max_speed": 5}]})");
+    const CliRun cap = runCli(
+        {"plan", "-"}, R"({"throws": [{"start": [0, 1, 0], "target": [1, 0, 1], "fuse": 1e6, "max_speed": 5}]})");
     EXPECT_EQ(cap.status, 2);
     EXPECT_NE(cap.err.find("throws[0]: too many steps"), std::string::npos) << cap.err;
-    EXPECT_EQ(runCli({"plan"}).status, 2); // usage: FILE is required
+    EXPECT_EQ(runCli({"plan"}).status, 2);  // usage: FILE is required
 }
 
 // One prediction of a 20000 s fuse at 0.02 s fits the step cap, but 400 of them (2^24 steps in
@@ -1512,7 +1590,7 @@ TEST_F(cli, PlanNowhereNearPrintsNull) {
     EXPECT_EQ(far.at("closest_velocity").size(), 3u);
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // aim: firing solutions (docs/aim-format.md). Each solution is checked with the
@@ -1653,7 +1731,7 @@ TEST_F(cli, AimErrorsNameTheJsonPathAndExitTwo) {
     EXPECT_EQ(runCli({"aim", "-"}, R"({"shots": []})").out, "{\"shots\": []}\n");
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // dead_reckoning: the DIS models through `foresight predict` (geocentric positions, 0.01 m).
@@ -1678,21 +1756,21 @@ std::string disOrientation(double psiDeg, double thetaDeg, double phiDeg) {
     const double x = cz * cy * sx - sz * sy * cx;
     const double y = cz * sy * cx + sz * cy * sx;
     const double z = sz * cy * cx - cz * sy * sx;
-    return R"({"w": )" + jsonNumber(w) + R"(, "x": )" + jsonNumber(x) + R"(, "y": )" + jsonNumber(y) +
-           R"(, "z": )" + jsonNumber(z) + "}";
+    return R"({"w": )" + jsonNumber(w) + R"(, "x": )" + jsonNumber(x) + R"(, "y": )" + jsonNumber(y) + R"(, "z": )" +
+           jsonNumber(z) + "}";
 }
 
 /// open-dis-java's espdu4 (sign +1, DR1-DR5) or espdu8 (sign -1, DR1, DR6-DR9), 0.5 s ahead.
 std::string towersHines(const std::string& id, const std::string& algorithm, double sign) {
     const double r = 3.14159265358979323846 / 180.0;
-    return R"({"id": ")" + id + R"(", "model": "dead_reckoning", "algorithm": ")" + algorithm +
-           R"(", "position": [)" + jsonNumber(-sign * 6378137.0) + ", " + jsonNumber(-sign * 5.0) + ", " +
-           jsonNumber(-sign * 10.0) + R"(], "velocity": [30, 35, 40], "acceleration": [-80, -85, -90], "orientation": )" +
+    return R"({"id": ")" + id + R"(", "model": "dead_reckoning", "algorithm": ")" + algorithm + R"(", "position": [)" +
+           jsonNumber(-sign * 6378137.0) + ", " + jsonNumber(-sign * 5.0) + ", " + jsonNumber(-sign * 10.0) +
+           R"(], "velocity": [30, 35, 40], "acceleration": [-80, -85, -90], "orientation": )" +
            disOrientation(15, 20, 25) + R"(, "angular_velocity": [)" + jsonNumber(sign * 60 * r) + ", " +
            jsonNumber(sign * 65 * r) + ", " + jsonNumber(sign * 70 * r) + R"(], "time": 0.5})";
 }
 
-} // namespace
+}  // namespace
 
 TEST_F(cli, DeadReckoningReproducesTheTowersAndHinesCasesAtGeocentricScale) {
     struct Case {
@@ -1716,7 +1794,8 @@ TEST_F(cli, DeadReckoningReproducesTheTowersAndHinesCasesAtGeocentricScale) {
         {"dr9", "FVB", -1, {6378144.46, 9.62, 18.47}, {-10, -7.5, -5}},
     };
     std::string predictions;
-    for (const Case& c : cases) predictions += (predictions.empty() ? "" : ", ") + towersHines(c.id, c.algorithm, c.sign);
+    for (const Case& c : cases)
+        predictions += (predictions.empty() ? "" : ", ") + towersHines(c.id, c.algorithm, c.sign);
     const CliRun run = predict(R"({"predictions": [)" + predictions + "]}");
     ASSERT_EQ(run.status, 0) << run.err;
     const Json output = parseOutput(run);
@@ -1788,15 +1867,14 @@ TEST_F(cli, DeadReckoningFieldsAreRequiredWhenTheAlgorithmUsesThem) {
          "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "time": 1}]})");
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.out, "");
-    for (const char* line : {"predictions[0].acceleration: missing required field",
-                             "predictions[0].angular_velocity: missing required field",
-                             "predictions[1].algorithm: unknown algorithm \"rvb\"",
-                             "predictions[2].algorithm: missing required field",
-                             "predictions[2].orientation: quaternion has zero length",
-                             "predictions[2].time: time must be >= 0 (got -1)",
-                             "predictions[3].acceleration: expected 3 finite numbers",
-                             "predictions[3].angular_velocty: unknown key (did you mean \"angular_velocity\"?)",
-                             "predictions[4].algorithm: expected a string, got a number"}) {
+    for (const char* line :
+         {"predictions[0].acceleration: missing required field",
+          "predictions[0].angular_velocity: missing required field",
+          "predictions[1].algorithm: unknown algorithm \"rvb\"", "predictions[2].algorithm: missing required field",
+          "predictions[2].orientation: quaternion has zero length", "predictions[2].time: time must be >= 0 (got -1)",
+          "predictions[3].acceleration: expected 3 finite numbers",
+          "predictions[3].angular_velocty: unknown key (did you mean \"angular_velocity\"?)",
+          "predictions[4].algorithm: expected a string, got a number"}) {
         EXPECT_NE(run.err.find(line), std::string::npos) << "missing: " << line << "\n" << run.err;
     }
 }
@@ -1823,12 +1901,14 @@ const std::string kDangerFile = R"({"predictions": [
 std::string dangerWith(const std::string& projectileExtra, const std::string& vehicleExtra = std::string(),
                        const std::string& root = std::string()) {
     return R"({)" + root + R"("predictions": [
-      {"model": "projectile", "position": [0, 1, 0], "velocity": [4, 6, 0], "time": 1)" + projectileExtra + R"(},
+      {"model": "projectile", "position": [0, 1, 0], "velocity": [4, 6, 0], "time": 1)" +
+           projectileExtra + R"(},
       {"model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
-       "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0], "time": 5)" + vehicleExtra + "}]}";
+       "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0, 0], "time": 5)" +
+           vehicleExtra + "}]}";
 }
 
-} // namespace
+}  // namespace
 
 TEST_F(cli, DangerAnswersMatchTheClosedForms) {
     const CliRun run = runCli({"danger", write("danger.json", kDangerFile).string()});
@@ -1845,7 +1925,7 @@ TEST_F(cli, DangerAnswersMatchTheClosedForms) {
     ASSERT_EQ(grenade.at("points").size(), 3u);
     const Json& inside = grenade["points"][0];
     EXPECT_EQ(inside.at("danger_start"), 1);
-    EXPECT_EQ(inside.at("safe"), false);  // at 1.5 s, within 3 m of the centre
+    EXPECT_EQ(inside.at("safe"), false);               // at 1.5 s, within 3 m of the centre
     EXPECT_EQ(grenade["points"][1].at("safe"), true);  // before the fuse
     const Json& far = grenade["points"][2];
     EXPECT_TRUE(far.at("danger_start").is_null());
@@ -1861,8 +1941,8 @@ TEST_F(cli, DangerAnswersMatchTheClosedForms) {
     EXPECT_EQ(guard.at("id"), "guard");
     EXPECT_EQ(guard.at("contact"), true);
     const double contact = guard.at("contact_time").get<double>();
-    EXPECT_LE(contact, 2.73 + 1e-6);           // never later
-    EXPECT_GE(contact, 2.73 - 1e-4 - 1e-6);    // the tolerance (1 mm at 10 m/s)
+    EXPECT_LE(contact, 2.73 + 1e-6);         // never later
+    EXPECT_GE(contact, 2.73 - 1e-4 - 1e-6);  // the tolerance (1 mm at 10 m/s)
     EXPECT_NEAR(guard.at("closest_approach").at("distance").get<double>(), -0.5, 1e-5);
     // A capsule 10 m to the side: never touched; closest 10 - 0.9 - 0.5 at t = 0 (constant).
     const Json& side = car["characters"][1];
@@ -1931,11 +2011,12 @@ namespace {
 // the circle at (50, 0, 30), over a horizon of `time` seconds.
 std::string circlingCar(const std::string& time) {
     return R"({"predictions": [{"id": "car", "model": "vehicle", "position": [0, 0, 0], "velocity": [0, 0, 10],
-      "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": )" + time + R"(,
+      "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "angular_velocity": [0, 0.5, 0], "time": )" +
+           time + R"(,
       "characters": [{"id": "guard", "position": [50, 0, 30], "velocity": [0, 0, 0], "radius": 0.5}]}]})";
 }
 
-} // namespace
+}  // namespace
 
 // The closest approach is the first turn's, whatever the horizon (it was 4.92 s up to 20 s,
 // 17.49 s at 30 s and 92.89 s at 100 s); a horizon too long for the tolerance names "time".
@@ -1969,16 +2050,21 @@ TEST_F(cli, DangerRefusesBadInputNamingThePath) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {dangerWith(""), "predictions[0].blast_radius: missing required field"},
         {dangerWith(R"(, "blast_radius": -1)"), "predictions[0].blast_radius: must be >= 0 (got -1)"},
-        {dangerWith(R"(, "blast_radius": 2, "contact_radius": "x")"), "predictions[0].contact_radius: expected a finite number"},
-        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0]}])"), "predictions[0].points[0].position: expected 3 finite numbers"},
-        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0, 0], "tme": 1}])"), "predictions[0].points[0].tme: unknown key"},
+        {dangerWith(R"(, "blast_radius": 2, "contact_radius": "x")"),
+         "predictions[0].contact_radius: expected a finite number"},
+        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0]}])"),
+         "predictions[0].points[0].position: expected 3 finite numbers"},
+        {dangerWith(R"(, "blast_radius": 2, "points": [{"position": [0, 0, 0], "tme": 1}])"),
+         "predictions[0].points[0].tme: unknown key"},
         {dangerWith(R"(, "blast_radius": 2, "veloctiy": [0, 0, 0])"), "predictions[0].veloctiy: unknown key"},
         {dangerWith(R"(, "blast_radius": 2)", R"(, "characters": [{"position": [0, 0, 9], "velocity": [0, 0, 0]}])"),
          "predictions[1].characters[0].radius: missing required field"},
-        {dangerWith(R"(, "blast_radius": 2)", R"(, "characters": [{"position": [0, 0, 9], "velocity": [0, 0, 0], "radius": 1, "speed": 2}])"),
+        {dangerWith(R"(, "blast_radius": 2)",
+                    R"(, "characters": [{"position": [0, 0, 9], "velocity": [0, 0, 0], "radius": 1, "speed": 2}])"),
          "predictions[1].characters[0].speed: unknown key"},
         {dangerWith(R"(, "blast_radius": 2)", R"(, "half_extents": [1, 0, 1])"), "predictions[1].half_extents: "},
-        {dangerWith(R"(, "blast_radius": 2)", R"(, "method": "iterative")"), "predictions[1].method: foresight danger follows the exact path"},
+        {dangerWith(R"(, "blast_radius": 2)", R"(, "method": "iterative")"),
+         "predictions[1].method: foresight danger follows the exact path"},
         {dangerWith(R"(, "blast_radius": 2)", "", R"("tolerance": 0, )"), "tolerance: expected a number > 0"},
         {dangerWith(R"(, "blast_radius": 2, "time": -1)"), "predictions[0].time: "},
         {R"({"predictions": [{"model": "linear", "position": [0, 0, 0], "velocity": [1, 0, 0], "time": 1}]})",
@@ -1994,7 +2080,8 @@ TEST_F(cli, DangerRefusesBadInputNamingThePath) {
         EXPECT_EQ(run.err.find("internal error"), std::string::npos) << run.err;
     }
     // All problems in one pass.
-    const CliRun run = runCli({"danger", write("danger.json", dangerWith(R"(, "blast_radius": -1)", R"(, "box_center": 1)")).string()});
+    const CliRun run = runCli(
+        {"danger", write("danger.json", dangerWith(R"(, "blast_radius": -1)", R"(, "box_center": 1)")).string()});
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.err.find("predictions[0].blast_radius"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("predictions[1].box_center"), std::string::npos) << run.err;
@@ -2060,8 +2147,8 @@ TEST_F(cli, NetsimTableMarkdownCsvAndSvg) {
     for (int i = 0; i <= 20; ++i) csv += std::to_string(0.5 * i) + "," + std::to_string(1.0 * i) + ",0,0\n";
     const fs::path file = write("line.csv", csv);
     const fs::path svg = mDir / "error.svg";
-    const CliRun run = runCli({"netsim", "--csv", file.string(), "--models", "FPW", "--loss", "0", "--json", "--svg", svg.string(),
-                               "--duration", "60"});
+    const CliRun run = runCli({"netsim", "--csv", file.string(), "--models", "FPW", "--loss", "0", "--json", "--svg",
+                               svg.string(), "--duration", "60"});
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_NE(run.err.find("warning: " + file.string() + " covers 10 s"), std::string::npos) << run.err;
     const Json output = parseOutput(run);
@@ -2103,7 +2190,8 @@ TEST_F(cli, NetsimRefusesBadOptionsWithStatusTwo) {
         {{"netsim", "--duration", "1", "--svg", (mDir / "no" / "dir.svg").string()}, "dir.svg: cannot write"},
         {{"netsim", "--seed", "x"}, "--seed"},
         // Not wrapped to 2^64 - 1 nor saturated (as CLI11 and strtoull would).
-        {{"netsim", "--seed", "-1"}, "--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"-1\""},
+        {{"netsim", "--seed", "-1"},
+         "--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"-1\""},
         {{"netsim", "--seed", "18446744073709551616"}, "--seed: expected an unsigned 64-bit integer"},
         // An empty value is a mistake, not the default (CLI11 alone reads an empty number as 0).
         {{"netsim", "--latency", ""}, "--latency: expected a number, got \"\""},

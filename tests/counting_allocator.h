@@ -13,7 +13,7 @@ namespace ftest {
 inline std::atomic<long> gAllocations{0};
 /// Counts one allocation made outside operator new (e.g. a library's own allocator hook).
 inline void countAllocation() { gAllocations.fetch_add(1, std::memory_order_relaxed); }
-} // namespace ftest
+}  // namespace ftest
 
 namespace {
 using ftest::gAllocations;
@@ -34,7 +34,7 @@ void* countedAllocateAligned(std::size_t size, std::align_val_t alignment) {
 
 // Out of line so that GCC's -Wmismatched-new-delete does not pair it with the operators.
 [[gnu::noinline]] void countedRelease(void* p) noexcept { std::free(p); }
-} // namespace
+}  // namespace
 
 void* operator new(std::size_t size) {
     if (void* p = countedAllocate(size)) return p;

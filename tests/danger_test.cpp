@@ -60,8 +60,7 @@ double pointBoxDistance(const DVec3& p, const DVec3& h) {
 /// segment's distance by golden-section search (convex along the segment), minus the radius.
 double referenceSeparation(const VehicleBody& vehicle, const CharacterBody& character, double t) {
     foresight::VehicleState pose;
-    EXPECT_EQ(foresight::predictVehicleExact(vehicle.state, static_cast<float>(t), vehicle.settings, pose),
-              Status::Ok);
+    EXPECT_EQ(foresight::predictVehicleExact(vehicle.state, static_cast<float>(t), vehicle.settings, pose), Status::Ok);
     const ftest::DQuat q = ftest::toD(pose.orientation);
     const ftest::DQuat inverse = ftest::dquatWXYZ(q.w, -q.x, -q.y, -q.z);
     const DVec3 center = ftest::toD(pose.position) + ftest::dRotate(q, ftest::toD(vehicle.boxCenter));
@@ -75,8 +74,10 @@ double referenceSeparation(const VehicleBody& vehicle, const CharacterBody& char
         const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
         for (int i = 0; i < 40; ++i) {  // the bracket shrinks to 8e-9 (distance error below that)
             const double u1 = high - ratio * (high - low), u2 = low + ratio * (high - low);
-            if (at(u1) <= at(u2)) high = u2;
-            else low = u1;
+            if (at(u1) <= at(u2))
+                high = u2;
+            else
+                low = u1;
         }
     }
     const double best = std::min({at(-1.0), at(1.0), at(0.5 * (low + high))});
@@ -162,7 +163,7 @@ TEST(DangerVehicle, CrossingCapsuleHitsTheSide) {
     ClosestApproach closest;
     ASSERT_EQ(foresight::findClosestVehicleApproach(vehicle, walker, 3.0f, {}, closest), Status::Ok);
     EXPECT_NEAR(closest.distance, 0.5f, 1e-3f + 1e-6f);  // the tolerance
-    EXPECT_GE(closest.distance, 0.5f - 1e-6f);          // a real value: never below the minimum
+    EXPECT_GE(closest.distance, 0.5f - 1e-6f);           // a real value: never below the minimum
     const double over = referenceSeparation(vehicle, walker, static_cast<double>(closest.time));
     EXPECT_NEAR(over, 0.5, 1e-3 + 1e-5);
 }
@@ -216,8 +217,10 @@ TEST(DangerVehicle, ClosestApproachIsTheEarliestOfEqualMinima) {
     double low = std::max(0.0, bestTime - 1e-3), high = bestTime + 1e-3;
     for (int i = 0; i < 60; ++i) {
         const double a = low + 0.381966 * (high - low), b = high - 0.381966 * (high - low);
-        if (referenceSeparation(vehicle, character, a) < referenceSeparation(vehicle, character, b)) high = b;
-        else low = a;
+        if (referenceSeparation(vehicle, character, a) < referenceSeparation(vehicle, character, b))
+            high = b;
+        else
+            low = a;
     }
     mu = std::min(mu, referenceSeparation(vehicle, character, 0.5 * (low + high)));
     // The reference's float poses of predictVehicleExact are good to ~1e-6 m at 60 m; 2e-5 m as
@@ -282,11 +285,11 @@ TEST(DangerVehicle, SeparationMatchesThePredictedPose) {
 
 struct Agreement {
     int cases = 0, contacts = 0, sampledContacts = 0;
-    double earliestBySampling = 0;   // max (sampled first overlap - reported time), >= 0
-    double latestBySampling = 0;     // max (reported time - sampled first overlap): must be ~0
-    double worstConfirmation = 0;    // max reference separation at a reported contact time
-    double closestGap = 0;           // max (reported closest - sampled minimum)
-    double closestUndershoot = 0;    // max (sampled minimum - reported closest): must be <= 0 + eps
+    double earliestBySampling = 0;  // max (sampled first overlap - reported time), >= 0
+    double latestBySampling = 0;    // max (reported time - sampled first overlap): must be ~0
+    double worstConfirmation = 0;   // max reference separation at a reported contact time
+    double closestGap = 0;          // max (reported closest - sampled minimum)
+    double closestUndershoot = 0;   // max (sampled minimum - reported closest): must be <= 0 + eps
     std::uint64_t evaluations = 0;
 };
 
@@ -305,18 +308,20 @@ TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
     for (int i = 0; i < cases; ++i) {
         VehicleBody vehicle;
         vehicle.state.position = rv(random.uniform(-10, 10), random.uniform(-1, 1), random.uniform(-10, 10));
-        const Vec3 axis = glm::normalize(Vec3(static_cast<float>(random.uniform(-1, 1)), 1.0f,
-                                              static_cast<float>(random.uniform(-1, 1))));
+        const Vec3 axis = glm::normalize(
+            Vec3(static_cast<float>(random.uniform(-1, 1)), 1.0f, static_cast<float>(random.uniform(-1, 1))));
         vehicle.state.orientation = glm::angleAxis(static_cast<float>(random.uniform(-3.1, 3.1)), axis);
         const float speed = static_cast<float>(random.uniform(-15, 15));
         vehicle.state.velocity = vehicle.state.orientation * Vec3(0.0f, 0.0f, speed);
-        vehicle.state.angularVelocity =
-            random.uniform() < 0.2 ? Vec3(0.0f)
-                                   : Vec3(static_cast<float>(random.uniform(-0.2, 0.2)), static_cast<float>(random.uniform(-1.5, 1.5)),
-                                          static_cast<float>(random.uniform(-0.2, 0.2)));
-        vehicle.settings.frame = random.uniform() < 0.5 ? foresight::AngularFrame::Body : foresight::AngularFrame::World;
-        vehicle.halfExtents = Vec3(static_cast<float>(random.uniform(0.3, 1.5)), static_cast<float>(random.uniform(0.3, 1.0)),
-                                   static_cast<float>(random.uniform(0.5, 3.0)));
+        vehicle.state.angularVelocity = random.uniform() < 0.2 ? Vec3(0.0f)
+                                                               : Vec3(static_cast<float>(random.uniform(-0.2, 0.2)),
+                                                                      static_cast<float>(random.uniform(-1.5, 1.5)),
+                                                                      static_cast<float>(random.uniform(-0.2, 0.2)));
+        vehicle.settings.frame =
+            random.uniform() < 0.5 ? foresight::AngularFrame::Body : foresight::AngularFrame::World;
+        vehicle.halfExtents =
+            Vec3(static_cast<float>(random.uniform(0.3, 1.5)), static_cast<float>(random.uniform(0.3, 1.0)),
+                 static_cast<float>(random.uniform(0.5, 3.0)));
         vehicle.boxCenter = Vec3(0.0f, 0.0f, static_cast<float>(random.uniform(-0.5, 0.5)));
         // The character starts near where the vehicle will be at some time in the horizon, so
         // that about half of the cases touch.
@@ -326,9 +331,11 @@ TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
                   Status::Ok);
         CharacterBody character;
         character.position = ahead.position + rv(random.uniform(-4, 4), random.uniform(-1, 1), random.uniform(-4, 4));
-        character.velocity = Vec3(static_cast<float>(random.uniform(-5, 5)), 0.0f, static_cast<float>(random.uniform(-5, 5)));
+        character.velocity =
+            Vec3(static_cast<float>(random.uniform(-5, 5)), 0.0f, static_cast<float>(random.uniform(-5, 5)));
         if (random.uniform() < 0.5)
-            character.acceleration = Vec3(static_cast<float>(random.uniform(-3, 3)), 0.0f, static_cast<float>(random.uniform(-3, 3)));
+            character.acceleration =
+                Vec3(static_cast<float>(random.uniform(-3, 3)), 0.0f, static_cast<float>(random.uniform(-3, 3)));
         character.radius = static_cast<float>(random.uniform(0.1, 0.6));
         if (random.uniform() < 0.5) character.halfAxis = Vec3(0.0f, static_cast<float>(random.uniform(0.2, 0.8)), 0.0f);
 
@@ -336,9 +343,9 @@ TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
         ClosestApproach closest;
         ASSERT_EQ(foresight::findVehicleContact(vehicle, character, static_cast<float>(horizon), settings, contact),
                   Status::Ok);
-        ASSERT_EQ(foresight::findClosestVehicleApproach(vehicle, character, static_cast<float>(horizon), settings,
-                                                        closest),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::findClosestVehicleApproach(vehicle, character, static_cast<float>(horizon), settings, closest),
+            Status::Ok);
         a.evaluations += contact.evaluations;
         double sampledFirst = -1, sampledMin = std::numeric_limits<double>::infinity();
         for (int k = 0; k <= samples; ++k) {
@@ -374,13 +381,14 @@ TEST(DangerVehicle, AgreesWithFineSamplingOnRandomCases) {
         a.closestUndershoot = std::max(a.closestUndershoot, sampledMin - static_cast<double>(closest.distance));
         EXPECT_LE(static_cast<double>(closest.distance), sampledMin + tolerance + 1e-4) << "case " << i;
     }
-    std::printf("vehicle vs sampling (5 ms): %d cases, %d sampled overlaps, %d reported contacts;\n"
-                "  reported first contact later than sampled by at most %.3g s, earlier by at most %.3g s;\n"
-                "  separation at reported contacts at most %.3g m; closest approach above the sampled minimum by at "
-                "most %.3g m, below it by at most %.3g m; %.1f evaluations per contact query\n",
-                a.cases, a.sampledContacts, a.contacts, a.latestBySampling, a.earliestBySampling, a.worstConfirmation,
-                a.closestGap, a.closestUndershoot, static_cast<double>(a.evaluations) / a.cases);
-    EXPECT_LE(a.latestBySampling, 1e-6);  // never later (float rounding of the time only)
+    std::printf(
+        "vehicle vs sampling (5 ms): %d cases, %d sampled overlaps, %d reported contacts;\n"
+        "  reported first contact later than sampled by at most %.3g s, earlier by at most %.3g s;\n"
+        "  separation at reported contacts at most %.3g m; closest approach above the sampled minimum by at "
+        "most %.3g m, below it by at most %.3g m; %.1f evaluations per contact query\n",
+        a.cases, a.sampledContacts, a.contacts, a.latestBySampling, a.earliestBySampling, a.worstConfirmation,
+        a.closestGap, a.closestUndershoot, static_cast<double>(a.evaluations) / a.cases);
+    EXPECT_LE(a.latestBySampling, 1e-6);           // never later (float rounding of the time only)
     EXPECT_GT(a.sampledContacts, cases / 10);      // the cases do exercise contacts
     EXPECT_LT(a.sampledContacts, cases * 9 / 10);  // and misses
 }
@@ -507,8 +515,8 @@ Throw predictThrow(DVec3 position, DVec3 velocity, float time, const foresight::
                    const ProjectileSettings& settings = {}) {
     Throw t;
     t.points.resize(foresight::trajectoryCapacity(time, settings, 256));
-    EXPECT_EQ(foresight::predictProjectile(ftest::toR(position), ftest::toF(velocity), time, settings, world,
-                                           t.points, t.result),
+    EXPECT_EQ(foresight::predictProjectile(ftest::toR(position), ftest::toF(velocity), time, settings, world, t.points,
+                                           t.result),
               Status::Ok);
     t.points.resize(t.result.trajectorySize);
     return t;
@@ -526,27 +534,24 @@ TEST(DangerProjectile, ClosestApproachOfTheParabola) {
     const double k = g / (2.0 * 16.0);
     ClosestApproach closest;
     // Above the apex, 0.5 m: the apex.
-    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY + 0.5, 0), 0.0f, 2.0f, closest),
-              Status::Ok);
-    EXPECT_NEAR(closest.distance, 0.5, 1e-6);  // float positions of ~3 m
+    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY + 0.5, 0), 0.0f, 2.0f, closest), Status::Ok);
+    EXPECT_NEAR(closest.distance, 0.5, 1e-6);   // float positions of ~3 m
     EXPECT_NEAR(closest.time, apexTime, 1e-4);  // flat minimum: time to sqrt(1e-7 / k) / 4 m/s
     // 0.5 m below (1 / (2k) = 1.63 m): still the apex.
-    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - 0.5, 0), 0.0f, 2.0f, closest),
-              Status::Ok);
+    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - 0.5, 0), 0.0f, 2.0f, closest), Status::Ok);
     EXPECT_NEAR(closest.distance, 0.5, 1e-6);
     // 3 m below: the two side points, at the same distance (rounding picks one).
     const double h = 3.0;
     const double u = std::sqrt((2.0 * k * h - 1.0) / (2.0 * k * k));
     const double expected = std::sqrt(u * u + (h - k * u * u) * (h - k * u * u));
-    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - h, 0), 0.0f, 2.0f, closest),
-              Status::Ok);
+    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - h, 0), 0.0f, 2.0f, closest), Status::Ok);
     EXPECT_NEAR(closest.distance, expected, 1e-6);
-    const double side = std::min(std::abs(closest.time - (apexTime - u / 4.0)),
-                                 std::abs(closest.time - (apexTime + u / 4.0)));
+    const double side =
+        std::min(std::abs(closest.time - (apexTime - u / 4.0)), std::abs(closest.time - (apexTime + u / 4.0)));
     EXPECT_LT(side, 1e-3);  // a flat minimum (see above)
     // Restricted to after the apex: the later side point.
-    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - h, 0), static_cast<float>(apexTime),
-                                                 2.0f, closest),
+    ASSERT_EQ(foresight::findClosestPathApproach(t.points, rv(apexX, apexY - h, 0), static_cast<float>(apexTime), 2.0f,
+                                                 closest),
               Status::Ok);
     EXPECT_NEAR(closest.time, apexTime + u / 4.0, 1e-3);
     // Out of the plane by 2 m: the apex at sqrt(0.5^2 + 2^2)? No: the point above the apex by 0.5
@@ -680,7 +685,8 @@ TEST(DangerProjectile, AgreesWithFineSamplingOnRandomThrows) {
             const double s = time - static_cast<double>(p.time);
             // Sliding on the floor (frictionless): no vertical motion; otherwise free flight.
             const bool sliding = std::abs(static_cast<double>(p.position.y)) < 1e-5 && std::abs(p.velocity.y) < 1e-5f;
-            return ftest::toD(p.position) + ftest::toD(p.velocity) * s + DVec3(0, sliding ? 0.0 : -g, 0) * (0.5 * s * s);
+            return ftest::toD(p.position) + ftest::toD(p.velocity) * s +
+                   DVec3(0, sliding ? 0.0 : -g, 0) * (0.5 * s * s);
         };
         double sampledMin = std::numeric_limits<double>::infinity(), sampledFirst = -1;
         for (int k = 0; k <= 6000; ++k) {  // every 0.5 ms
@@ -692,9 +698,9 @@ TEST(DangerProjectile, AgreesWithFineSamplingOnRandomThrows) {
         ClosestApproach closest;
         ASSERT_EQ(foresight::findClosestPathApproach(t.points, ftest::toR(point), 0.0f, 3.0f, closest), Status::Ok);
         DangerStart start;
-        ASSERT_EQ(foresight::findPathApproach(t.points, ftest::toR(point), static_cast<float>(radius), 0.0f, 3.0f,
-                                              start),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::findPathApproach(t.points, ftest::toR(point), static_cast<float>(radius), 0.0f, 3.0f, start),
+            Status::Ok);
         ++cases;
         // The exact minimum is never above the sampled one (float positions: 1e-5 m), and is a
         // real distance of the model at its time.
@@ -714,10 +720,11 @@ TEST(DangerProjectile, AgreesWithFineSamplingOnRandomThrows) {
             EXPECT_LE(glm::length(reference(static_cast<double>(start.time)) - point), radius + 1e-4) << "case " << i;
         }
     }
-    std::printf("projectile vs sampling (0.5 ms): %d throws, %d corridor entries; exact minimum above the sampled "
-                "one by at most %.3g m; corridor entry later than sampled by at most %.3g s, earlier by at most "
-                "%.3g s\n",
-                cases, corridorHits, worstClosest, worstLate, worstEarliest);
+    std::printf(
+        "projectile vs sampling (0.5 ms): %d throws, %d corridor entries; exact minimum above the sampled "
+        "one by at most %.3g m; corridor entry later than sampled by at most %.3g s, earlier by at most "
+        "%.3g s\n",
+        cases, corridorHits, worstClosest, worstLate, worstEarliest);
     EXPECT_GT(corridorHits, 100);
 }
 

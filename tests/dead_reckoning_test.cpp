@@ -46,8 +46,9 @@ const char* name(DeadReckoningAlgorithm a) { return foresight::deadReckoningAlgo
 // DIS Euler angles: body-to-world R = Rz(psi) Ry(theta) Rx(phi).
 
 Quat fromEuler(double psi, double theta, double phi) {
-    const DQuat q = ftest::dMul(ftest::dMul(ftest::dAxisAngle(DVec3(0, 0, 1), psi), ftest::dAxisAngle(DVec3(0, 1, 0), theta)),
-                                ftest::dAxisAngle(DVec3(1, 0, 0), phi));
+    const DQuat q =
+        ftest::dMul(ftest::dMul(ftest::dAxisAngle(DVec3(0, 0, 1), psi), ftest::dAxisAngle(DVec3(0, 1, 0), theta)),
+                    ftest::dAxisAngle(DVec3(1, 0, 0), phi));
     return ftest::toF(q);
 }
 
@@ -108,7 +109,8 @@ Reference integrate(const DeadReckoningState& s, double time, int steps) {
         // Rotate u by the normalised q: u + 2 qw (r x u) + 2 r x (r x u).
         const L n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         const L qw = q[0] / n, r[3] = {q[1] / n, q[2] / n, q[3] / n};
-        const L c[3] = {2 * (r[1] * u[2] - r[2] * u[1]), 2 * (r[2] * u[0] - r[0] * u[2]), 2 * (r[0] * u[1] - r[1] * u[0])};
+        const L c[3] = {2 * (r[1] * u[2] - r[2] * u[1]), 2 * (r[2] * u[0] - r[0] * u[2]),
+                        2 * (r[0] * u[1] - r[1] * u[0])};
         k.d[0] = u[0] + qw * c[0] + (r[1] * c[2] - r[2] * c[1]);
         k.d[1] = u[1] + qw * c[1] + (r[2] * c[0] - r[0] * c[2]);
         k.d[2] = u[2] + qw * c[2] + (r[0] * c[1] - r[1] * c[0]);
@@ -177,9 +179,9 @@ DeadReckoningState towersHines8(DeadReckoningAlgorithm algorithm) {
 struct Published {
     const char* label;
     DeadReckoningState state;
-    DVec3 position;     // [m]
-    DVec3 eulerDegrees; // psi, theta, phi
-    DVec3 velocity;     // [m/s]
+    DVec3 position;      // [m]
+    DVec3 eulerDegrees;  // psi, theta, phi
+    DVec3 velocity;      // [m/s]
 };
 
 std::vector<Published> publishedCases() {
@@ -261,7 +263,8 @@ TEST(DeadReckoning, EveryModelMatchesTheIntegratedMotion) {
     for (const DeadReckoningAlgorithm algorithm : kAll) {
         for (const double rate : {0.0, 0.2, 1.3, 4.0}) {
             for (const float time : {0.0f, 0.25f, 1.0f, 3.0f}) {
-                SCOPED_TRACE(std::string(name(algorithm)) + " rate " + std::to_string(rate) + " t " + std::to_string(time));
+                SCOPED_TRACE(std::string(name(algorithm)) + " rate " + std::to_string(rate) + " t " +
+                             std::to_string(time));
                 const DeadReckoningState s = generic(algorithm, rate);
                 const DeadReckoningResult out = predict(s, time);
                 const Reference ref = integrate(s, time, 1000 + static_cast<int>(2000.0f * time));
@@ -355,8 +358,8 @@ TEST(DeadReckoning, ZeroAngularVelocityIsTheStraightLineExactly) {
         EXPECT_TRUE(ftest::quatNear(rvb.orientation, s.orientation, 1e-7)) << time;
         const double t = time;
         const DVec3 expected = ftest::toD(s.position) +
-                               ftest::dRotate(glm::normalize(ftest::toD(s.orientation)), ftest::toD(s.velocity) * t +
-                                                                             ftest::toD(s.acceleration) * (0.5 * t * t));
+                               ftest::dRotate(glm::normalize(ftest::toD(s.orientation)),
+                                              ftest::toD(s.velocity) * t + ftest::toD(s.acceleration) * (0.5 * t * t));
         // Geocentric: one rounding of 5e6 m (9.3e-10 m) and a few of the 60 m displacement.
         EXPECT_TRUE(ftest::vecNear(rvb.position, expected, 1e-8)) << time;
     }
@@ -584,4 +587,4 @@ TEST(DeadReckoning, NeverAllocates) {
     EXPECT_EQ(ftest::gAllocations.load() - before, 0);
 }
 
-} // namespace
+}  // namespace

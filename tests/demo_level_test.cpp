@@ -122,9 +122,9 @@ std::vector<std::vector<std::size_t>> pieces(const LevelMesh& mesh, const LevelM
     for (const auto& [edge, count] : directed) {
         const auto reverse = directed.find({edge.second, edge.first});
         if (count != 1 || reverse == directed.end() || reverse->second != 1) {
-            return ::testing::AssertionFailure() << "edge " << edge.first << " -> " << edge.second << " used " << count
-                                                 << " time(s), reversed "
-                                                 << (reverse == directed.end() ? 0 : reverse->second);
+            return ::testing::AssertionFailure()
+                   << "edge " << edge.first << " -> " << edge.second << " used " << count << " time(s), reversed "
+                   << (reverse == directed.end() ? 0 : reverse->second);
         }
     }
     return ::testing::AssertionSuccess();
@@ -255,7 +255,8 @@ TEST(demo_level, PartsAndBoundsAreAsDocumented) {
     for (const auto& [n, offset] : byPart["ramp"][0]->planes) {
         if (n.y > 0.1 && n.y < 0.99) {
             slope = true;
-            EXPECT_NEAR(std::acos(n.y) * 180.0 / 3.14159265358979323846, std::atan2(1.875, 6.0) * 180.0 / 3.14159265358979323846,
+            EXPECT_NEAR(std::acos(n.y) * 180.0 / 3.14159265358979323846,
+                        std::atan2(1.875, 6.0) * 180.0 / 3.14159265358979323846,
                         1e-9);  // double rounding of a normalised cross product
         }
     }
@@ -494,9 +495,9 @@ TEST(demo_level, BuildFilesLoadIntoTheSameTriangles) {
         for (int i = 0; i < kSegments; ++i) {
             foresight::SegmentCast cast;
             cast.origin = DVec3(random.uniform(-19, 19), random.uniform(-0.5, 5), random.uniform(-19, 19));
-            cast.displacement = foresight::Vec3(static_cast<float>(random.uniform(-12, 12)),
-                                                static_cast<float>(random.uniform(-6, 4)),
-                                                static_cast<float>(random.uniform(-12, 12)));
+            cast.displacement =
+                foresight::Vec3(static_cast<float>(random.uniform(-12, 12)), static_cast<float>(random.uniform(-6, 4)),
+                                static_cast<float>(random.uniform(-12, 12)));
             cast.radius = i % 4 == 3 ? static_cast<float>(random.uniform(0.01, 0.3)) : 0.0f;
             foresight::CastHit expected, actual;
             const bool expectedHit = reference.castSegment(cast, expected);
@@ -625,7 +626,7 @@ TEST(demo_level, ExactThrowsNeverEndBelowTheFloorNorPassThroughASolid) {
     EXPECT_EQ(failures, 0);
     EXPECT_EQ(lowThrows, (kThrows + 1) / 2);
     EXPECT_GT(bounces, kThrows);  // the throws do meet the level (several bounces each on average)
-    EXPECT_EQ(rampEntries, 0);  // was about 2% before the exact projectile's fix for oblique slopes
+    EXPECT_EQ(rampEntries, 0);    // was about 2% before the exact projectile's fix for oblique slopes
     std::printf("demo level: %d exact throws, %d bounces, %d left through the doorway, %d went into the ramp\n",
                 kThrows, bounces, doorwayExits, rampEntries);
 }
@@ -649,7 +650,8 @@ TEST(demo_level, RampSlopeIsNotPassedThrough) {
     foresight::ProjectileResult result;
     const DVec3 start(-4.1496719085437608, 1.1732715847369795, 13.272881517199785);
     const foresight::Vec3 velocity(-1.0579562187194824f, -2.213991641998291f, -3.7539980411529541f);
-    ASSERT_EQ(foresight::predictProjectile(start, velocity, 0.2f, settings, &world, points, result), foresight::Status::Ok);
+    ASSERT_EQ(foresight::predictProjectile(start, velocity, 0.2f, settings, &world, points, result),
+              foresight::Status::Ok);
     // Above the slope y = (-1 - x) * 1.875 / 6 (x in [-7, -1]) after the bounce at t = 0.0659 s.
     const double slope = (-1.0 - result.position.x) * 1.875 / 6.0;
     EXPECT_GE(result.position.y, slope - 1e-6) << "ended inside the ramp at (" << result.position.x << ", "
@@ -657,4 +659,4 @@ TEST(demo_level, RampSlopeIsNotPassedThrough) {
     EXPECT_EQ(result.bounces, 1u);
 }
 
-} // namespace
+}  // namespace

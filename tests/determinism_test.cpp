@@ -48,7 +48,6 @@ void hashPoints(ftest::Hasher& h, const std::vector<TrajectoryPoint>& points, st
     }
 }
 
-
 /// Runs the whole scenario; returns the hash and fills `floats` with every output float.
 std::uint64_t runScenario(std::vector<double>& outputs) {
     ftest::Hasher h;
@@ -78,7 +77,7 @@ std::uint64_t runScenario(std::vector<double>& outputs) {
             outputs.push_back(static_cast<double>(points[k].position.z));
         }
     }
-    EXPECT_GT(bounces, 40u); // the scenario exercises bounces
+    EXPECT_GT(bounces, 40u);  // the scenario exercises bounces
     for (int i = 0; i < 8; ++i) {
         foresight::VehicleState start;
         start.position = rv(i, 0.0, -i);
@@ -99,7 +98,8 @@ std::uint64_t runScenario(std::vector<double>& outputs) {
             outputs.push_back(static_cast<double>(s->position.z));
         }
         foresight::Quat q;
-        EXPECT_EQ(foresight::predictOrientation(start.orientation, start.angularVelocity, settings.frame, 1.7f, q), Status::Ok);
+        EXPECT_EQ(foresight::predictOrientation(start.orientation, start.angularVelocity, settings.frame, 1.7f, q),
+                  Status::Ok);
         h.add(q);
         foresight::PointState character;
         character.position = start.position;
@@ -145,4 +145,4 @@ TEST(Determinism, HashCoversTheOutput) {
     EXPECT_NE(h1.value(), h2.value());
 }
 
-} // namespace
+}  // namespace

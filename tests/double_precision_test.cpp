@@ -23,18 +23,18 @@ using foresight::TrajectoryPoint;
 using foresight::Vec3;
 using ftest::DVec3;
 
-constexpr double kEarth = 6.4e6; // [m], about the Earth's radius
+constexpr double kEarth = 6.4e6;  // [m], about the Earth's radius
 
 TEST(DoublePrecision, CharacterAtGeocentricScaleResolvesMicrometres) {
     foresight::PointState start;
     start.position = RVec3(kEarth, -kEarth * 0.5, 1234.5);
-    start.velocity = Vec3(0.01f, 0.0f, 0.0f); // 0.01 m in 1 s: 1/50 of a float's spacing at 6.4e6
+    start.velocity = Vec3(0.01f, 0.0f, 0.0f);  // 0.01 m in 1 s: 1/50 of a float's spacing at 6.4e6
     foresight::PointState out;
     ASSERT_EQ(foresight::predictLinear(start, 1.0f, out), Status::Ok);
     // double positions at 6.4e6 m have a spacing of 9.3e-10 m; the float velocity 0.01f is
     // 0.01 to 2.2e-10 m/s. 1e-6 m, the bar here, is 1000 spacings.
     EXPECT_NEAR(out.position.x - kEarth, static_cast<double>(0.01f), 1e-6);
-    EXPECT_NE(out.position.x, start.position.x); // it moved at all (a float position would not)
+    EXPECT_NE(out.position.x, start.position.x);  // it moved at all (a float position would not)
     EXPECT_EQ(out.position.y, start.position.y);
     ASSERT_EQ(foresight::predictAccelerated(start, Vec3(0.0f, 0.02f, 0.0f), 1.0f, out), Status::Ok);
     EXPECT_NEAR(out.position.x - kEarth, static_cast<double>(0.01f), 1e-6);
@@ -69,10 +69,11 @@ struct Points {
     std::vector<TrajectoryPoint> points;
 };
 
-Points throwOnPlane(double planeDistance, const RVec3& start, const Vec3& velocity, ProjectileMethod method, float radius) {
+Points throwOnPlane(double planeDistance, const RVec3& start, const Vec3& velocity, ProjectileMethod method,
+                    float radius) {
     StaticWorld world;
     EXPECT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), planeDistance}), Status::Ok);
-    EXPECT_EQ(world.add(foresight::Plane{Vec3(0.0f, 0.0f, -1.0f), -(start.z + 9.0)}), Status::Ok); // a wall 9 m ahead
+    EXPECT_EQ(world.add(foresight::Plane{Vec3(0.0f, 0.0f, -1.0f), -(start.z + 9.0)}), Status::Ok);  // a wall 9 m ahead
     ProjectileSettings settings;
     settings.method = method;
     settings.restitution = 0.6f;
@@ -97,7 +98,7 @@ TEST(DoublePrecision, ProjectileOnAFarPlaneMatchesTheOrigin) {
             const Points far = throwOnPlane(kEarth, farStart, velocity, method, radius);
             ASSERT_EQ(near.status, Status::Ok);
             ASSERT_EQ(far.status, Status::Ok);
-            ASSERT_GT(near.result.bounces, 2u); // floor and wall bounces happen
+            ASSERT_GT(near.result.bounces, 2u);  // floor and wall bounces happen
             EXPECT_EQ(far.result.bounces, near.result.bounces);
             EXPECT_EQ(far.result.atRest, near.result.atRest);
             ASSERT_EQ(far.points.size(), near.points.size());
@@ -139,8 +140,8 @@ TEST(DoublePrecision, BounceOnAnObliqueSlopeIsNotFollowedByAHitFromBehind) {
     std::vector<TrajectoryPoint> points(foresight::trajectoryCapacity(0.2f, settings));
     ProjectileResult result;
     ASSERT_EQ(foresight::predictProjectile(RVec3(-4.1496719085437608, 1.1732715847369795, 13.272881517199785),
-                                           Vec3(-1.0579562187194824f, -2.213991641998291f, -3.7539980411529541f),
-                                           0.2f, settings, &world, points, result),
+                                           Vec3(-1.0579562187194824f, -2.213991641998291f, -3.7539980411529541f), 0.2f,
+                                           settings, &world, points, result),
               Status::Ok);
     EXPECT_EQ(result.bounces, 1u);
     for (std::size_t k = 0; k < result.trajectorySize; ++k) {
@@ -191,4 +192,4 @@ TEST(DoublePrecision, ImpactExactlyOnTheEdgeOfTwoWallsOfTrianglesBouncesOffBoth)
     }
 }
 
-} // namespace
+}  // namespace

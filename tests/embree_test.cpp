@@ -52,7 +52,8 @@ void addBoxMesh(Mesh& mesh, const DVec3& lo, const DVec3& hi) {
     // Faces as quads (corner bits), split in two.
     const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
-        for (const int k : {q[0], q[1], q[2], q[0], q[2], q[3]}) mesh.indices.push_back(base + static_cast<std::uint32_t>(k));
+        for (const int k : {q[0], q[1], q[2], q[0], q[2], q[3]})
+            mesh.indices.push_back(base + static_cast<std::uint32_t>(k));
     }
 }
 
@@ -63,7 +64,7 @@ Mesh sceneMesh() {
     addBoxMesh(mesh, DVec3(-3, 0, -2), DVec3(-2, 1, -1));
     addBoxMesh(mesh, DVec3(1, 0, 1), DVec3(2.5, 2, 1.5));
     addBoxMesh(mesh, DVec3(-1, 1.5, 2), DVec3(0, 2.5, 3));  // floating
-    addBoxMesh(mesh, DVec3(3, 0, -3), DVec3(3.2, 3, -1));    // a thin wall
+    addBoxMesh(mesh, DVec3(3, 0, -3), DVec3(3.2, 3, -1));   // a thin wall
     // A ramp (two triangles) and a degenerate triangle (skipped).
     const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
     mesh.vertices.push_back(r3(-4, 0, 1));
@@ -101,7 +102,8 @@ void buildWorlds(Worlds& w) {
     EXPECT_EQ(report.degenerateTriangles, 1u);
     EXPECT_EQ(report.firstDegenerateTriangle, mesh.indices.size() / 3 - 1);
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]], mesh.vertices[mesh.indices[t + 2]]};
+        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                           mesh.vertices[mesh.indices[t + 2]]};
         if (foresight::validateTriangle(tri) == Status::Ok) {
             w.meshTriangles.push_back(tri);
             ASSERT_EQ(w.reference.add(tri), Status::Ok);
@@ -115,7 +117,8 @@ void buildWorlds(Worlds& w) {
 
 // Random segments, many of them special: starting on a surface, grazing an edge or a vertex,
 // parallel to a face, zero length.
-std::vector<SegmentCast> randomCasts(const std::vector<Triangle>& triangles, int count, float radius, std::uint32_t seed) {
+std::vector<SegmentCast> randomCasts(const std::vector<Triangle>& triangles, int count, float radius,
+                                     std::uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     auto inRoom = [&] { return DVec3(-5.5 + 11 * u(rng), -0.5 + 5 * u(rng), -4.5 + 9 * u(rng)); };
@@ -125,7 +128,9 @@ std::vector<SegmentCast> randomCasts(const std::vector<Triangle>& triangles, int
         while (glm::length(d) < 0.1 || glm::length(d) > 1.0);
         return glm::normalize(d);
     };
-    auto pickTriangle = [&]() -> const Triangle& { return triangles[static_cast<std::size_t>(u(rng) * static_cast<double>(triangles.size())) % triangles.size()]; };
+    auto pickTriangle = [&]() -> const Triangle& {
+        return triangles[static_cast<std::size_t>(u(rng) * static_cast<double>(triangles.size())) % triangles.size()];
+    };
     std::vector<SegmentCast> casts;
     casts.reserve(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
@@ -134,46 +139,49 @@ std::vector<SegmentCast> randomCasts(const std::vector<Triangle>& triangles, int
         DVec3 origin = inRoom();
         DVec3 displacement = direction() * (0.01 + 6 * u(rng));
         switch (i % 8) {
-        case 0:
-        case 1:
-        case 2: break;  // plain
-        case 3: {       // starts exactly on a triangle (or offset by the radius), moves in or out
-            const Triangle& t = pickTriangle();
-            const double a = u(rng), b = u(rng) * (1 - a);
-            const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
-            const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
-            origin = A + (B - A) * a + (C - A) * b + n * (static_cast<double>(radius) * (u(rng) < 0.5 ? 1 : -1));
-            break;
-        }
-        case 4: {  // aims exactly at an edge point (or a vertex) of a triangle
-            const Triangle& t = pickTriangle();
-            const DVec3 A = d3(t.a), B = d3(t.b);
-            const double s = u(rng) < 0.3 ? 0.0 : u(rng);
-            const DVec3 target = A + (B - A) * s;
-            displacement = (target - origin) * (1.0 + u(rng));
-            break;
-        }
-        case 5: {  // parallel to a face, in its plane or a radius away
-            const Triangle& t = pickTriangle();
-            const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
-            const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
-            origin = A + (B - A) * (u(rng) * 1.4 - 0.2) + (C - A) * (u(rng) * 0.5) +
-                     n * (u(rng) < 0.5 ? 0.0 : static_cast<double>(radius));
-            DVec3 d = direction();
-            d -= n * glm::dot(d, n);
-            if (glm::length(d) < 1e-3) d = glm::normalize(B - A);
-            displacement = glm::normalize(d) * (0.1 + 4 * u(rng));
-            break;
-        }
-        case 6:  // zero length
-            if (u(rng) < 0.5) displacement = DVec3(0.0);
-            else displacement = direction() * 1e-7;
-            break;
-        case 7: {  // from a vertex of one triangle to a vertex of another
-            origin = d3(pickTriangle().a);
-            displacement = d3(pickTriangle().c) - origin;
-            break;
-        }
+            case 0:
+            case 1:
+            case 2:
+                break;  // plain
+            case 3: {   // starts exactly on a triangle (or offset by the radius), moves in or out
+                const Triangle& t = pickTriangle();
+                const double a = u(rng), b = u(rng) * (1 - a);
+                const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
+                const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
+                origin = A + (B - A) * a + (C - A) * b + n * (static_cast<double>(radius) * (u(rng) < 0.5 ? 1 : -1));
+                break;
+            }
+            case 4: {  // aims exactly at an edge point (or a vertex) of a triangle
+                const Triangle& t = pickTriangle();
+                const DVec3 A = d3(t.a), B = d3(t.b);
+                const double s = u(rng) < 0.3 ? 0.0 : u(rng);
+                const DVec3 target = A + (B - A) * s;
+                displacement = (target - origin) * (1.0 + u(rng));
+                break;
+            }
+            case 5: {  // parallel to a face, in its plane or a radius away
+                const Triangle& t = pickTriangle();
+                const DVec3 A = d3(t.a), B = d3(t.b), C = d3(t.c);
+                const DVec3 n = glm::normalize(glm::cross(B - A, C - A));
+                origin = A + (B - A) * (u(rng) * 1.4 - 0.2) + (C - A) * (u(rng) * 0.5) +
+                         n * (u(rng) < 0.5 ? 0.0 : static_cast<double>(radius));
+                DVec3 d = direction();
+                d -= n * glm::dot(d, n);
+                if (glm::length(d) < 1e-3) d = glm::normalize(B - A);
+                displacement = glm::normalize(d) * (0.1 + 4 * u(rng));
+                break;
+            }
+            case 6:  // zero length
+                if (u(rng) < 0.5)
+                    displacement = DVec3(0.0);
+                else
+                    displacement = direction() * 1e-7;
+                break;
+            case 7: {  // from a vertex of one triangle to a vertex of another
+                origin = d3(pickTriangle().a);
+                displacement = d3(pickTriangle().c) - origin;
+                break;
+            }
         }
         cast.origin = r3(origin.x, origin.y, origin.z);
         cast.displacement = Vec3(displacement);
@@ -188,8 +196,8 @@ struct Outcome {
 };
 
 void expectSame(const Outcome& expected, const Outcome& actual, const SegmentCast& cast, int index) {
-    ASSERT_EQ(expected.hit, actual.hit) << "cast " << index << " from (" << cast.origin.x << ", " << cast.origin.y << ", "
-                                        << cast.origin.z << ") by (" << cast.displacement.x << ", "
+    ASSERT_EQ(expected.hit, actual.hit) << "cast " << index << " from (" << cast.origin.x << ", " << cast.origin.y
+                                        << ", " << cast.origin.z << ") by (" << cast.displacement.x << ", "
                                         << cast.displacement.y << ", " << cast.displacement.z << ") r " << cast.radius;
     if (!expected.hit) return;
     EXPECT_NEAR(expected.value.fraction, actual.value.fraction, 1e-6) << "cast " << index;
@@ -225,7 +233,8 @@ double grazeReach(const std::vector<Triangle>& triangles, const SegmentCast& cas
             largest = std::max({largest, std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
     const DVec3 o = d3(cast.origin), d(cast.displacement);
     const double length = glm::length(d);
-    const double rho = 1e-6 + std::ldexp(std::max({largest, std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + length, -20);
+    const double rho =
+        1e-6 + std::ldexp(std::max({largest, std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + length, -20);
     const DVec3 n = glm::normalize(glm::cross(d3(t.b) - d3(t.a), d3(t.c) - d3(t.a)));
     return rho / std::max(std::abs(glm::dot(n, d)) / length, 1e-3);
 }
@@ -234,12 +243,15 @@ double grazeReach(const std::vector<Triangle>& triangles, const SegmentCast& cas
 double edgeDistance(const Triangle& t, const DVec3& p) {
     const DVec3 a = d3(t.a), b = d3(t.b), c = d3(t.c);
     const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
-    auto line = [&](const DVec3& u, const DVec3& v) { return std::abs(glm::dot(n, glm::cross(v - u, p - u))) / glm::length(v - u); };
+    auto line = [&](const DVec3& u, const DVec3& v) {
+        return std::abs(glm::dot(n, glm::cross(v - u, p - u))) / glm::length(v - u);
+    };
     return std::min({line(a, b), line(b, c), line(c, a)});
 }
 
 // The mesh triangles whose own exact test gives exactly `hit`.
-std::vector<Triangle> trianglesGiving(const std::vector<Triangle>& triangles, const SegmentCast& cast, const CastHit& hit) {
+std::vector<Triangle> trianglesGiving(const std::vector<Triangle>& triangles, const SegmentCast& cast,
+                                      const CastHit& hit) {
     std::vector<Triangle> out;
     for (const Triangle& t : triangles) {
         foresight::ClosestHitCaster caster(cast);
@@ -263,7 +275,8 @@ bool isDocumentedGraze(const Worlds& w, const Outcome& expected, const Outcome& 
     const DVec3 p = d3(cast.origin) + DVec3(cast.displacement) * double(expected.value.fraction);
     for (const Triangle& t : trianglesGiving(w.meshTriangles, cast, expected.value))
         // 1e-6 relative: the hit point is rebuilt from the float fraction.
-        grazed = grazed || edgeDistance(t, p) <= grazeReach(w.meshTriangles, cast, t) + 1e-6 * glm::length(DVec3(cast.displacement));
+        grazed = grazed || edgeDistance(t, p) <=
+                               grazeReach(w.meshTriangles, cast, t) + 1e-6 * glm::length(DVec3(cast.displacement));
     if (!grazed) return false;
     // What EmbreeWorld reports instead is an exact hit of a mesh triangle or the primitives'.
     if (!actual.hit || !trianglesGiving(w.meshTriangles, cast, actual.value).empty()) return true;
@@ -312,7 +325,8 @@ TEST_F(embree_world, SameHitsBeforeCommit) {
     addBoxMesh(mesh, DVec3(-1, -1, -1), DVec3(1, 1, 1));
     ASSERT_EQ(local.embree.addMesh(mesh.vertices, mesh.indices), Status::Ok);
     for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]], mesh.vertices[mesh.indices[t + 2]]};
+        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                           mesh.vertices[mesh.indices[t + 2]]};
         local.meshTriangles.push_back(tri);
         ASSERT_EQ(local.reference.add(tri), Status::Ok);
     }
@@ -328,8 +342,10 @@ TEST_F(embree_world, SameHitsBeforeCommit) {
 // sphere (512 triangles), off the origin.
 Mesh closedSphereMesh(const DVec3& centre, double radius) {
     Mesh mesh;
-    std::vector<DVec3> points{DVec3(1, 0, 0), DVec3(-1, 0, 0), DVec3(0, 1, 0), DVec3(0, -1, 0), DVec3(0, 0, 1), DVec3(0, 0, -1)};
-    std::vector<std::array<std::uint32_t, 3>> faces{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    std::vector<DVec3> points{DVec3(1, 0, 0),  DVec3(-1, 0, 0), DVec3(0, 1, 0),
+                              DVec3(0, -1, 0), DVec3(0, 0, 1),  DVec3(0, 0, -1)};
+    std::vector<std::array<std::uint32_t, 3>> faces{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     for (int level = 0; level < 3; ++level) {
         std::vector<std::array<std::uint32_t, 3>> finer;
         std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>> midpoints;
@@ -375,8 +391,9 @@ TEST_F(embree_world, RaysThroughSharedEdgesAndVerticesOfAClosedMeshHit) {
     auto check = [&](const DVec3& from, const DVec3& target, const char* what) {
         const SegmentCast cast{r3(from.x, from.y, from.z), Vec3((target - from) * 1.5)};
         CastHit hit;
-        EXPECT_TRUE(world.castSegment(cast, hit)) << what << " aimed from (" << from.x << ", " << from.y << ", " << from.z
-                                                  << ") at (" << target.x << ", " << target.y << ", " << target.z << ")";
+        EXPECT_TRUE(world.castSegment(cast, hit))
+            << what << " aimed from (" << from.x << ", " << from.y << ", " << from.z << ") at (" << target.x << ", "
+            << target.y << ", " << target.z << ")";
     };
     const std::size_t sphereIndices = 3 * 512;  // the sphere's come first, then the box's
     int aims = 0;
@@ -460,10 +477,12 @@ TEST_F(embree_world, ProjectilesStayInsideTheClosedRoom) {
 TEST_F(embree_world, ConcurrentCastsMatchSequential) {
     const auto casts = randomCasts(worlds->meshTriangles, 4000, 0.05f, 11);
     std::vector<Outcome> sequential(casts.size());
-    for (std::size_t i = 0; i < casts.size(); ++i) sequential[i].hit = worlds->embree.castSegment(casts[i], sequential[i].value);
+    for (std::size_t i = 0; i < casts.size(); ++i)
+        sequential[i].hit = worlds->embree.castSegment(casts[i], sequential[i].value);
     std::vector<Outcome> parallel(casts.size());
     auto run = [&](std::size_t begin) {
-        for (std::size_t i = begin; i < casts.size(); i += 2) parallel[i].hit = worlds->embree.castSegment(casts[i], parallel[i].value);
+        for (std::size_t i = begin; i < casts.size(); i += 2)
+            parallel[i].hit = worlds->embree.castSegment(casts[i], parallel[i].value);
     };
     std::thread a(run, 0), b(run, 1);
     a.join();
@@ -519,8 +538,8 @@ std::string base64(const std::string& bytes) {
     std::string out;
     std::size_t i = 0;
     for (; i + 2 < bytes.size(); i += 3) {
-        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                           static_cast<unsigned char>(bytes[i + 2]);
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                           (static_cast<unsigned char>(bytes[i + 1]) << 8) | static_cast<unsigned char>(bytes[i + 2]);
         for (int k = 3; k >= 0; --k) out += table[(v >> (6 * k)) & 63];
     }
     if (i < bytes.size()) {
@@ -538,16 +557,19 @@ std::string base64(const std::string& bytes) {
 // `uri` empty: the GLB's own binary chunk. `indexCount` and `indexType` let tests break it.
 std::string quadGltfJson(const std::string& uri, int bufferLength, int indexCount = 6, int indexType = 5123,
                          const char* extraPrimitive = "") {
-    std::string buffer = "{\"byteLength\": " + std::to_string(bufferLength) + (uri.empty() ? "" : ", \"uri\": \"" + uri + "\"") + "}";
+    std::string buffer =
+        "{\"byteLength\": " + std::to_string(bufferLength) + (uri.empty() ? "" : ", \"uri\": \"" + uri + "\"") + "}";
     return std::string(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
   "nodes": [{"mesh": 0, "translation": [0, 2, 0]}, {"mesh": 0, "scale": [3, 3, 3], "children": [2]},
             {"mesh": 0, "translation": [0, 1, 0]}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4})") + extraPrimitive + R"(]}],
-  "buffers": [)" + buffer + R"(],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4})") +
+           extraPrimitive + R"(]}],
+  "buffers": [)" +
+           buffer + R"(],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
-                {"bufferView": 1, "componentType": )" + std::to_string(indexType) + R"(, "count": )" +
-           std::to_string(indexCount) + R"(, "type": "SCALAR"}]})";
+                {"bufferView": 1, "componentType": )" +
+           std::to_string(indexType) + R"(, "count": )" + std::to_string(indexCount) + R"(, "type": "SCALAR"}]})";
 }
 
 std::string glb(std::string json, const std::string& bin) {
@@ -588,9 +610,10 @@ TEST_F(embree_loader, GltfAndGlbLoadWithNodeTransforms) {
     const std::string bin = quadBuffer();
     for (const bool binary : {false, true}) {
         EmbreeWorld world;
-        const fs::path path = binary ? write("quad.glb", glb(quadGltfJson("", static_cast<int>(bin.size())), bin))
-                                     : write("quad.gltf", quadGltfJson("data:application/octet-stream;base64," + base64(bin),
-                                                                      static_cast<int>(bin.size())));
+        const fs::path path =
+            binary ? write("quad.glb", glb(quadGltfJson("", static_cast<int>(bin.size())), bin))
+                   : write("quad.gltf", quadGltfJson("data:application/octet-stream;base64," + base64(bin),
+                                                     static_cast<int>(bin.size())));
         const auto result = world.loadGltf(path);
         ASSERT_TRUE(result.ok) << result.error;
         EXPECT_EQ(result.report.triangles, 6u);  // three nodes, two triangles each
@@ -643,16 +666,21 @@ std::vector<BadFile> badFiles() {
     cases.push_back({"ObjIndexOutOfRange", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n", false, "out of range"});
     // tinyobjloader alone reads these as 0, 1 or a truncated index: checkObjText refuses them.
     for (const char* value : {"nan", "inf", "abc", "+", ".", "1e", "0x10", "1,5", "1..2", "1e400", "1e39"})
-        cases.push_back({"ObjLenientNumber", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 ") + value + "\nf 1 2 3\n", false,
-                         "is not a finite decimal number"});
-    cases.push_back({"ObjTwoCoordinates", "bad.obj", "v 0 0 0\nv 1 0 0\nv 1 0\nf 1 2 3\n", false, "a vertex has 2 numbers"});
+        cases.push_back({"ObjLenientNumber", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 ") + value + "\nf 1 2 3\n",
+                         false, "is not a finite decimal number"});
+    cases.push_back(
+        {"ObjTwoCoordinates", "bad.obj", "v 0 0 0\nv 1 0 0\nv 1 0\nf 1 2 3\n", false, "a vertex has 2 numbers"});
     cases.push_back({"ObjFractionalIndex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3.7\n", false, "face corner"});
-    cases.push_back({"ObjWrappingIndex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 4294967299\n", false, "face corner"});
-    cases.push_back({"ObjNulByte", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n\0junk", 36), false, "NUL"});
+    cases.push_back(
+        {"ObjWrappingIndex", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 4294967299\n", false, "face corner"});
+    cases.push_back(
+        {"ObjNulByte", "bad.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n\0junk", 36), false, "NUL"});
     cases.push_back({"ObjNoFaces", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\n", false, "no triangles"});
     cases.push_back({"ObjEmpty", "bad.obj", "", false, "no triangles"});
-    cases.push_back({"ObjOnlyDegenerate", "bad.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", false, "no usable triangles"});
-    cases.push_back({"MalformedGltfJson", "bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [", false, "malformed glTF"});
+    cases.push_back(
+        {"ObjOnlyDegenerate", "bad.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", false, "no usable triangles"});
+    cases.push_back({"MalformedGltfJson", "bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [", false,
+                     "malformed glTF"});
     cases.push_back({"GltfNotJson", "bad.gltf", "hello", false, "malformed glTF"});
     cases.push_back({"TruncatedGlb", "bad.glb", full.substr(0, full.size() - 10), false, "malformed GLB"});
     cases.push_back({"TruncatedGlbHeader", "bad.glb", full.substr(0, 10), false, "malformed GLB"});
@@ -668,26 +696,32 @@ std::vector<BadFile> badFiles() {
         return text;
     };
     const std::string json = quadGltfJson("", n);
-    cases.push_back({"GlbAccessorOffsetWraps", "bad.glb",
-                     glb(replaced(json, R"("bufferView": 1, )", R"("bufferView": 1, "byteOffset": 18446744073709551568, )"), bin),
-                     false, "reaches past"});
+    cases.push_back(
+        {"GlbAccessorOffsetWraps", "bad.glb",
+         glb(replaced(json, R"("bufferView": 1, )", R"("bufferView": 1, "byteOffset": 18446744073709551568, )"), bin),
+         false, "reaches past"});
     cases.push_back({"GlbViewOffsetWraps", "bad.glb",
-                     glb(replaced(json, R"("byteOffset": 48, "byteLength": 12)", R"("byteOffset": 18446744073709551568, "byteLength": 64)"), bin),
+                     glb(replaced(json, R"("byteOffset": 48, "byteLength": 12)",
+                                  R"("byteOffset": 18446744073709551568, "byteLength": 64)"),
+                         bin),
                      false, ""});
     cases.push_back({"GlbStrideSmallerThanAnElement", "bad.glb",
-                     glb(replaced(json, R"("byteOffset": 0, "byteLength": 48)", R"("byteOffset": 0, "byteLength": 48, "byteStride": 4)"), bin),
+                     glb(replaced(json, R"("byteOffset": 0, "byteLength": 48)",
+                                  R"("byteOffset": 0, "byteLength": 48, "byteStride": 4)"),
+                         bin),
                      false, "byteStride"});
     cases.push_back({"GlbSceneOutOfRange", "bad.glb", glb(replaced(json, R"("scene": 0)", R"("scene": 5)"), bin), false,
                      "scene 5 does not exist"});
-    cases.push_back({"GlbNegativeIndices", "bad.glb", glb(replaced(json, R"("indices": 1)", R"("indices": -5)"), bin), false,
-                     "does not exist"});
+    cases.push_back({"GlbNegativeIndices", "bad.glb", glb(replaced(json, R"("indices": 1)", R"("indices": -5)"), bin),
+                     false, "does not exist"});
     cases.push_back({"GlbZeroRotation", "bad.glb",
                      glb(replaced(json, R"("translation": [0, 2, 0])", R"("rotation": [0, 0, 0, 0])"), bin), false,
                      "unit quaternion"});
-    cases.push_back({"GlbNodeCycle", "bad.glb", glb(replaced(json, R"("translation": [0, 1, 0])", R"("children": [1])"), bin),
-                     false, "node 1"});
-    cases.push_back({"GlbRootWithParent", "bad.glb", glb(replaced(json, R"([{"nodes": [0, 1]}])", R"([{"nodes": [0, 2]}])"), bin),
-                     false, "not a root"});
+    cases.push_back({"GlbNodeCycle", "bad.glb",
+                     glb(replaced(json, R"("translation": [0, 1, 0])", R"("children": [1])"), bin), false, "node 1"});
+    cases.push_back({"GlbRootWithParent", "bad.glb",
+                     glb(replaced(json, R"([{"nodes": [0, 1]}])", R"([{"nodes": [0, 2]}])"), bin), false,
+                     "not a root"});
     // 40 nodes each listing the next one twice: 2^40 visits if walked as given.
     std::string chain = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [)";
     for (int i = 0; i < 40; ++i)
@@ -700,7 +734,8 @@ std::vector<BadFile> badFiles() {
     version1[4] = 1;
     cases.push_back({"GlbVersion1", "bad.glb", version1, false, "GLB version 1"});
     // Buffer files: inside the glTF's folder, regular files only.
-    cases.push_back({"GltfBufferOutsideItsFolder", "sub/bad.gltf", quadGltfJson("../outside.bin", n), false, "outside the glTF's folder"});
+    cases.push_back({"GltfBufferOutsideItsFolder", "sub/bad.gltf", quadGltfJson("../outside.bin", n), false,
+                     "outside the glTF's folder"});
     cases.push_back({"GltfBufferAbsolutePath", "bad.gltf", quadGltfJson("/etc/hostname", n), false, ""});
     cases.push_back({"GltfBufferDevice", "bad.gltf", quadGltfJson("/dev/zero", n), false, ""});
     cases.push_back({"GltfBufferDirectory", "bad.gltf", quadGltfJson(".", n), false, ""});
@@ -755,9 +790,9 @@ TEST(embree_mesh, SegmentsFarBeyondFloatRaysStillGetTheExactAnswer) {
     ASSERT_EQ(reference.add(Triangle{vertices[0], vertices[3], vertices[2]}), Status::Ok);
     ASSERT_EQ(reference.add(Triangle{vertices[0], vertices[2], vertices[1]}), Status::Ok);
     const SegmentCast casts[] = {
-        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.0f},       // through the quad, from far above
-        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.5f},       // the same, swept
-        {r3(2e18, 1, 0), Vec3(-4e18f, 0, 0), 0.0f},       // beside it
+        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.0f},          // through the quad, from far above
+        {r3(1, 2e18, 1), Vec3(0, -4e18f, 0), 0.5f},          // the same, swept
+        {r3(2e18, 1, 0), Vec3(-4e18f, 0, 0), 0.0f},          // beside it
         {r3(1e17, 1e17, 0), Vec3(-1e19f, -1e19f, 0), 0.0f},  // 1e17 m/s for 100 s
     };
     for (const SegmentCast& cast : casts) {

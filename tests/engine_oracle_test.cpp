@@ -49,7 +49,7 @@ using Random = ftest::Random;
 
 struct Box {
     DVec3 center{0.0}, half{0.5};
-    double yaw = 0.0;  // rotation about y (about z for box2d) [rad]
+    double yaw = 0.0;                            // rotation about y (about z for box2d) [rad]
     double restitution = -1.0, friction = -1.0;  // the box's own material (negative: none)
 };
 
@@ -69,7 +69,7 @@ struct Throw {
     int steps = 180;
     double radius = 0.1;
     DVec3 position{0.0}, velocity{0.0};
-    std::optional<double> damping;  // the body's linear damping; absent: the engine's default
+    std::optional<double> damping;             // the body's linear damping; absent: the engine's default
     double restitution = 0.5, friction = 0.0;  // the contact's (combined) values
     std::vector<Box> boxes;
 };
@@ -131,7 +131,11 @@ std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCo
         t.engine = info.engine;
         t.scene = i >= freeCount;
         t.ownMaterials = i >= freeCount + sceneCount;
-        t.id = std::string(info.name) + (t.ownMaterials ? "-material-" : t.scene ? "-scene-" : "-free-") + std::to_string(i);
+        t.id = std::string(info.name) +
+               (t.ownMaterials ? "-material-"
+                : t.scene      ? "-scene-"
+                               : "-free-") +
+               std::to_string(i);
         t.hz = rates[random.below(4)];
         t.steps = 3 * t.hz;
         t.radius = random.uniform(0.05, 0.25);
@@ -157,7 +161,8 @@ std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCo
                     b.half = DVec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), 0.5);
                     b.yaw = random.uniform(-0.3, 0.3);
                 } else {
-                    b.center = DVec3(distance * std::cos(around), random.uniform(0.5, 2.0), distance * std::sin(around));
+                    b.center =
+                        DVec3(distance * std::cos(around), random.uniform(0.5, 2.0), distance * std::sin(around));
                     b.half = DVec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1.0, 4.0));
                     b.yaw = random.uniform(0.0, M_PI);
                 }
@@ -187,10 +192,19 @@ void materials(const Throw& t, Json& body, Json& box) {
     const EngineProfile p = engineProfile(t.engine);
     auto split = [](CombineRule rule, double value, double& a, double& b) {
         switch (rule) {
-        case CombineRule::Max:
-        case CombineRule::SumClamped: a = value; b = 0.0; break;
-        case CombineRule::Multiply: a = value; b = 1.0; break;
-        default: a = value; b = value; break;
+            case CombineRule::Max:
+            case CombineRule::SumClamped:
+                a = value;
+                b = 0.0;
+                break;
+            case CombineRule::Multiply:
+                a = value;
+                b = 1.0;
+                break;
+            default:
+                a = value;
+                b = value;
+                break;
         }
     };
     double be, se, bf, sf;
@@ -319,16 +333,18 @@ std::string runCommand(const std::string& command) {
     char buffer[4096];
     while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
     const int status = pclose(pipe);
-    if (status != 0) output = "exit status " + std::to_string(status) + ": " + output;
-    else output.clear();
+    if (status != 0)
+        output = "exit status " + std::to_string(status) + ": " + output;
+    else
+        output.clear();
     return output;
 }
 
 class EngineOracle : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                          ("foresight-engines-" + std::to_string(::getpid()));
+        const std::filesystem::path dir =
+            std::filesystem::temp_directory_path() / ("foresight-engines-" + std::to_string(::getpid()));
         std::filesystem::create_directories(dir);
         std::map<std::string, Json> casesByRuntime;
         for (const EngineInfo& info : kEngines) {
@@ -383,10 +399,11 @@ protected:
     void check(const char* engineName) {
         if (!sHeaderPrinted) {
             sHeaderPrinted = true;
-            std::printf("| engine | free flight: worst step error [m] | free flight end: exact / stepped [m] | "
-                        "first bounce on the engine's step | end within 2 cm (exact, stepped) | "
-                        "median end error [m] (exact, stepped) | own box materials: first bounce, end |\n"
-                        "|---|---|---|---|---|---|---|\n");
+            std::printf(
+                "| engine | free flight: worst step error [m] | free flight end: exact / stepped [m] | "
+                "first bounce on the engine's step | end within 2 cm (exact, stepped) | "
+                "median end error [m] (exact, stepped) | own box materials: first bounce, end |\n"
+                "|---|---|---|---|---|---|---|\n");
         }
         const EngineInfo* info = nullptr;
         for (const EngineInfo& e : kEngines)
@@ -447,8 +464,10 @@ protected:
                 for (std::size_t k = 0; k < run.positions.size(); ++k) {
                     const DVec3 a = run.positions[k], b = engine.positions[k];
                     const DVec3 va = run.velocities[k], vb = engine.velocities[k];
-                    std::printf("%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f\n",
-                                k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+                    std::printf(
+                        "%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f "
+                        "%8.4f\n",
+                        k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
                 }
             }
             if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))

@@ -38,51 +38,51 @@ State stepLoop(PhysicsEngine engine, float timestep, float damping, long double 
             long double& v = s.v[i];
             long double& p = s.p[i];
             switch (engine) {
-            case PhysicsEngine::Jolt:
-            case PhysicsEngine::PhysX:
-                v = (v + g[i] * h) * std::max(0.0L, 1.0L - damping * h);
-                p += v * h;
-                break;
-            case PhysicsEngine::Rapier: {
-                const long double sub = h / substeps;
-                for (int j = 0; j < substeps; ++j) {
-                    v += g[i] * sub;
-                    p += v * sub;
-                }
-                v *= 1.0L / (1.0L + damping * h);
-                break;
-            }
-            case PhysicsEngine::Bullet:
-                v = v * std::pow(1.0L - std::min(1.0L, static_cast<long double>(damping)), h) + g[i] * h;
-                p += v * h;
-                break;
-            case PhysicsEngine::Godot3:
-                if (k == 1) {
+                case PhysicsEngine::Jolt:
+                case PhysicsEngine::PhysX:
+                    v = (v + g[i] * h) * std::max(0.0L, 1.0L - damping * h);
                     p += v * h;
-                } else {
-                    v = v * std::max(0.0L, 1.0L - damping * h) + g[i] * h;
-                    p += v * h;
-                }
-                break;
-            case PhysicsEngine::Godot3Bullet:
-                // The body's damping plus the project default 0.1.
-                if (k == 1) {
-                    v = v * (1.0L - (damping + 0.1L) * h);
-                } else {
-                    v = v * (1.0L - (damping + 0.1L) * h) + g[i] * h;
-                }
-                p += v * h;
-                break;
-            case PhysicsEngine::Box2D:
-                if (i == 2) {  // motion in the x-y plane
-                    v = 0.0L;
+                    break;
+                case PhysicsEngine::Rapier: {
+                    const long double sub = h / substeps;
+                    for (int j = 0; j < substeps; ++j) {
+                        v += g[i] * sub;
+                        p += v * sub;
+                    }
+                    v *= 1.0L / (1.0L + damping * h);
                     break;
                 }
-                v = (v + g[i] * h) / (1.0L + damping * h);
-                p += v * h;
-                break;
-            case PhysicsEngine::Custom:
-                break;
+                case PhysicsEngine::Bullet:
+                    v = v * std::pow(1.0L - std::min(1.0L, static_cast<long double>(damping)), h) + g[i] * h;
+                    p += v * h;
+                    break;
+                case PhysicsEngine::Godot3:
+                    if (k == 1) {
+                        p += v * h;
+                    } else {
+                        v = v * std::max(0.0L, 1.0L - damping * h) + g[i] * h;
+                        p += v * h;
+                    }
+                    break;
+                case PhysicsEngine::Godot3Bullet:
+                    // The body's damping plus the project default 0.1.
+                    if (k == 1) {
+                        v = v * (1.0L - (damping + 0.1L) * h);
+                    } else {
+                        v = v * (1.0L - (damping + 0.1L) * h) + g[i] * h;
+                    }
+                    p += v * h;
+                    break;
+                case PhysicsEngine::Box2D:
+                    if (i == 2) {  // motion in the x-y plane
+                        v = 0.0L;
+                        break;
+                    }
+                    v = (v + g[i] * h) / (1.0L + damping * h);
+                    p += v * h;
+                    break;
+                case PhysicsEngine::Custom:
+                    break;
             }
         }
     }
@@ -100,12 +100,12 @@ struct FlightCase {
 
 TEST(EngineProfile, FreeFlightClosedFormMatchesSteppingEveryEngine) {
     const FlightCase cases[] = {
-        {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.05f, 180},  {PhysicsEngine::Jolt, 1.0f / 30.0f, 1.5f, 90},
-        {PhysicsEngine::PhysX, 1.0f / 120.0f, 0.7f, 360}, {PhysicsEngine::Rapier, 1.0f / 60.0f, 0.0f, 180},
-        {PhysicsEngine::Rapier, 1.0f / 90.0f, 1.2f, 270}, {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.3f, 180},
-        {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.0f, 180}, {PhysicsEngine::Godot3, 1.0f / 60.0f, 0.1f, 180},
-        {PhysicsEngine::Godot3, 1.0f / 45.0f, 0.0f, 1},   {PhysicsEngine::Godot3Bullet, 1.0f / 60.0f, 0.0f, 180},
-        {PhysicsEngine::Box2D, 1.0f / 60.0f, 0.5f, 180},  {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.0f, 0},
+        {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.05f, 180},    {PhysicsEngine::Jolt, 1.0f / 30.0f, 1.5f, 90},
+        {PhysicsEngine::PhysX, 1.0f / 120.0f, 0.7f, 360},   {PhysicsEngine::Rapier, 1.0f / 60.0f, 0.0f, 180},
+        {PhysicsEngine::Rapier, 1.0f / 90.0f, 1.2f, 270},   {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.3f, 180},
+        {PhysicsEngine::Bullet, 1.0f / 60.0f, 0.0f, 180},   {PhysicsEngine::Godot3, 1.0f / 60.0f, 0.1f, 180},
+        {PhysicsEngine::Godot3, 1.0f / 45.0f, 0.0f, 1},     {PhysicsEngine::Godot3Bullet, 1.0f / 60.0f, 0.0f, 180},
+        {PhysicsEngine::Box2D, 1.0f / 60.0f, 0.5f, 180},    {PhysicsEngine::Jolt, 1.0f / 60.0f, 0.0f, 0},
         {PhysicsEngine::Jolt, 1.0f / 60.0f, 1e-7f, 100000},
     };
     long double p0[3] = {1.0L, 1.5L, -2.0L}, v0[3] = {3.0L, 4.0L, 5.0L}, g[3] = {0.0L, -9.81L, 0.0L};
@@ -143,7 +143,7 @@ TEST(EngineProfile, MeasuredFreeFallOfTheReferenceThrow) {
         float damping;
         double y;
     };
-    const Expect expects[] = {{PhysicsEngine::Jolt, 0.0f, -30.890}, {PhysicsEngine::PhysX, 0.0f, -30.890},
+    const Expect expects[] = {{PhysicsEngine::Jolt, 0.0f, -30.890},   {PhysicsEngine::PhysX, 0.0f, -30.890},
                               {PhysicsEngine::Bullet, 0.0f, -30.890}, {PhysicsEngine::Rapier, 0.0f, -30.706},
                               {PhysicsEngine::Godot3, 0.0f, -30.400}, {PhysicsEngine::Godot3Bullet, 0.0f, -28.003}};
     for (const Expect& e : expects) {
@@ -224,8 +224,7 @@ TEST(EngineProjectile, RestsOnAFloorAndBouncesAboveTheThreshold) {
     settings.friction = 0.0f;
     std::vector<TrajectoryPoint> points(400);
     ProjectileResult result;
-    ASSERT_EQ(predictProjectile(RVec3(0, 2.0f, 0), Vec3(1, 0, 0), 5.0f, settings, &world, points, result),
-              Status::Ok);
+    ASSERT_EQ(predictProjectile(RVec3(0, 2.0f, 0), Vec3(1, 0, 0), 5.0f, settings, &world, points, result), Status::Ok);
     EXPECT_GE(result.bounces, 1u);
     // Bounces below Jolt's 1 m/s threshold stop: the sphere ends on the floor (its slop 0.02 m
     // is the deepest it may rest), sliding at the start speed times the damping.
@@ -259,11 +258,13 @@ TEST(EngineProjectile, BulletMeshTrianglesAreDoubleSided) {
     std::vector<TrajectoryPoint> points(100);
     for (const bool mesh : {false, true}) {
         ProjectileResult result;
-        ASSERT_EQ(predictProjectile(RVec3(0, 0.15f, 0), Vec3(0, -20, 0), 1.0f, bulletOnMesh(mesh), &world, points,
-                                    result),
-                  Status::Ok);
-        if (mesh) EXPECT_LT(result.position.y, -5.0f);
-        else EXPECT_GT(result.position.y, 0.05f);
+        ASSERT_EQ(
+            predictProjectile(RVec3(0, 0.15f, 0), Vec3(0, -20, 0), 1.0f, bulletOnMesh(mesh), &world, points, result),
+            Status::Ok);
+        if (mesh)
+            EXPECT_LT(result.position.y, -5.0f);
+        else
+            EXPECT_GT(result.position.y, 0.05f);
     }
 }
 
@@ -277,8 +278,8 @@ TEST(EngineProjectile, BulletMeshContactsNeedTheBoundingBoxToReachTheTriangle) {
     const float dt = 1.0f / 60.0f;
     for (const bool mesh : {false, true}) {
         ProjectileResult result;
-        ASSERT_EQ(predictProjectile(RVec3(0, 0.102f, 0), Vec3(0, -0.05f, 0), 2 * dt, bulletOnMesh(mesh), &world,
-                                    points, result),
+        ASSERT_EQ(predictProjectile(RVec3(0, 0.102f, 0), Vec3(0, -0.05f, 0), 2 * dt, bulletOnMesh(mesh), &world, points,
+                                    result),
                   Status::Ok);
         const double free = 0.102 - (0.05 + 9.81 * dt) * dt;
         EXPECT_NEAR(points[1].position.y, mesh ? free : 0.1, 1e-6) << (mesh ? "mesh" : "box");
@@ -324,8 +325,8 @@ namespace {
 
 // Forwards to a world and counts the queries; with `answerTouch` false it leaves mayTouch at
 // CollisionWorld's default (always true), so the Engine method casts every free-flight step
-// (and firstTouch says "at once"); with `answerPlane` false it leaves isOnlyPlane at its default (false), so it casts every step
-// in contact.
+// (and firstTouch says "at once"); with `answerPlane` false it leaves isOnlyPlane at its default
+// (false), so it casts every step in contact.
 class CountingWorld final : public CollisionWorld {
 public:
     CountingWorld(const CollisionWorld& world, bool answerTouch, bool answerPlane = false)
@@ -399,9 +400,9 @@ TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
     std::size_t castsEveryStep = 0, castsCoasting = 0;
     for (int round = 0; round < 40; ++round) {
         const StaticWorld world = randomScene(random);
-        for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
-                                     PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
-                                     PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
+        for (PhysicsEngine engine :
+             {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX, PhysicsEngine::Rapier,
+              PhysicsEngine::Bullet, PhysicsEngine::Godot3, PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
             const ProjectileSettings settings = randomEngineSettings(random, engine, 0.2);
             const RVec3 start(random.uniform(-1, 1), random.uniform(0.5, 2), random.uniform(-1, 1));
             const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(3, 15);
@@ -466,15 +467,16 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
     for (int round = 0; round < 24; ++round) {
         const bool tiled = round % 2 == 1;
         const StaticWorld world = tiled ? tiledScene(random, 7) : randomScene(random);
-        for (PhysicsEngine engine : {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
-                                     PhysicsEngine::Rapier, PhysicsEngine::Bullet, PhysicsEngine::Godot3,
-                                     PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
+        for (PhysicsEngine engine :
+             {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX, PhysicsEngine::Rapier,
+              PhysicsEngine::Bullet, PhysicsEngine::Godot3, PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
             ProjectileSettings settings = randomEngineSettings(random, engine, 0.0);
             settings.engine.triangleMesh = tiled && random.below(2) == 1;
             // Low, fast throws: most of the 4 s is rolling and sliding.
             const RVec3 start(random.uniform(-1, 1), random.uniform(0.3, 1), random.uniform(-1, 1));
             const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(2, 9);
-            const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(-2, 2)),
+            const Vec3 velocity(static_cast<float>(speed * std::cos(heading)),
+                                static_cast<float>(random.uniform(-2, 2)),
                                 static_cast<float>(speed * std::sin(heading)));
             const float time = 4.0f;
             CountingWorld plain(world, true, false), coasting(world, true, true);
@@ -498,9 +500,10 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
             fell += ra.position.y < -1.0f ? 1 : 0;
         }
     }
-    std::printf("[ contact coasting ] %zu queries against %zu casting every step, %zu promises, %zu balls off the "
-                "tiles, largest difference %.2e m\n",
-                castsCoasting, castsEveryStep, promises, fell, worst);
+    std::printf(
+        "[ contact coasting ] %zu queries against %zu casting every step, %zu promises, %zu balls off the "
+        "tiles, largest difference %.2e m\n",
+        castsCoasting, castsEveryStep, promises, fell, worst);
     EXPECT_GT(fell, 0u) << "no ball left the tiled floor: its border was never tested";
     // Many of these steps roll or slide in the open: contact coasting must save at least a fifth
     // of the queries (a third today; Rapier and Box2D rarely coast: their resting sphere sits
@@ -583,8 +586,9 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
         for (int i = 0; i < 50; ++i) {
             SegmentCast capsule;
             capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));
-            capsule.displacement = Vec3(static_cast<float>(random.uniform(-3, 3)), static_cast<float>(random.uniform(-3, 3)),
-                                        static_cast<float>(random.uniform(-3, 3)));
+            capsule.displacement =
+                Vec3(static_cast<float>(random.uniform(-3, 3)), static_cast<float>(random.uniform(-3, 3)),
+                     static_cast<float>(random.uniform(-3, 3)));
             capsule.radius = static_cast<float>(random.uniform(0, 0.8));
             if (world.mayTouch(capsule)) {
                 ++touched;
@@ -597,8 +601,9 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
                 // what the radius difference leaves.
                 const double r = capsule.radius * random.uniform(0, 0.9);
                 const double slack = (capsule.radius - r) * 0.9;
-                const ftest::DVec3 side = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
-                                   random.uniform(0, slack);
+                const ftest::DVec3 side =
+                    glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
+                    random.uniform(0, slack);
                 const ftest::DVec3 from = a + d * random.uniform(0, 1) + side, to = a + d * random.uniform(0, 1) + side;
                 SegmentCast cast;
                 cast.origin = RVec3(from);
@@ -625,8 +630,9 @@ TEST(StaticWorldTouch, NoCastBeforeTheFirstTouchHits) {
         for (int i = 0; i < 50; ++i) {
             SegmentCast capsule;
             capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));
-            capsule.displacement = Vec3(static_cast<float>(random.uniform(-6, 6)), static_cast<float>(random.uniform(-6, 6)),
-                                        static_cast<float>(random.uniform(-6, 6)));
+            capsule.displacement =
+                Vec3(static_cast<float>(random.uniform(-6, 6)), static_cast<float>(random.uniform(-6, 6)),
+                     static_cast<float>(random.uniform(-6, 6)));
             capsule.radius = static_cast<float>(random.uniform(0, 0.8));
             float fraction = -1.0f;
             double reach = 1.0;
@@ -647,10 +653,12 @@ TEST(StaticWorldTouch, NoCastBeforeTheFirstTouchHits) {
             for (int k = 0; k < 8; ++k) {
                 const double r = capsule.radius * random.uniform(0, 0.9);
                 const double slack = (capsule.radius - r) * 0.9;
-                const ftest::DVec3 side = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
-                                   random.uniform(0, slack);
+                const ftest::DVec3 side =
+                    glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
+                    random.uniform(0, slack);
                 // 0.999: the cut's own end is where the first surface may touch.
-                const ftest::DVec3 from = a + d * random.uniform(0, 0.999) + side, to = a + d * random.uniform(0, 0.999) + side;
+                const ftest::DVec3 from = a + d * random.uniform(0, 0.999) + side,
+                                   to = a + d * random.uniform(0, 0.999) + side;
                 SegmentCast cast;
                 cast.origin = RVec3(from);
                 cast.displacement = Vec3(to - from);
@@ -674,7 +682,8 @@ TEST(StaticWorldTouch, FirstTouchIsExactForSpheresPlanesAndFacesMetHeadOn) {
     ftest::Random random(79);
     for (int i = 0; i < 2000; ++i) {
         const double radius = random.uniform(0.0, 0.5), length = random.uniform(1.0, 10.0);
-        const ftest::DVec3 direction = glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, -0.2), random.uniform(-1, 1)));
+        const ftest::DVec3 direction =
+            glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, -0.2), random.uniform(-1, 1)));
         const ftest::DVec3 start(random.uniform(-2, 2), random.uniform(3, 6), random.uniform(-2, 2));
         SegmentCast capsule;
         capsule.origin = RVec3(start);
@@ -694,7 +703,8 @@ TEST(StaticWorldTouch, FirstTouchIsExactForSpheresPlanesAndFacesMetHeadOn) {
         }
 
         // A sphere on the segment's way, 0.3 m off its line: |a + t d - c| = R + s.
-        const Sphere sphere{RVec3(a + d * random.uniform(0.3, 0.9) + ftest::DVec3(0.3, 0, 0)), static_cast<float>(random.uniform(0.1, 1))};
+        const Sphere sphere{RVec3(a + d * random.uniform(0.3, 0.9) + ftest::DVec3(0.3, 0, 0)),
+                            static_cast<float>(random.uniform(0.1, 1))};
         const ftest::DVec3 c = ftest::toD(sphere.center), offset = a - c;
         const double reach = radius + static_cast<double>(sphere.radius);
         const double A = glm::dot(d, d), B = glm::dot(d, offset), C = glm::dot(offset, offset) - reach * reach;

@@ -59,10 +59,11 @@ TEST(NetsimTrajectory, BuiltinDerivativesMatchFiniteDifferences) {
 }
 
 TEST(NetsimTrajectory, SpeedsAreTheDocumentedOnes) {
-    for (const auto& [name, speed] : std::vector<std::pair<std::string, double>>{
-             {"slalom", 20}, {"circuit", 20}, {"aircraft-turn", 120}}) {
+    for (const auto& [name, speed] :
+         std::vector<std::pair<std::string, double>>{{"slalom", 20}, {"circuit", 20}, {"aircraft-turn", 120}}) {
         const Trajectory t = builtin(name);
-        for (double time = 0; time <= 60; time += 0.7) EXPECT_NEAR(glm::length(t.sample(time).velocity), speed, 1e-9) << name;
+        for (double time = 0; time <= 60; time += 0.7)
+            EXPECT_NEAR(glm::length(t.sample(time).velocity), speed, 1e-9) << name;
     }
     // The character runs at 6 m/s between its 0.25 s direction changes.
     const Trajectory run = builtin("run-strafe");
@@ -135,10 +136,11 @@ TEST(NetsimCsv, VelocitiesFromDifferencesAreExactForAParabola) {
 TEST(NetsimCsv, OrientationAndAngularVelocityColumns) {
     // A quarter turn about +Y over 1 s, columns in any order, spaces and a comment allowed.
     const double c = std::cos(M_PI / 8), s = std::sin(M_PI / 8);
-    const std::string text = "# yaw\nqw, qx, qy, qz, t, x, y, z, vx, vy, vz\n"
-                             "1,0,0,0, 0, 0,0,0, 1,0,0\n" +
-                             std::to_string(c) + ",0," + std::to_string(s) + ",0, 0.5, 0.5,0,0, 1,0,0\n" +
-                             "0.70710678118654752,0,0.70710678118654752,0, 1, 1,0,0, 1,0,0\n";
+    const std::string text =
+        "# yaw\nqw, qx, qy, qz, t, x, y, z, vx, vy, vz\n"
+        "1,0,0,0, 0, 0,0,0, 1,0,0\n" +
+        std::to_string(c) + ",0," + std::to_string(s) + ",0, 0.5, 0.5,0,0, 1,0,0\n" +
+        "0.70710678118654752,0,0.70710678118654752,0, 1, 1,0,0, 1,0,0\n";
     Trajectory t;
     std::string error;
     ASSERT_TRUE(parseTrajectoryCsv(text, "yaw.csv", t, error)) << error;
@@ -174,7 +176,8 @@ TEST(NetsimCsv, ErrorsNameTheLineAndColumn) {
         {"t,x,y,z,wx,wy,wz\n0,0,0,0,0,1e39,0\n1,1,0,0,0,0,0\n", "f.csv:2: the angular velocity is beyond 1e30"},
         // Distinct times that the first row's time swallows: not silently merged.
         // (1e17 and the next double, 1e17 + 16, both become 2e17 once -1e17 is taken away.)
-        {"t,x,y,z\n-1e17,0,0,0\n1e17,0,0,0\n1.0000000000000002e17,1,0,0\n", "f.csv:4: times 1e+17 and 1e+17 are too close"},
+        {"t,x,y,z\n-1e17,0,0,0\n1e17,0,0,0\n1.0000000000000002e17,1,0,0\n",
+         "f.csv:4: times 1e+17 and 1e+17 are too close"},
     };
     for (const auto& c : cases) {
         const std::string error = csvError(c.text);
@@ -243,7 +246,7 @@ TEST(NetsimLink, LossIsWithinBinomialBoundsAndDelaysWithinTheJitter) {
     EXPECT_NEAR(lost, 10000, 475);
     EXPECT_GE(low, 0.08);
     EXPECT_LE(high, 0.12);
-    EXPECT_LT(low, 0.0801);   // 90000 uniform draws reach within 1e-4 of the ends
+    EXPECT_LT(low, 0.0801);  // 90000 uniform draws reach within 1e-4 of the ends
     EXPECT_GT(high, 0.1199);
     EXPECT_NEAR(sum / (n - lost), 0.1, 1e-3);  // uniform: mean = latency (sd 3.8e-5 of the mean)
 }
@@ -445,13 +448,15 @@ TEST(NetsimReport, TablesNameEveryRowAndTheSvgHasItsAxes) {
     std::string error;
     ASSERT_TRUE(simulateTrajectory(builtin("slalom", 5), settings, true, results[0], error)) << error;
     const std::string markdown = markdownTable(results, settings);
-    EXPECT_EQ(markdown.rfind("| Trajectory | Model | Updates/s | snap | linear | pvb | decay | interpolate |\n", 0), 0u);
+    EXPECT_EQ(markdown.rfind("| Trajectory | Model | Updates/s | snap | linear | pvb | decay | interpolate |\n", 0),
+              0u);
     EXPECT_NE(markdown.find("| slalom | RPB |"), std::string::npos);
     const std::string text = textTable(results, settings);
     EXPECT_NE(text.find("slalom           FPW    interpolate"), std::string::npos) << text;
     const std::string svg = svgChart(results[0], 1, settings);
-    for (const char* part : {"<svg", "time [s]", "position error [m]", "slalom, RPB", "snap (p95", "interpolate (p95", "</svg>"})
+    for (const char* part :
+         {"<svg", "time [s]", "position error [m]", "slalom, RPB", "snap (p95", "interpolate (p95", "</svg>"})
         EXPECT_NE(svg.find(part), std::string::npos) << part;
 }
 
-} // namespace
+}  // namespace

@@ -19,13 +19,13 @@ std::string refusal(const std::string& text) {
 TEST(ObjCheck, AcceptsTheForms) {
     const char* valid[] = {
         "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n",
-        "v 0 0 0 1\nv 1 0 0 1.0\nv 0 0 1 1\nf 1 2 3\n",                 // w
-        "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 0 1 0 0 1\nf 1 2 3\n",       // vertex colours
-        "v -1.5e+2 +.5 3.\nv 1E-3 0 0\nv 0 0 1\nf -3 -2 -1\n",          // signs, exponents, relative
+        "v 0 0 0 1\nv 1 0 0 1.0\nv 0 0 1 1\nf 1 2 3\n",            // w
+        "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 0 1 0 0 1\nf 1 2 3\n",  // vertex colours
+        "v -1.5e+2 +.5 3.\nv 1E-3 0 0\nv 0 0 1\nf -3 -2 -1\n",     // signs, exponents, relative
         "v 0 0 0\r\nv 1 0 0\r\nv 0 0 1\r\nvn 0 1 0\r\nvt 0 0\r\nf 1/1/1 2//1 3/1\r\n",
         "# comment\n\n  v 0 0 0 # trailing\n\tv 1 0 0\nv 0 0 1\nf 1 2 3 # face\ng group\nusemtl x\nl 1 2\n",
-        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",               // polygons
-        "",                                                              // no faces: the loaders say so
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",  // polygons
+        "",                                                 // no faces: the loaders say so
     };
     for (const char* text : valid) EXPECT_EQ(refusal(text), "accepted") << text;
 }

@@ -16,8 +16,8 @@ using foresight::Quat;
 using foresight::Status;
 using foresight::Vec3;
 using ftest::DQuat;
-using ftest::DVec3;
 using ftest::dquatWXYZ;
+using ftest::DVec3;
 using ftest::quatWXYZ;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -43,7 +43,7 @@ TEST(Orientation, RotationFromAngularVelocityTiltedAxis) {
 TEST(Orientation, RotationRotatesVectorsAsExpected) {
     // pi/2 rad/s about +Z for 1 s turns +X into +Y (right-handed).
     const Quat r = foresight::rotationFromAngularVelocity(Vec3(0.0f, 0.0f, 1.5707963f), 1.0f);
-    EXPECT_VEC_NEAR(r * Vec3(1.0f, 0.0f, 0.0f), DVec3(0.0, 1.0, 0.0), 1e-6); // float rotation of a unit vector
+    EXPECT_VEC_NEAR(r * Vec3(1.0f, 0.0f, 0.0f), DVec3(0.0, 1.0, 0.0), 1e-6);  // float rotation of a unit vector
 }
 
 TEST(Orientation, LargeAngleWrapsCorrectly) {
@@ -59,8 +59,8 @@ TEST(Orientation, SmallAnglesAreAccurateRelatively) {
     // an absolute 1e-7 error would be a 0.2% error).
     const Quat r = foresight::rotationFromAngularVelocity(Vec3(1e-4f, 0.0f, 0.0f), 1.0f);
     const double expectedX = std::sin(0.5 * static_cast<double>(1e-4f));
-    EXPECT_NEAR(static_cast<double>(r.x), expectedX, expectedX * 1e-6); // float relative precision
-    EXPECT_NEAR(static_cast<double>(r.w), 1.0, 1e-7);                  // cos(5e-5) = 1 - 1.25e-9
+    EXPECT_NEAR(static_cast<double>(r.x), expectedX, expectedX * 1e-6);  // float relative precision
+    EXPECT_NEAR(static_cast<double>(r.w), 1.0, 1e-7);                    // cos(5e-5) = 1 - 1.25e-9
     EXPECT_EQ(r.y, 0.0f);
     EXPECT_EQ(r.z, 0.0f);
 }
@@ -118,7 +118,7 @@ TEST(Orientation, BodyFrameTurnsAboutTheBodyAxis) {
     // body-frame yaw about local Y turns local forward (+Z, which points to world -Y) about
     // world Z. The world-frame yaw turns it about world Y, which leaves world -Y unchanged.
     const Quat start = quatWXYZ(static_cast<float>(std::sqrt(0.5)), static_cast<float>(std::sqrt(0.5)), 0.0f, 0.0f);
-    const Vec3 w(0.0f, 1.0f, 0.0f); // 1 rad/s, 0.5 s: 0.5 rad
+    const Vec3 w(0.0f, 1.0f, 0.0f);  // 1 rad/s, 0.5 s: 0.5 rad
     Quat body;
     Quat world;
     ASSERT_EQ(foresight::predictOrientation(start, w, AngularFrame::Body, 0.5f, body), Status::Ok);
@@ -126,7 +126,7 @@ TEST(Orientation, BodyFrameTurnsAboutTheBodyAxis) {
     const Vec3 forward(0.0f, 0.0f, 1.0f);
     // Local +Z after the start orientation is world -Y; turning -Y by 0.5 rad about +Z gives
     // (sin 0.5, -cos 0.5, 0).
-    EXPECT_VEC_NEAR(body * forward, DVec3(std::sin(0.5), -std::cos(0.5), 0.0), 1e-6); // float unit vectors
+    EXPECT_VEC_NEAR(body * forward, DVec3(std::sin(0.5), -std::cos(0.5), 0.0), 1e-6);  // float unit vectors
     EXPECT_VEC_NEAR(world * forward, DVec3(0.0, -1.0, 0.0), 1e-6);
 }
 
@@ -137,7 +137,7 @@ TEST(Orientation, ZeroAngularVelocityLeavesOrientationUnchanged) {
             Quat out;
             ASSERT_EQ(foresight::predictOrientation(start, Vec3(0.0f), frame, t, out), Status::Ok);
             ASSERT_TRUE(ftest::finite(out));
-            EXPECT_QUAT_NEAR(out, start, 1e-7); // identity composition of a unit quaternion
+            EXPECT_QUAT_NEAR(out, start, 1e-7);  // identity composition of a unit quaternion
         }
     }
     const Quat r = foresight::rotationFromAngularVelocity(Vec3(0.0f), 5.0f);
@@ -157,11 +157,11 @@ TEST(Orientation, TinyAngularVelocityGivesNoNaN) {
             // The true angle |w| t is below 2e-24 rad: the identity to float precision.
             const double angle = glm::length(ftest::toD(w)) * static_cast<double>(t);
             const DVec3 axis = glm::normalize(ftest::toD(w));
-            EXPECT_QUAT_NEAR(r, ftest::dAxisAngle(axis, angle), 1e-6) << "t=" << t; // float trig
+            EXPECT_QUAT_NEAR(r, ftest::dAxisAngle(axis, angle), 1e-6) << "t=" << t;  // float trig
             Quat out;
             ASSERT_EQ(foresight::predictOrientation(glm::identity<Quat>(), w, AngularFrame::Body, t, out), Status::Ok);
             ASSERT_TRUE(ftest::finite(out));
-            EXPECT_NEAR(ftest::quatLength(out), 1.0, 1e-6); // unit within float rounding
+            EXPECT_NEAR(ftest::quatLength(out), 1.0, 1e-6);  // unit within float rounding
         }
     }
 }
@@ -181,11 +181,13 @@ TEST(Orientation, NonFiniteAndNegativeTimeAreRefused) {
     const Quat before = quatWXYZ(0.5f, 0.5f, 0.5f, 0.5f);
     const Quat good = glm::identity<Quat>();
     Quat out = before;
-    EXPECT_EQ(foresight::predictOrientation(quatWXYZ(kNaN, 0.0f, 0.0f, 0.0f), Vec3(0.0f), AngularFrame::Body, 1.0f, out),
-              Status::NonFiniteInput);
+    EXPECT_EQ(
+        foresight::predictOrientation(quatWXYZ(kNaN, 0.0f, 0.0f, 0.0f), Vec3(0.0f), AngularFrame::Body, 1.0f, out),
+        Status::NonFiniteInput);
     EXPECT_TRUE(ftest::sameBytes(out, before));
-    EXPECT_EQ(foresight::predictOrientation(quatWXYZ(1.0f, kInf, 0.0f, 0.0f), Vec3(0.0f), AngularFrame::World, 1.0f, out),
-              Status::NonFiniteInput);
+    EXPECT_EQ(
+        foresight::predictOrientation(quatWXYZ(1.0f, kInf, 0.0f, 0.0f), Vec3(0.0f), AngularFrame::World, 1.0f, out),
+        Status::NonFiniteInput);
     EXPECT_TRUE(ftest::sameBytes(out, before));
     EXPECT_EQ(foresight::predictOrientation(good, Vec3(0.0f, kNaN, 0.0f), AngularFrame::Body, 1.0f, out),
               Status::NonFiniteInput);
@@ -203,7 +205,7 @@ TEST(Orientation, NonFiniteAndNegativeTimeAreRefused) {
 TEST(Orientation, NormalizeQuaternion) {
     Quat out;
     ASSERT_EQ(foresight::normalizeQuaternion(quatWXYZ(0.0f, 3.0f, 0.0f, 4.0f), out), Status::Ok);
-    EXPECT_QUAT_NEAR(out, dquatWXYZ(0.0, 0.6, 0.0, 0.8), 1e-7); // 3-4-5: float division
+    EXPECT_QUAT_NEAR(out, dquatWXYZ(0.0, 0.6, 0.0, 0.8), 1e-7);  // 3-4-5: float division
     // Tiny but non-zero quaternions still normalise (no underflow to zero length).
     ASSERT_EQ(foresight::normalizeQuaternion(quatWXYZ(1e-30f, 0.0f, 0.0f, 0.0f), out), Status::Ok);
     EXPECT_QUAT_NEAR(out, dquatWXYZ(1.0, 0.0, 0.0, 0.0), 1e-7);
@@ -223,7 +225,7 @@ TEST(Orientation, ResultIsUnitLengthAndMatchesReference) {
         const Status status = foresight::predictOrientation(start, w, frame, t, out);
         if (ftest::quatLength(start) == 0.0) continue;
         ASSERT_EQ(status, Status::Ok);
-        EXPECT_NEAR(ftest::quatLength(out), 1.0, 1e-6); // float renormalisation: a few ulps of 1
+        EXPECT_NEAR(ftest::quatLength(out), 1.0, 1e-6);  // float renormalisation: a few ulps of 1
 
         DQuat q0 = ftest::toD(start);
         const double len = std::sqrt(q0.w * q0.w + q0.x * q0.x + q0.y * q0.y + q0.z * q0.z);
@@ -237,4 +239,4 @@ TEST(Orientation, ResultIsUnitLengthAndMatchesReference) {
     }
 }
 
-} // namespace
+}  // namespace

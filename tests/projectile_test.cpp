@@ -60,7 +60,7 @@ struct Prediction {
 };
 
 Prediction predict(RVec3 position, Vec3 velocity, float time, const ProjectileSettings& settings,
-            const foresight::CollisionWorld* world, std::size_t capacity = 0) {
+                   const foresight::CollisionWorld* world, std::size_t capacity = 0) {
     Prediction run;
     if (capacity == 0) capacity = foresight::trajectoryCapacity(time, settings, 256);
     run.points.resize(capacity);
@@ -75,7 +75,7 @@ using ftest::rv;
 // The article's loop, ported to double.
 
 struct DPlane {
-    DVec3 normal; // unit
+    DVec3 normal;  // unit
     double distance;
 };
 
@@ -105,9 +105,9 @@ std::optional<DHit> castPlanes(const std::vector<DPlane>& planes, const DVec3& o
         const double startAbove = glm::dot(plane.normal, origin) - plane.distance - radius;
         double fraction;
         if (std::abs(startAbove) <= tolerance) {
-            fraction = 0.0; // starts on the surface, moving in
+            fraction = 0.0;  // starts on the surface, moving in
         } else if (startAbove < 0.0 || startAbove + closing > 0.0) {
-            continue; // starts deep behind it, or ends in front of it
+            continue;  // starts deep behind it, or ends in front of it
         } else {
             fraction = startAbove / -closing;
         }
@@ -125,9 +125,9 @@ struct PortPoint {
 
 /// PredictProjectileMovement, ported: `steps` iterations of the article's loop (the caller
 /// supplies the count, computed independently from time and step).
-std::vector<PortPoint> articleProjectile(const DVec3& initialPosition, const DVec3& initialVelocity, int steps, double dt,
-                                         double restitution, const DVec3& gravity, const std::vector<DPlane>& planes,
-                                         double radius) {
+std::vector<PortPoint> articleProjectile(const DVec3& initialPosition, const DVec3& initialVelocity, int steps,
+                                         double dt, double restitution, const DVec3& gravity,
+                                         const std::vector<DPlane>& planes, double radius) {
     std::vector<PortPoint> points;
     DVec3 position = initialPosition;
     DVec3 velocity = initialVelocity;
@@ -212,13 +212,11 @@ struct Throw {
 };
 
 const Throw kThrows[] = {
-    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.0f}, // the scenario format's example grenade
-    {{1, 2, -1}, {3, 8, -2}, 3.0f, 0.7f, 0.0f},
-    {{0, 1, 0}, {0, 0, 0}, 2.0f, 0.5f, 0.0f},    // a drop
-    {{0, 1, 8}, {0, 2, 15}, 2.0f, 0.9f, 0.0f},   // into the wall early
-    {{0, 2, 0}, {1, 3, 4}, 3.0f, 0.3f, 0.0f},
-    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.2f}, // a sphere
-    {{-2, 3, 1}, {2, -1, 6}, 2.5f, 1.0f, 0.1f},  // elastic sphere
+    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.0f},  // the scenario format's example grenade
+    {{1, 2, -1}, {3, 8, -2}, 3.0f, 0.7f, 0.0f},  {{0, 1, 0}, {0, 0, 0}, 2.0f, 0.5f, 0.0f},     // a drop
+    {{0, 1, 8}, {0, 2, 15}, 2.0f, 0.9f, 0.0f},                                                 // into the wall early
+    {{0, 2, 0}, {1, 3, 4}, 3.0f, 0.3f, 0.0f},    {{0, 1.5, 0}, {0, 4, 12}, 3.0f, 0.5f, 0.2f},  // a sphere
+    {{-2, 3, 1}, {2, -1, 6}, 2.5f, 1.0f, 0.1f},                                                // elastic sphere
 };
 
 void compareStepped(const Prediction& run, const std::vector<PortPoint>& port, float step, const std::string& what) {
@@ -245,14 +243,14 @@ void compareStepped(const Prediction& run, const std::vector<PortPoint>& port, f
         }
         if (port[k].hit) {
             ++bounces;
-            EXPECT_VEC_NEAR(p.normal, port[k].normal, 1e-6); // float normal
+            EXPECT_VEC_NEAR(p.normal, port[k].normal, 1e-6);  // float normal
         }
     }
     EXPECT_EQ(run.result.bounces, bounces) << what;
     EXPECT_VEC_NEAR(run.result.position, port.back().position, 2e-5) << what;
     EXPECT_VEC_NEAR(run.result.velocity, port.back().velocity, 2e-5) << what;
     EXPECT_NEAR(static_cast<double>(run.result.time), static_cast<double>(steps) * static_cast<double>(step), 1e-5);
-    EXPECT_FALSE(run.result.atRest); // Stepped never reports rest
+    EXPECT_FALSE(run.result.atRest);  // Stepped never reports rest
 }
 
 TEST(ProjectileStepped, MatchesArticlePortOnPlaneWorlds) {
@@ -268,22 +266,22 @@ TEST(ProjectileStepped, MatchesArticlePortOnPlaneWorlds) {
                 settings.step = step;
                 const int steps = expectedSteps(t.time, step);
                 // The step at its decimal value (0.02f is 0.02 s), as projectile.h documents.
-                const std::vector<PortPoint> port =
-                    articleProjectile(t.position, t.velocity, steps, ftest::decimal(step),
-                                      static_cast<double>(t.restitution), DVec3(0.0, -kG, 0.0), pw.planes,
-                                      static_cast<double>(t.radius));
+                const std::vector<PortPoint> port = articleProjectile(
+                    t.position, t.velocity, steps, ftest::decimal(step), static_cast<double>(t.restitution),
+                    DVec3(0.0, -kG, 0.0), pw.planes, static_cast<double>(t.radius));
                 const std::string what = std::string(pw.name) + " throw v=" + ftest::describe(t.velocity) +
                                          " r=" + std::to_string(t.radius) + " step " + std::to_string(step);
                 compareStepped(predict(ftest::toR(t.position), ftest::toF(t.velocity), t.time, settings, &world), port,
                                step, what + " (StaticWorld)");
-                compareStepped(predict(ftest::toR(t.position), ftest::toF(t.velocity), t.time, settings, &callbackWorld),
-                               port, step, what + " (CallbackWorld)");
+                compareStepped(
+                    predict(ftest::toR(t.position), ftest::toF(t.velocity), t.time, settings, &callbackWorld), port,
+                    step, what + " (CallbackWorld)");
                 ++compared;
                 for (const PortPoint& p : port) bounced += p.hit ? 1 : 0;
             }
         }
     }
-    EXPECT_GT(bounced, 50); // the scenarios really bounce
+    EXPECT_GT(bounced, 50);  // the scenarios really bounce
     EXPECT_EQ(compared, 42);
 }
 
@@ -296,7 +294,7 @@ TEST(ProjectileStepped, StepCount) {
     EXPECT_EQ(foresight::steppedStepCount(0.02f, 0.02f), 1u);
     EXPECT_EQ(foresight::steppedStepCount(0.021f, 0.02f), 2u);
     EXPECT_EQ(foresight::steppedStepCount(2.0f, 0.02f), 100u);
-    EXPECT_EQ(foresight::steppedStepCount(0.001f, 0.02f), 1u); // any positive time takes a step
+    EXPECT_EQ(foresight::steppedStepCount(0.001f, 0.02f), 1u);  // any positive time takes a step
 }
 
 TEST(ProjectileStepped, ThreeSecondsAreOneHundredFiftySteps) {
@@ -306,19 +304,21 @@ TEST(ProjectileStepped, ThreeSecondsAreOneHundredFiftySteps) {
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_EQ(run.result.trajectorySize, 151u);
     EXPECT_EQ(run.result.trajectoryNeeded, 151u);
-    EXPECT_NEAR(static_cast<double>(run.result.time), 3.0, 1e-6); // 150 * 0.02f in float
+    EXPECT_NEAR(static_cast<double>(run.result.time), 3.0, 1e-6);  // 150 * 0.02f in float
     // Free flight: the exact parabola at t = 150 * 0.02 = 3 s: p + v t + g t^2 / 2.
     const double t = 150.0 * ftest::decimal(0.02f);
-    EXPECT_VEC_NEAR(run.result.position, DVec3(0.0, 1.5 + 4.0 * t - 0.5 * kG * t * t, 12.0 * t), 2e-4); // 150 float steps, |p| ~ 40 m
+    EXPECT_VEC_NEAR(run.result.position, DVec3(0.0, 1.5 + 4.0 * t - 0.5 * kG * t * t, 12.0 * t),
+                    2e-4);  // 150 float steps, |p| ~ 40 m
 }
 
 TEST(ProjectileStepped, ZeroTimeTakesNoStep) {
-    const Prediction run = predict(rv(1, 2, 3), Vec3(1.0f, 2.0f, 3.0f), 0.0f, makeSettings(ProjectileMethod::Stepped), nullptr, 16);
+    const Prediction run =
+        predict(rv(1, 2, 3), Vec3(1.0f, 2.0f, 3.0f), 0.0f, makeSettings(ProjectileMethod::Stepped), nullptr, 16);
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_VEC_NEAR(run.result.position, DVec3(1, 2, 3), 0.0);
     EXPECT_VEC_NEAR(run.result.velocity, DVec3(1, 2, 3), 0.0);
     EXPECT_EQ(run.result.time, 0.0f);
-    EXPECT_EQ(run.result.trajectorySize, 1u); // steps + 1
+    EXPECT_EQ(run.result.trajectorySize, 1u);  // steps + 1
 }
 
 // =============================================================================================
@@ -331,14 +331,14 @@ struct Bouncing {
     double height;
     double velocity;
     std::vector<double> impacts;
-    std::vector<double> impactSpeeds; // downward speed just before each impact
+    std::vector<double> impactSpeeds;  // downward speed just before each impact
 };
 
 Bouncing bounceOnFloor(double h, double v, double e, double g, double T) {
     Bouncing b{0.0, 0.0, {}, {}};
     double t = 0.0;
     for (int k = 0; k < 10000; ++k) {
-        const double tau = (v + std::sqrt(v * v + 2.0 * g * h)) / g; // time to reach 0
+        const double tau = (v + std::sqrt(v * v + 2.0 * g * h)) / g;  // time to reach 0
         if (t + tau > T) {
             const double s = T - t;
             b.height = h + v * s - 0.5 * g * s * s;
@@ -351,7 +351,7 @@ Bouncing bounceOnFloor(double h, double v, double e, double g, double T) {
         b.impactSpeeds.push_back(u);
         v = e * u;
         h = 0.0;
-        if (v < 1e-9) break; // at rest
+        if (v < 1e-9) break;  // at rest
     }
     b.height = 0.0;
     b.velocity = 0.0;
@@ -369,10 +369,10 @@ void expectStartAndEnd(const Prediction& run, float time, float step = 0.02f) {
     EXPECT_EQ(run.points.front().event, TrajectoryEvent::Start);
     EXPECT_EQ(run.points.front().time, 0.0f);
     EXPECT_EQ(run.points.back().event, TrajectoryEvent::End);
-    EXPECT_EQ(run.points.back().time, time); // exactly the requested time
+    EXPECT_EQ(run.points.back().time, time);  // exactly the requested time
     EXPECT_EQ(run.result.time, time);
     for (std::size_t k = 1; k < run.points.size(); ++k) {
-        EXPECT_GE(run.points[k].time, run.points[k - 1].time) << "point " << k; // ordered in time
+        EXPECT_GE(run.points[k].time, run.points[k - 1].time) << "point " << k;  // ordered in time
     }
 }
 
@@ -386,19 +386,19 @@ TEST(ProjectileExact, DropAndThrowOnFloorMatchBounceSequence) {
         float time;
     };
     const Case cases[] = {
-        {2.0, 0.0, 0.0, 0.0, 0.5f, 0.0f, 1.5f},  // drop, 2 bounces by 1.5 s
-        {2.0, 0.0, 0.0, 0.0, 0.5f, 0.0f, 1.8f},
-        {1.0, 3.0, 4.0, -1.0, 0.7f, 0.0f, 2.5f}, // throw up and forward
-        {1.0, 3.0, 4.0, -1.0, 0.7f, 0.25f, 2.5f}, // the same as a sphere: the centre stays 0.25 up
-        {0.5, -2.0, 6.0, 0.0, 0.9f, 0.0f, 3.0f},
-        {3.0, 1.0, -2.0, 2.0, 1.0f, 0.0f, 3.0f},  // elastic
+        {2.0, 0.0, 0.0, 0.0, 0.5f, 0.0f, 1.5f},                                             // drop, 2 bounces by 1.5 s
+        {2.0, 0.0, 0.0, 0.0, 0.5f, 0.0f, 1.8f},   {1.0, 3.0, 4.0, -1.0, 0.7f, 0.0f, 2.5f},  // throw up and forward
+        {1.0, 3.0, 4.0, -1.0, 0.7f, 0.25f, 2.5f},  // the same as a sphere: the centre stays 0.25 up
+        {0.5, -2.0, 6.0, 0.0, 0.9f, 0.0f, 3.0f},  {3.0, 1.0, -2.0, 2.0, 1.0f, 0.0f, 3.0f},  // elastic
     };
     for (const Case& c : cases) {
         const ProjectileSettings settings = makeSettings(ProjectileMethod::Exact, c.restitution, 0.0f, c.radius);
         const double r = static_cast<double>(c.radius);
-        const Prediction run = predict(rv(0.0, c.h + r, 0.0), ftest::toF(DVec3(c.vx, c.vy, c.vz)), c.time, settings, &world);
-        const std::string what = "h=" + std::to_string(c.h) + " v=(" + std::to_string(c.vx) + "," + std::to_string(c.vy) +
-                                 ") e=" + std::to_string(c.restitution) + " r=" + std::to_string(c.radius);
+        const Prediction run =
+            predict(rv(0.0, c.h + r, 0.0), ftest::toF(DVec3(c.vx, c.vy, c.vz)), c.time, settings, &world);
+        const std::string what = "h=" + std::to_string(c.h) + " v=(" + std::to_string(c.vx) + "," +
+                                 std::to_string(c.vy) + ") e=" + std::to_string(c.restitution) +
+                                 " r=" + std::to_string(c.radius);
         ASSERT_EQ(run.status, Status::Ok) << what;
         expectStartAndEnd(run, c.time);
         const double T = static_cast<double>(c.time);
@@ -406,7 +406,7 @@ TEST(ProjectileExact, DropAndThrowOnFloorMatchBounceSequence) {
         ASSERT_GE(b.impacts.size(), 1u) << what;
         // Position at T: closed form, within 1e-4 m (float state across a few bounces).
         EXPECT_VEC_NEAR(run.result.position, DVec3(c.vx * T, b.height + r, c.vz * T), 1e-4) << what;
-        EXPECT_VEC_NEAR(run.result.velocity, DVec3(c.vx, b.velocity, c.vz), 1e-3) << what; // float, |v| <= 8
+        EXPECT_VEC_NEAR(run.result.velocity, DVec3(c.vx, b.velocity, c.vz), 1e-3) << what;  // float, |v| <= 8
         EXPECT_EQ(run.result.bounces, static_cast<std::uint32_t>(b.impacts.size())) << what;
         // Every Bounce point at its closed-form time, with the bounced velocity.
         std::size_t k = 0;
@@ -415,7 +415,8 @@ TEST(ProjectileExact, DropAndThrowOnFloorMatchBounceSequence) {
             ASSERT_LT(k, b.impacts.size()) << what;
             // Impact times: float times ~1 s (ulp 1.2e-7) from float states.
             EXPECT_NEAR(static_cast<double>(p.time), b.impacts[k], 1e-5) << what << " bounce " << k;
-            EXPECT_VEC_NEAR(p.position, DVec3(c.vx * b.impacts[k], r, c.vz * b.impacts[k]), 1e-4) << what << " bounce " << k;
+            EXPECT_VEC_NEAR(p.position, DVec3(c.vx * b.impacts[k], r, c.vz * b.impacts[k]), 1e-4)
+                << what << " bounce " << k;
             EXPECT_VEC_NEAR(p.velocity, DVec3(c.vx, static_cast<double>(c.restitution) * b.impactSpeeds[k], c.vz), 1e-4)
                 << what << " bounce " << k;
             EXPECT_VEC_NEAR(p.normal, DVec3(0, 1, 0), 1e-6);
@@ -440,12 +441,12 @@ TEST(ProjectileExact, FloorAndWallMatchClosedForm) {
     const double e = 0.5;
     const double vz = 8.0, vy = 3.0, h = 1.0;
     for (const float time : {0.5f, 1.2f, 1.5f, 2.0f}) {
-        const Prediction run = predict(rv(0.5, h, 0.0), Vec3(0.0f, 3.0f, 8.0f), time,
-                                makeSettings(ProjectileMethod::Exact, 0.5f), &world);
+        const Prediction run =
+            predict(rv(0.5, h, 0.0), Vec3(0.0f, 3.0f, 8.0f), time, makeSettings(ProjectileMethod::Exact, 0.5f), &world);
         ASSERT_EQ(run.status, Status::Ok);
         expectStartAndEnd(run, time);
         const double T = static_cast<double>(time);
-        const double wallTime = 5.0 / vz; // 0.625 s; the first floor impact is at 0.851 s
+        const double wallTime = 5.0 / vz;  // 0.625 s; the first floor impact is at 0.851 s
         const double z = T < wallTime ? vz * T : 5.0 - e * vz * (T - wallTime);
         const Bouncing b = bounceOnFloor(h, vy, e, kG, T);
         EXPECT_VEC_NEAR(run.result.position, DVec3(0.5, b.height, z), 1e-4) << "T=" << T;
@@ -469,7 +470,8 @@ TEST(ProjectileExact, FreeFlightIsTheParabola) {
         // Exact ends at 1.3 s; Stepped at ceil(1.3 / 0.02) = 65 steps = 1.3 s too.
         EXPECT_NEAR(static_cast<double>(run.result.time), 1.3, 1e-6);
         const double t = 1.3;
-        EXPECT_VEC_NEAR(run.result.position, DVec3(1 + 4 * t, 2 + 5 * t - 0.5 * kG * t * t, 3 - 6 * t), 2e-5); // float, 65 steps
+        EXPECT_VEC_NEAR(run.result.position, DVec3(1 + 4 * t, 2 + 5 * t - 0.5 * kG * t * t, 3 - 6 * t),
+                        2e-5);  // float, 65 steps
         EXPECT_VEC_NEAR(run.result.velocity, DVec3(4, 5 - kG * t, -6), 2e-5);
     }
 }
@@ -501,7 +503,7 @@ TEST(ProjectileExact, EnergyNeverGrows) {
                     for (int i = 0; i < 4; ++i) {
                         const Vec3 v(6.0f * u(rng), 6.0f * u(rng) + 2.0f, 6.0f * u(rng));
                         const Prediction run = predict(rv(0.3 * i, 3.0, 0.2 * i - 1.0), v, 3.0f,
-                                                makeSettings(method, e, mu, radius), &world);
+                                                       makeSettings(method, e, mu, radius), &world);
                         ASSERT_EQ(run.status, Status::Ok);
                         for (std::size_t k = 1; k < run.points.size(); ++k) {
                             const double before = energy(run.points[k - 1]);
@@ -509,8 +511,8 @@ TEST(ProjectileExact, EnergyNeverGrows) {
                             // float state: |v|^2/2 and g y are ~50 J/kg; a few float ulps of
                             // them (4e-6 each) per point, allowing 1e-4 of slack.
                             ASSERT_LE(after, before + 1e-4)
-                                << "method " << static_cast<int>(method) << " e=" << e << " mu=" << mu << " r=" << radius
-                                << " point " << k << " t=" << run.points[k].time;
+                                << "method " << static_cast<int>(method) << " e=" << e << " mu=" << mu
+                                << " r=" << radius << " point " << k << " t=" << run.points[k].time;
                             ++checked;
                         }
                     }
@@ -524,10 +526,11 @@ TEST(ProjectileExact, EnergyNeverGrows) {
 TEST(ProjectileExact, ElasticBouncesConserveEnergy) {
     StaticWorld world;
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
-    const Prediction run = predict(rv(0, 2, 0), Vec3(3.0f, 5.0f, 4.0f), 6.0f, makeSettings(ProjectileMethod::Exact, 1.0f), &world);
+    const Prediction run =
+        predict(rv(0, 2, 0), Vec3(3.0f, 5.0f, 4.0f), 6.0f, makeSettings(ProjectileMethod::Exact, 1.0f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     ASSERT_GE(run.result.bounces, 3u);
-    const double e0 = energy(run.points.front()); // 25 + 19.6 J/kg
+    const double e0 = energy(run.points.front());  // 25 + 19.6 J/kg
     for (const TrajectoryPoint& p : run.points) {
         // float state over 300 steps and a few bounces: worst case 300 ulps of ~45 J/kg
         // (3.8e-6 each) is 1.1e-3; relative 1e-4 of the energy allows 4.5e-3.
@@ -543,7 +546,7 @@ TEST(ProjectileExact, ElasticBouncesConserveEnergy) {
 struct DBox {
     DVec3 center;
     DVec3 halfExtents;
-    ftest::DQuat orientation; // unit
+    ftest::DQuat orientation;  // unit
 };
 
 struct DTriangle {
@@ -551,7 +554,8 @@ struct DTriangle {
 };
 
 double boxDistance(const DBox& box, const DVec3& p) {
-    const ftest::DQuat inverse = ftest::dquatWXYZ(box.orientation.w, -box.orientation.x, -box.orientation.y, -box.orientation.z);
+    const ftest::DQuat inverse =
+        ftest::dquatWXYZ(box.orientation.w, -box.orientation.x, -box.orientation.y, -box.orientation.z);
     const DVec3 local = ftest::dRotate(inverse, p - box.center);
     const DVec3 q = glm::abs(local) - box.halfExtents;
     const double outside = glm::length(glm::max(q, DVec3(0.0)));
@@ -610,7 +614,7 @@ struct Room {
 /// triangles inside. The reference geometry is kept in double (from the same float values).
 void buildRoom(Room& room, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    room.walls = {{DVec3(0, 1, 0), 0.0},  {DVec3(0, -1, 0), -6.0}, {DVec3(1, 0, 0), -6.0},
+    room.walls = {{DVec3(0, 1, 0), 0.0},   {DVec3(0, -1, 0), -6.0}, {DVec3(1, 0, 0), -6.0},
                   {DVec3(-1, 0, 0), -6.0}, {DVec3(0, 0, 1), -6.0},  {DVec3(0, 0, -1), -6.0}};
     for (const DPlane& p : room.walls) {
         ASSERT_EQ(room.world.add(foresight::Plane{ftest::toF(p.normal), static_cast<Real>(p.distance)}), Status::Ok);
@@ -661,7 +665,7 @@ double clearance(const Room& room, const DVec3& p, double r) {
 
 TEST(ProjectileExact, NoTunnelingInAClosedRoom) {
     constexpr int kRooms = 20;
-    constexpr int kThrowsPerRoom = 500; // 10 000 throws
+    constexpr int kThrowsPerRoom = 500;  // 10 000 throws
     // Cheap throws (the suite must stay fast under sanitizers): 1 s with a coarse 0.04 s step
     // (long chords are the harder case for tunneling), up to 25 m/s in a small room, so every
     // throw bounces a few times.
@@ -689,7 +693,8 @@ TEST(ProjectileExact, NoTunnelingInAClosedRoom) {
             do {
                 start = Vec3(-5.5f + 11.0f * u(rng), 0.5f + 5.0f * u(rng), -5.5f + 11.0f * u(rng));
             } while (clearance(room, ftest::toD(start), static_cast<double>(radius)) < 0.05);
-            const Vec3 direction = glm::normalize(Vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f) + Vec3(0.0f, 1e-3f, 0.0f));
+            const Vec3 direction =
+                glm::normalize(Vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f) + Vec3(0.0f, 1e-3f, 0.0f));
             const Vec3 velocity = direction * (25.0f * u(rng));
             // Every tenth throw runs the article's Stepped loop, the rest the Exact method.
             const bool stepped = (i % 10) == 9;
@@ -721,7 +726,8 @@ TEST(ProjectileExact, NoTunnelingInAClosedRoom) {
                 bool bad = c < -kPointTol;
                 if (!bad && k > 0) {
                     const DVec3 p0 = ftest::toD(points[k - 1].position);
-                    for (const DTriangle& t : room.triangles) bad = bad || crossesTriangle(t, p0, p, kChordTol, kChordTol);
+                    for (const DTriangle& t : room.triangles)
+                        bad = bad || crossesTriangle(t, p0, p, kChordTol, kChordTol);
                     // Sample the chord against the solids, unless the ends' clearances already
                     // prove it clear: clearance is 1-Lipschitz (a minimum of distance
                     // functions), so along a chord of length L it is >= (c0 + c1 - L) / 2.
@@ -737,26 +743,27 @@ TEST(ProjectileExact, NoTunnelingInAClosedRoom) {
                 if (bad) {
                     ++violations;
                     if (firstViolation.empty()) {
-                        firstViolation = "room " + std::to_string(roomIndex) + " throw " + std::to_string(i) +
-                                         (stepped ? " stepped" : " exact") + " start " + ftest::describe(ftest::toD(start)) +
-                                         " v " + ftest::describe(ftest::toD(velocity)) + " e " +
-                                         std::to_string(settings.restitution) + " mu " + std::to_string(settings.friction) +
-                                         " r " + std::to_string(radius) + ": point " + std::to_string(k) + " t " +
-                                         std::to_string(points[k].time) + " at " + ftest::describe(p) + " clearance " +
-                                         std::to_string(c);
+                        firstViolation =
+                            "room " + std::to_string(roomIndex) + " throw " + std::to_string(i) +
+                            (stepped ? " stepped" : " exact") + " start " + ftest::describe(ftest::toD(start)) + " v " +
+                            ftest::describe(ftest::toD(velocity)) + " e " + std::to_string(settings.restitution) +
+                            " mu " + std::to_string(settings.friction) + " r " + std::to_string(radius) + ": point " +
+                            std::to_string(k) + " t " + std::to_string(points[k].time) + " at " + ftest::describe(p) +
+                            " clearance " + std::to_string(c);
                     }
                     break;
                 }
             }
         }
     }
-    std::printf("[ no-tunnel ] %d throws (%d stepped), %d bounces, %d at rest, %d truncated, %d refused, %d violations\n",
-                throws, steppedThrows, bounces, rests, truncated, refused, violations);
+    std::printf(
+        "[ no-tunnel ] %d throws (%d stepped), %d bounces, %d at rest, %d truncated, %d refused, %d violations\n",
+        throws, steppedThrows, bounces, rests, truncated, refused, violations);
     EXPECT_EQ(throws, 10000);
     EXPECT_EQ(refused, 0) << firstViolation;
     EXPECT_EQ(violations, 0) << firstViolation;
     EXPECT_EQ(truncated, 0);
-    EXPECT_GT(bounces, 15000); // the room really bounces them around
+    EXPECT_GT(bounces, 15000);  // the room really bounces them around
 }
 
 // =============================================================================================
@@ -789,10 +796,9 @@ TEST(ProjectileExact, ObliqueSlopeOfTrianglesIsNeverPassedThrough) {
         const double x = -6.5 + 5.0 * u(rng), z = 11.5 + 2.0 * u(rng);
         const RVec3 start = rv(x, (-1.0 - x) * 1.875 / 6.0 + 0.1 + 1.5 * u(rng), z);
         const Vec3 velocity(8.0f * (u(rng) - 0.5f), -6.0f * u(rng), 8.0f * (u(rng) - 0.5f));
-        const Prediction run = predict(start, velocity, 0.5f,
-                                       makeSettings(ProjectileMethod::Exact, 0.2f + 0.6f * u(rng),
-                                                    i % 3 == 0 ? 0.5f * u(rng) : 0.0f),
-                                       &world);
+        const Prediction run = predict(
+            start, velocity, 0.5f,
+            makeSettings(ProjectileMethod::Exact, 0.2f + 0.6f * u(rng), i % 3 == 0 ? 0.5f * u(rng) : 0.0f), &world);
         ASSERT_EQ(run.status, Status::Ok);
         bounces += static_cast<int>(run.result.bounces);
         for (std::size_t k = 1; k < run.points.size(); ++k) {
@@ -819,8 +825,8 @@ TEST(ProjectileExact, StepEndingExactlyOnAWallOfTrianglesBouncesOffIt) {
     StaticWorld world;
     addQuad(world, DVec3(-15, -60, -60), DVec3(-15, -60, 60), DVec3(-15, 60, 60), DVec3(-15, 60, -60));
     if (HasFatalFailure()) return;
-    const Prediction run = predict(rv(0, 1.5, -13), Vec3(-6.0f, 6.0f, 11.0f), 3.0f,
-                                   makeSettings(ProjectileMethod::Exact), &world);
+    const Prediction run =
+        predict(rv(0, 1.5, -13), Vec3(-6.0f, 6.0f, 11.0f), 3.0f, makeSettings(ProjectileMethod::Exact), &world);
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_EQ(run.result.bounces, 1u);
     for (const TrajectoryPoint& p : run.points) {
@@ -864,18 +870,21 @@ TEST(ProjectileExact, GrenadeDroppedOnTheFloorRestsOnIt) {
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
     for (const float radius : {0.0f, 0.1f}) {
         for (const Vec3 v : {Vec3(0.0f), Vec3(3.0f, 2.0f, -1.0f)}) {
-            const Prediction run = predict(rv(0, 1, 0), v, 3.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.5f, radius), &world);
+            const Prediction run =
+                predict(rv(0, 1, 0), v, 3.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.5f, radius), &world);
             ASSERT_EQ(run.status, Status::Ok);
             // On the floor (not under it): y = radius within 1e-4 m (float, 0.1 mm contact lift).
             EXPECT_NEAR(static_cast<double>(run.result.position.y), static_cast<double>(radius), 1e-4)
                 << "r=" << radius << " v=" << v.x;
             EXPECT_TRUE(run.result.atRest) << "r=" << radius << " v=" << v.x;
-            EXPECT_LE(glm::length(ftest::toD(run.result.velocity)), 1e-4); // at rest
-            const bool restEvent = std::any_of(run.points.begin(), run.points.end(),
-                                               [](const TrajectoryPoint& p) { return p.event == TrajectoryEvent::Rest; });
+            EXPECT_LE(glm::length(ftest::toD(run.result.velocity)), 1e-4);  // at rest
+            const bool restEvent = std::any_of(run.points.begin(), run.points.end(), [](const TrajectoryPoint& p) {
+                return p.event == TrajectoryEvent::Rest;
+            });
             EXPECT_TRUE(restEvent);
             for (const TrajectoryPoint& p : run.points) {
-                EXPECT_GE(static_cast<double>(p.position.y), static_cast<double>(radius) - 1e-5) << "t=" << p.time; // never under
+                EXPECT_GE(static_cast<double>(p.position.y), static_cast<double>(radius) - 1e-5)
+                    << "t=" << p.time;  // never under
             }
             expectStartAndEnd(run, 3.0f);
         }
@@ -888,14 +897,15 @@ TEST(ProjectileExact, FrictionlessSlideKeepsGoing) {
     // t1 (1 + 2e / (1 - e)) = 0.4515 * 3 = 1.354 s, after which it slides on the floor.
     StaticWorld world;
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
-    const Prediction run = predict(rv(0, 1, 0), Vec3(3.0f, 0.0f, 0.0f), 4.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.0f), &world);
+    const Prediction run =
+        predict(rv(0, 1, 0), Vec3(3.0f, 0.0f, 0.0f), 4.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.0f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     const double t1 = std::sqrt(2.0 / kG);
     const double settle = t1 * (1.0 + 2.0 * 0.5 / (1.0 - 0.5));
     int sliding = 0;
     for (const TrajectoryPoint& p : run.points) {
         const double t = static_cast<double>(p.time);
-        EXPECT_NEAR(static_cast<double>(p.position.x), 3.0 * t, 1e-4) << "t=" << t; // float, x <= 12 m
+        EXPECT_NEAR(static_cast<double>(p.position.x), 3.0 * t, 1e-4) << "t=" << t;  // float, x <= 12 m
         EXPECT_GE(static_cast<double>(p.position.y), -1e-5) << "t=" << t;
         if (t > settle + 0.05) {
             EXPECT_NEAR(static_cast<double>(p.position.y), 0.0, 1e-4) << "t=" << t;
@@ -916,7 +926,8 @@ TEST(ProjectileExact, SlidingWithFrictionStopsAtClosedForm) {
     const double mu = 0.5, v0 = 4.0;
     const double a = mu * kG;
     const double tStop = v0 / a;
-    const Prediction run = predict(rv(0, 0, 0), Vec3(4.0f, 0.0f, 0.0f), 2.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.5f), &world);
+    const Prediction run =
+        predict(rv(0, 0, 0), Vec3(4.0f, 0.0f, 0.0f), 2.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.5f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_TRUE(run.result.atRest);
     // Closed-form sliding, float positions ~2 m: 1e-4 m.
@@ -929,7 +940,7 @@ TEST(ProjectileExact, SlidingWithFrictionStopsAtClosedForm) {
         EXPECT_NEAR(static_cast<double>(p.position.y), 0.0, 1e-4) << "t=" << p.time;
         if (p.event == TrajectoryEvent::Rest) {
             rest = true;
-            EXPECT_NEAR(static_cast<double>(p.time), tStop, 1e-4); // event time, float
+            EXPECT_NEAR(static_cast<double>(p.time), tStop, 1e-4);  // event time, float
         }
     }
     EXPECT_TRUE(rest);
@@ -947,10 +958,11 @@ TEST(ProjectileExact, ImpactFrictionThenSlidingStopsAtClosedForm) {
     const double u = kG * t1;
     const double v1 = 4.0 - mu * u;
     const double x = 4.0 * t1 + v1 * v1 / (2.0 * mu * kG);
-    const Prediction run = predict(rv(0, 1, 0), Vec3(4.0f, 0.0f, 0.0f), 2.0f, makeSettings(ProjectileMethod::Exact, 0.0f, 0.5f), &world);
+    const Prediction run =
+        predict(rv(0, 1, 0), Vec3(4.0f, 0.0f, 0.0f), 2.0f, makeSettings(ProjectileMethod::Exact, 0.0f, 0.5f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_TRUE(run.result.atRest);
-    EXPECT_VEC_NEAR(run.result.position, DVec3(x, 0.0, 0.0), 1e-4); // closed form, float ~2 m
+    EXPECT_VEC_NEAR(run.result.position, DVec3(x, 0.0, 0.0), 1e-4);  // closed form, float ~2 m
     EXPECT_EQ(run.result.bounces, 1u);
 }
 
@@ -963,8 +975,8 @@ TEST(ProjectileExact, ImpactFrictionScalesWithOnePlusRestitution) {
     const double e = 0.5, mu = static_cast<double>(0.2f);
     const double t1 = std::sqrt(2.0 / kG);
     const double u = kG * t1;
-    const Prediction run = predict(rv(0, 1, 0), Vec3(4.0f, 0.0f, 0.0f), 1.0f,
-                                   makeSettings(ProjectileMethod::Exact, 0.5f, 0.2f), &world);
+    const Prediction run =
+        predict(rv(0, 1, 0), Vec3(4.0f, 0.0f, 0.0f), 1.0f, makeSettings(ProjectileMethod::Exact, 0.5f, 0.2f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     const auto bounce = std::find_if(run.points.begin(), run.points.end(),
                                      [](const TrajectoryPoint& p) { return p.event == TrajectoryEvent::Bounce; });
@@ -1013,22 +1025,24 @@ TEST(ProjectileStepped, ArticleLoopFreezesOnTheFloor) {
     // not under it), with its horizontal velocity still set. Observed and asserted here.
     StaticWorld world;
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
-    const Prediction run = predict(rv(0, 1, 0), Vec3(3.0f, 0.0f, 0.0f), 3.0f, makeSettings(ProjectileMethod::Stepped, 0.5f), &world);
+    const Prediction run =
+        predict(rv(0, 1, 0), Vec3(3.0f, 0.0f, 0.0f), 3.0f, makeSettings(ProjectileMethod::Stepped, 0.5f), &world);
     ASSERT_EQ(run.status, Status::Ok);
     ASSERT_EQ(run.points.size(), 151u);
-    EXPECT_NEAR(static_cast<double>(run.result.position.y), 0.0, 1e-4); // on the floor
+    EXPECT_NEAR(static_cast<double>(run.result.position.y), 0.0, 1e-4);  // on the floor
     for (const TrajectoryPoint& p : run.points) EXPECT_GE(static_cast<double>(p.position.y), -1e-5);
     // Frozen: the last 50 points (the last second) do not move at all.
     for (std::size_t k = run.points.size() - 50; k < run.points.size(); ++k) {
         EXPECT_EQ(run.points[k].position, run.points.back().position) << k;
     }
-    EXPECT_LT(static_cast<double>(run.result.position.x), 3.0 * 3.0 - 1.0); // it stopped short of x = 3 t
+    EXPECT_LT(static_cast<double>(run.result.position.x), 3.0 * 3.0 - 1.0);  // it stopped short of x = 3 t
     EXPECT_FALSE(run.result.atRest);
-    std::printf("[ stepped ] article loop drop: frozen at x=%.4f y=%.2e (x = 3t would be 9), velocity (%.3f, %.3g, %.3f), "
-                "%u bounces\n",
-                static_cast<double>(run.result.position.x), static_cast<double>(run.result.position.y),
-                static_cast<double>(run.result.velocity.x), static_cast<double>(run.result.velocity.y),
-                static_cast<double>(run.result.velocity.z), run.result.bounces);
+    std::printf(
+        "[ stepped ] article loop drop: frozen at x=%.4f y=%.2e (x = 3t would be 9), velocity (%.3f, %.3g, %.3f), "
+        "%u bounces\n",
+        static_cast<double>(run.result.position.x), static_cast<double>(run.result.position.y),
+        static_cast<double>(run.result.velocity.x), static_cast<double>(run.result.velocity.y),
+        static_cast<double>(run.result.velocity.z), run.result.bounces);
 }
 
 TEST(ProjectileStepped, ArticleLoopOnATriangleFloorFreezesAsOnAPlane) {
@@ -1068,11 +1082,11 @@ TEST(ProjectileExact, MaxBouncesZeroStopsAtTheFirstHit) {
     settings.maxBounces = 0;
     const Prediction run = predict(rv(0, 2, 0), Vec3(3.0f, 4.0f, 0.0f), 3.0f, settings, &world);
     ASSERT_EQ(run.status, Status::Ok);
-    const double tHit = (4.0 + std::sqrt(16.0 + 2.0 * kG * 2.0)) / kG; // 1.1654 s
+    const double tHit = (4.0 + std::sqrt(16.0 + 2.0 * kG * 2.0)) / kG;  // 1.1654 s
     EXPECT_TRUE(run.result.stoppedAtHit);
     EXPECT_EQ(run.result.bounces, 0u);
-    EXPECT_NEAR(static_cast<double>(run.result.time), tHit, 1e-5);                  // float time ~1 s
-    EXPECT_VEC_NEAR(run.result.position, DVec3(3.0 * tHit, 0.0, 0.0), 1e-4);         // float, ~3 m
+    EXPECT_NEAR(static_cast<double>(run.result.time), tHit, 1e-5);            // float time ~1 s
+    EXPECT_VEC_NEAR(run.result.position, DVec3(3.0 * tHit, 0.0, 0.0), 1e-4);  // float, ~3 m
     EXPECT_VEC_NEAR(run.result.hitNormal, DVec3(0, 1, 0), 1e-6);
     ASSERT_FALSE(run.points.empty());
     EXPECT_EQ(run.points.back().event, TrajectoryEvent::Hit);
@@ -1090,18 +1104,42 @@ TEST(ProjectileExact, MaxBouncesZeroStopsAtTheFirstHit) {
 // uses (the world's surface tolerance, 1e-5 m, and 6 float ulps at the box's coordinates).
 TEST(ProjectileExact, PointRattlingInABoxsEdgeStaysInside) {
     const double vertices[12][3][3] = {
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {10.80568790435791, 3.9809143543243408, -37.620376586914062}, {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {10.780617713928223, 4.1884818077087402, -37.195823669433594}, {10.42230224609375, 2.9637892246246338, -36.618221282958984}},
-        {{11.504342079162598, 2.5288436412811279, -36.869194030761719}, {11.86265754699707, 3.7535367012023926, -37.446796417236328}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
-        {{11.504342079162598, 2.5288436412811279, -36.869194030761719}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}, {11.479270935058594, 2.7364113330841064, -36.44464111328125}},
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {11.504342079162598, 2.5288436412811279, -36.869194030761719}, {11.479270935058594, 2.7364113330841064, -36.44464111328125}},
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {11.479270935058594, 2.7364113330841064, -36.44464111328125}, {10.42230224609375, 2.9637892246246338, -36.618221282958984}},
-        {{10.80568790435791, 3.9809143543243408, -37.620376586914062}, {11.86265754699707, 3.7535367012023926, -37.446796417236328}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
-        {{10.80568790435791, 3.9809143543243408, -37.620376586914062}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}, {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {11.504342079162598, 2.5288436412811279, -36.869194030761719}, {11.86265754699707, 3.7535367012023926, -37.446796417236328}},
-        {{10.447372436523438, 2.7562215328216553, -37.042778015136719}, {11.86265754699707, 3.7535367012023926, -37.446796417236328}, {10.80568790435791, 3.9809143543243408, -37.620376586914062}},
-        {{10.42230224609375, 2.9637892246246338, -36.618221282958984}, {11.479270935058594, 2.7364113330841064, -36.44464111328125}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
-        {{10.42230224609375, 2.9637892246246338, -36.618221282958984}, {11.837586402893066, 3.9611043930053711, -37.022239685058594}, {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {10.80568790435791, 3.9809143543243408, -37.620376586914062},
+         {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {10.780617713928223, 4.1884818077087402, -37.195823669433594},
+         {10.42230224609375, 2.9637892246246338, -36.618221282958984}},
+        {{11.504342079162598, 2.5288436412811279, -36.869194030761719},
+         {11.86265754699707, 3.7535367012023926, -37.446796417236328},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
+        {{11.504342079162598, 2.5288436412811279, -36.869194030761719},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594},
+         {11.479270935058594, 2.7364113330841064, -36.44464111328125}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {11.504342079162598, 2.5288436412811279, -36.869194030761719},
+         {11.479270935058594, 2.7364113330841064, -36.44464111328125}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {11.479270935058594, 2.7364113330841064, -36.44464111328125},
+         {10.42230224609375, 2.9637892246246338, -36.618221282958984}},
+        {{10.80568790435791, 3.9809143543243408, -37.620376586914062},
+         {11.86265754699707, 3.7535367012023926, -37.446796417236328},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
+        {{10.80568790435791, 3.9809143543243408, -37.620376586914062},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594},
+         {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {11.504342079162598, 2.5288436412811279, -36.869194030761719},
+         {11.86265754699707, 3.7535367012023926, -37.446796417236328}},
+        {{10.447372436523438, 2.7562215328216553, -37.042778015136719},
+         {11.86265754699707, 3.7535367012023926, -37.446796417236328},
+         {10.80568790435791, 3.9809143543243408, -37.620376586914062}},
+        {{10.42230224609375, 2.9637892246246338, -36.618221282958984},
+         {11.479270935058594, 2.7364113330841064, -36.44464111328125},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594}},
+        {{10.42230224609375, 2.9637892246246338, -36.618221282958984},
+         {11.837586402893066, 3.9611043930053711, -37.022239685058594},
+         {10.780617713928223, 4.1884818077087402, -37.195823669433594}},
     };
     StaticWorld world;
     DVec3 centre(0.0);
@@ -1168,7 +1206,8 @@ TEST(ProjectileExact, TrajectoryTruncation) {
         for (const std::size_t capacity : {std::size_t{3}, std::size_t{1}}) {
             std::vector<TrajectoryPoint> small(capacity);
             ProjectileResult result;
-            ASSERT_EQ(foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.0f, 4.0f, 12.0f), 3.0f, settings, &world, small, result),
+            ASSERT_EQ(foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.0f, 4.0f, 12.0f), 3.0f, settings, &world,
+                                                   small, result),
                       Status::Ok);
             EXPECT_EQ(result.trajectorySize, capacity);
             EXPECT_EQ(result.trajectoryNeeded, big.result.trajectorySize);
@@ -1186,8 +1225,9 @@ TEST(ProjectileExact, TrajectoryTruncation) {
         }
         // No storage at all.
         ProjectileResult none;
-        ASSERT_EQ(foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.0f, 4.0f, 12.0f), 3.0f, settings, &world, {}, none),
-                  Status::Ok);
+        ASSERT_EQ(
+            foresight::predictProjectile(rv(0, 1.5, 0), Vec3(0.0f, 4.0f, 12.0f), 3.0f, settings, &world, {}, none),
+            Status::Ok);
         EXPECT_EQ(none.trajectorySize, 0u);
         EXPECT_EQ(none.trajectoryNeeded, big.result.trajectorySize);
         EXPECT_EQ(none.position, big.result.position);
@@ -1250,7 +1290,8 @@ TEST(Projectile, RefusalsLeaveOutUntouched) {
     EXPECT_EQ(foresight::validateProjectileSettings(s), Status::NonFiniteInput);
     EXPECT_EQ(foresight::validateProjectileSettings(good), Status::Ok);
 
-    expectRefused(rv(0, std::numeric_limits<double>::quiet_NaN(), 0), v, 1.0f, good, Status::NonFiniteInput, "NaN position");
+    expectRefused(rv(0, std::numeric_limits<double>::quiet_NaN(), 0), v, 1.0f, good, Status::NonFiniteInput,
+                  "NaN position");
     expectRefused(p, Vec3(std::numeric_limits<float>::infinity(), 0.0f, 0.0f), 1.0f, good, Status::NonFiniteInput,
                   "inf velocity");
     expectRefused(p, v, kNaN, good, Status::NonFiniteInput, "NaN time");
@@ -1262,19 +1303,20 @@ TEST(Projectile, RefusalsLeaveOutUntouched) {
     const auto t0 = std::chrono::steady_clock::now();
     expectRefused(p, v, 1e6f, s, Status::TooManySteps, "1e9 steps");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    EXPECT_LT(seconds, 0.5); // generous for sanitizer builds; a run would take minutes
+    EXPECT_LT(seconds, 0.5);  // generous for sanitizer builds; a run would take minutes
     s = good;
     s.maxSteps = 10;
     expectRefused(p, v, 1.0f, s, Status::TooManySteps, "50 steps over a cap of 10");
     s.maxSteps = 50;
     ProjectileResult ok;
-    EXPECT_EQ(foresight::predictProjectile(p, v, 1.0f, s, &world, points, ok), Status::Ok); // exactly at the cap
+    EXPECT_EQ(foresight::predictProjectile(p, v, 1.0f, s, &world, points, ok), Status::Ok);  // exactly at the cap
 }
 
 TEST(Projectile, TimeZeroReturnsTheStart) {
     StaticWorld world;
     ASSERT_EQ(world.add(foresight::Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
-    const Prediction run = predict(rv(1, 2, 3), Vec3(4.0f, 5.0f, 6.0f), 0.0f, makeSettings(ProjectileMethod::Exact), &world, 8);
+    const Prediction run =
+        predict(rv(1, 2, 3), Vec3(4.0f, 5.0f, 6.0f), 0.0f, makeSettings(ProjectileMethod::Exact), &world, 8);
     ASSERT_EQ(run.status, Status::Ok);
     EXPECT_VEC_NEAR(run.result.position, DVec3(1, 2, 3), 0.0);
     EXPECT_VEC_NEAR(run.result.velocity, DVec3(4, 5, 6), 0.0);
@@ -1293,4 +1335,4 @@ TEST(Projectile, TrajectoryCapacityIsEnough) {
     }
 }
 
-} // namespace
+}  // namespace

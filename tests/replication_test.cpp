@@ -127,7 +127,7 @@ TEST(Sender, FirstUpdateSendsWithoutErrors) {
 // After an update at ts (position and velocity exact), receivers show x(ts) + a ts (t - ts), so
 // the error is exactly a (t - ts)^2 / 2: it reaches 1 m when t - ts = sqrt(2 / a).
 TEST(Sender, PositionThresholdCrossedWhereTheClosedFormSays) {
-    constexpr double a = 3.0;      // [m/s^2]
+    constexpr double a = 3.0;  // [m/s^2]
     constexpr double tick = 1.0 / 60.0;
     // The first tick at or past sqrt(2/3) = 0.8165 s: 49 (48 ticks give an error of 0.96 m,
     // 49 give 1.0004 m: margins far above float rounding of positions up to 150 m, 1.5e-5 m).
@@ -211,7 +211,8 @@ TEST(Sender, HeartbeatEveryFiveSecondsForAStaticEntity) {
     for (int k = 0; k <= 64 * 20; ++k) {
         const double t = k / 64.0;  // exact
         SendDecision d;
-        ASSERT_EQ(sender.update(t, makeState(DeadReckoningAlgorithm::Static, DVec3(7, 1, -2), DVec3(0)), d), Status::Ok);
+        ASSERT_EQ(sender.update(t, makeState(DeadReckoningAlgorithm::Static, DVec3(7, 1, -2), DVec3(0)), d),
+                  Status::Ok);
         EXPECT_EQ(d.positionError, 0.0f);
         if (d.send()) {
             sendTimes.push_back(t);
@@ -230,8 +231,8 @@ TEST(Sender, ReasonsAreBits) {
     moved.orientation = yaw(10 * kDegree);
     ASSERT_EQ(sender.update(0.5, moved, d), Status::Ok);
     EXPECT_EQ(d.reasons, foresight::SendReasonPosition | foresight::SendReasonOrientation);
-    EXPECT_NEAR(d.positionError, 2.0f, 1e-6f);                 // exact inputs
-    EXPECT_NEAR(d.orientationError, 10 * kDegree, 1e-6);       // float quaternion
+    EXPECT_NEAR(d.positionError, 2.0f, 1e-6f);            // exact inputs
+    EXPECT_NEAR(d.orientationError, 10 * kDegree, 1e-6);  // float quaternion
     // The same pose with another algorithm: only the algorithm bit.
     DeadReckoningState rvw = moved;
     rvw.algorithm = DeadReckoningAlgorithm::Rvw;
@@ -283,10 +284,13 @@ TEST(Sender, RefusalsLeaveTheDecisionUntouched) {
     SendDecision untouched;
     untouched.reasons = 0x55;
     // Settings: each field zero, negative, NaN, infinite.
-    for (const float bad : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    for (const float bad :
+         {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
         for (int field = 0; field < 3; ++field) {
             SenderSettings settings;
-            (field == 0 ? settings.positionThreshold : field == 1 ? settings.orientationThreshold : settings.heartbeat) = bad;
+            (field == 0   ? settings.positionThreshold
+             : field == 1 ? settings.orientationThreshold
+                          : settings.heartbeat) = bad;
             EXPECT_EQ(foresight::validateSenderSettings(settings), Status::InvalidSetting) << field << " " << bad;
             DeadReckoningSender sender(settings);
             EXPECT_EQ(sender.update(0.0, fpw(DVec3(0), DVec3(0)), untouched), Status::InvalidSetting);
@@ -452,10 +456,14 @@ INSTANTIATE_TEST_SUITE_P(Receiver, Smoothings,
                                            Smoothing::ProjectiveVelocityBlending, Smoothing::ExponentialDecay),
                          [](const ::testing::TestParamInfo<Smoothing>& param) {
                              switch (param.param) {
-                             case Smoothing::Snap: return std::string("Snap");
-                             case Smoothing::LinearBlend: return std::string("LinearBlend");
-                             case Smoothing::ProjectiveVelocityBlending: return std::string("ProjectiveVelocityBlending");
-                             case Smoothing::ExponentialDecay: return std::string("ExponentialDecay");
+                                 case Smoothing::Snap:
+                                     return std::string("Snap");
+                                 case Smoothing::LinearBlend:
+                                     return std::string("LinearBlend");
+                                 case Smoothing::ProjectiveVelocityBlending:
+                                     return std::string("ProjectiveVelocityBlending");
+                                 case Smoothing::ExponentialDecay:
+                                     return std::string("ExponentialDecay");
                              }
                              return std::string("unknown");
                          });
@@ -500,8 +508,8 @@ TEST(Receiver, LinearBlendLerpsTheTwoExtrapolations) {
 }
 
 TEST(Receiver, AnUpdateDuringABlendStaysContinuous) {
-    for (const Smoothing smoothing : {Smoothing::LinearBlend, Smoothing::ProjectiveVelocityBlending,
-                                      Smoothing::ExponentialDecay}) {
+    for (const Smoothing smoothing :
+         {Smoothing::LinearBlend, Smoothing::ProjectiveVelocityBlending, Smoothing::ExponentialDecay}) {
         const Correction c;
         ReceiverSettings settings;
         settings.smoothing = smoothing;
@@ -553,7 +561,7 @@ TEST(Receiver, ExtrapolationHoldsAtExactlyTheLimit) {
     for (const double t : {10.25 + 1e-9, 10.3, 11.0, 1e6, 1e300}) {
         const ReceivedPose p = sampled(receiver, t);
         EXPECT_TRUE(p.held) << t;
-        EXPECT_EQ(p.position, rv(1.5, 0, 0)) << t;  // held at 1 + 2 * 0.25, never infinity
+        EXPECT_EQ(p.position, rv(1.5, 0, 0)) << t;           // held at 1 + 2 * 0.25, never infinity
         EXPECT_EQ(p.velocity, Vec3(2.0f, 0.0f, 0.0f)) << t;  // the model's velocity at the hold
     }
     EXPECT_EQ(receiver.counters().held, 5u);
@@ -578,7 +586,7 @@ TEST(Receiver, FutureStampedUpdateIsShownAsStampedUntilItsTime) {
     const DeadReckoningState s = fpw(DVec3(0, 1, 0), DVec3(0, 0, 4));
     ASSERT_EQ(receiver.receive(2.0, s, 1.0), UpdateOutcome::Snapped);  // clocks disagree by > 1 s
     EXPECT_EQ(receiver.counters().futureUpdates, 1u);
-    EXPECT_EQ(sampled(receiver, 1.5).position, rv(0, 1, 0));     // age 0, not -0.5
+    EXPECT_EQ(sampled(receiver, 1.5).position, rv(0, 1, 0));      // age 0, not -0.5
     EXPECT_EQ(sampled(receiver, 2.125).position, rv(0, 1, 0.5));  // 4 * 0.125
 }
 
@@ -760,7 +768,8 @@ TEST(Interpolation, ReproducesALinearTrajectoryExactlyAndLagsByTheDelay) {
     // Updates every 1/16 s, delay 1/8 s, samples every 1/256 s: every value is a short dyadic
     // fraction, so the lerp is exact in float and double.
     DeadReckoningReceiver receiver(interpolating(0.125f));
-    for (int k = 0; k < 32; ++k) ASSERT_EQ(receiver.receive(k / 16.0, lineAt(k / 16.0), k / 16.0), UpdateOutcome::Buffered);
+    for (int k = 0; k < 32; ++k)
+        ASSERT_EQ(receiver.receive(k / 16.0, lineAt(k / 16.0), k / 16.0), UpdateOutcome::Buffered);
     for (int j = 32; j <= 256 + 32; ++j) {
         const double t = j / 256.0;
         const double render = t - 0.125;
@@ -776,7 +785,8 @@ TEST(Interpolation, ReproducesALinearTrajectoryExactlyAndLagsByTheDelay) {
 
 TEST(Interpolation, DefaultDelayRendersATenthOfASecondBehind) {
     DeadReckoningReceiver receiver(interpolating(ReceiverSettings{}.interpolationDelay));
-    for (int k = 0; k <= 20; ++k) ASSERT_EQ(receiver.receive(k * 0.05, lineAt(k * 0.05), k * 0.05 + 0.03), UpdateOutcome::Buffered);
+    for (int k = 0; k <= 20; ++k)
+        ASSERT_EQ(receiver.receive(k * 0.05, lineAt(k * 0.05), k * 0.05 + 0.03), UpdateOutcome::Buffered);
     for (const double t : {0.3, 0.512, 0.77, 1.0}) {
         const double render = t - 0.1;
         // The delay is 0.1f (1.5e-9 s from 0.1: 3e-9 m) and the stamps k * 0.05 round in
@@ -855,7 +865,8 @@ TEST(Interpolation, TheRingKeepsTheNewestUpdates) {
 TEST(Interpolation, SparseUpdatesOnThePredictedPathAreNotTeleports) {
     DeadReckoningReceiver receiver(interpolating(0.125f));
     for (int k = 0; k < 4; ++k)
-        ASSERT_EQ(receiver.receive(5.0 * k, fpw(DVec3(50.0 * k, 0, 0), DVec3(10, 0, 0)), 5.0 * k), UpdateOutcome::Buffered);
+        ASSERT_EQ(receiver.receive(5.0 * k, fpw(DVec3(50.0 * k, 0, 0), DVec3(10, 0, 0)), 5.0 * k),
+                  UpdateOutcome::Buffered);
     EXPECT_EQ(receiver.counters().teleports, 0u);
     EXPECT_EQ(receiver.counters().snaps, 0u);
     // Render time 7.5: half-way between the updates at 5 and 10 (50 m and 100 m).
@@ -869,13 +880,15 @@ TEST(Interpolation, SparseUpdatesOnThePredictedPathAreNotTeleports) {
 TEST(Interpolation, SparseUpdatesOfATurningCarFollowTheArcNotTheChord) {
     auto onCircle = [](double t) {
         const double heading = 0.5 * t;
-        DeadReckoningState s = makeState(DeadReckoningAlgorithm::Rpb, DVec3(40 * (1 - std::cos(heading)), 0, 40 * std::sin(heading)),
-                                         DVec3(0, 0, 20), yaw(heading));
+        DeadReckoningState s =
+            makeState(DeadReckoningAlgorithm::Rpb, DVec3(40 * (1 - std::cos(heading)), 0, 40 * std::sin(heading)),
+                      DVec3(0, 0, 20), yaw(heading));
         s.angularVelocity = Vec3(0.0f, 0.5f, 0.0f);
         return s;
     };
     DeadReckoningReceiver receiver(interpolating(0.125f));
-    for (int k = 0; k < 4; ++k) ASSERT_EQ(receiver.receive(2.0 * k, onCircle(2.0 * k), 2.0 * k), UpdateOutcome::Buffered);
+    for (int k = 0; k < 4; ++k)
+        ASSERT_EQ(receiver.receive(2.0 * k, onCircle(2.0 * k), 2.0 * k), UpdateOutcome::Buffered);
     EXPECT_EQ(receiver.counters().teleports, 0u);
     double worst = 0;
     for (double render = 0.0; render <= 6.0; render += 1.0 / 16) {
@@ -959,14 +972,15 @@ constexpr ftest::Random::Step kRandomStep = ftest::Random::Step::XorShift64Star;
 // correction), so 1e6 m is a loose bound that only a runaway would break.
 TEST(Receiver, RandomBadPacketsNeverGiveANonFinitePose) {
     for (const ReceiverMode mode : {ReceiverMode::Extrapolate, ReceiverMode::Interpolate}) {
-        for (const Smoothing smoothing : {Smoothing::Snap, Smoothing::LinearBlend, Smoothing::ProjectiveVelocityBlending,
-                                          Smoothing::ExponentialDecay}) {
+        for (const Smoothing smoothing : {Smoothing::Snap, Smoothing::LinearBlend,
+                                          Smoothing::ProjectiveVelocityBlending, Smoothing::ExponentialDecay}) {
             if (mode == ReceiverMode::Interpolate && smoothing != Smoothing::Snap) continue;
             ReceiverSettings settings;
             settings.mode = mode;
             settings.smoothing = smoothing;
             DeadReckoningReceiver receiver(settings);
-            ftest::Random random(1000 + static_cast<std::uint64_t>(smoothing) * 10 + static_cast<std::uint64_t>(mode), kRandomStep);
+            ftest::Random random(1000 + static_cast<std::uint64_t>(smoothing) * 10 + static_cast<std::uint64_t>(mode),
+                                 kRandomStep);
             double now = 0.0;
             std::size_t okSamples = 0;
             std::uint64_t acceptedAtHalf = 0;
@@ -974,20 +988,29 @@ TEST(Receiver, RandomBadPacketsNeverGiveANonFinitePose) {
                 if (i == 10000) acceptedAtHalf = receiver.counters().accepted;
                 now += random.uniform(0.0, 0.05);
                 if (random.uniform(0, 1) < 0.001) now += random.uniform(10, 1e5);  // a huge gap
-                DeadReckoningState s = makeState(static_cast<DeadReckoningAlgorithm>(1 + i % 9),
-                                                 DVec3(random.uniform(-1e3, 1e3), random.uniform(-10, 10), random.uniform(-1e3, 1e3)),
-                                                 DVec3(random.uniform(-100, 100), random.uniform(-10, 10), random.uniform(-100, 100)),
-                                                 ftest::quatWXYZ(static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1)),
-                                                                 static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1))));
-                s.acceleration = ftest::toF(DVec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20)));
-                s.angularVelocity = ftest::toF(DVec3(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5)));
+                DeadReckoningState s = makeState(
+                    static_cast<DeadReckoningAlgorithm>(1 + i % 9),
+                    DVec3(random.uniform(-1e3, 1e3), random.uniform(-10, 10), random.uniform(-1e3, 1e3)),
+                    DVec3(random.uniform(-100, 100), random.uniform(-10, 10), random.uniform(-100, 100)),
+                    ftest::quatWXYZ(
+                        static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1)),
+                        static_cast<float>(random.uniform(-1, 1)), static_cast<float>(random.uniform(-1, 1))));
+                s.acceleration =
+                    ftest::toF(DVec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20)));
+                s.angularVelocity =
+                    ftest::toF(DVec3(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5)));
                 double stamp = now - random.uniform(0.0, 0.3);
                 const double u = random.uniform(0, 1);
-                if (u < 0.05) stamp -= random.uniform(0.5, 20);        // late, or a restarted clock
-                else if (u < 0.08) stamp += random.uniform(0.5, 1e6);  // in the future, some far
-                else if (u < 0.10) s.position.x = std::numeric_limits<Real>::quiet_NaN();
-                else if (u < 0.12) s.orientation = ftest::quatWXYZ(0, 0, 0, 0);
-                else if (u < 0.13) stamp = kNaN;
+                if (u < 0.05)
+                    stamp -= random.uniform(0.5, 20);  // late, or a restarted clock
+                else if (u < 0.08)
+                    stamp += random.uniform(0.5, 1e6);  // in the future, some far
+                else if (u < 0.10)
+                    s.position.x = std::numeric_limits<Real>::quiet_NaN();
+                else if (u < 0.12)
+                    s.orientation = ftest::quatWXYZ(0, 0, 0, 0);
+                else if (u < 0.13)
+                    stamp = kNaN;
                 (void)receiver.receive(stamp, s, now);
                 if (random.uniform(0, 1) < 0.3) (void)receiver.receive(stamp, s, now);  // a duplicate
                 const double sampleTime = random.uniform(0, 1) < 0.05 ? now - random.uniform(0, 2) : now;
@@ -1032,9 +1055,9 @@ TEST(Batch, EqualsPredictDeadReckoningPerEntityBitForBit) {
         s.acceleration = ftest::toF(DVec3(random.uniform(-10, 10), random.uniform(-10, 10), random.uniform(-10, 10)));
         s.angularVelocity = ftest::toF(DVec3(random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3)));
         // Not normalised on purpose, some with negative w and signed zeros.
-        s.orientation = ftest::quatWXYZ(static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)),
-                                        i % 7 == 0 ? -0.0f : static_cast<float>(random.uniform(-2, 2)),
-                                        static_cast<float>(random.uniform(-2, 2)));
+        s.orientation = ftest::quatWXYZ(
+            static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)),
+            i % 7 == 0 ? -0.0f : static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)));
         if (i % 11 == 0) s.angularVelocity = Vec3(0.0f);
         stamps[i] = now - random.uniform(-0.05, 0.5);  // some stamped in the future
     }
@@ -1062,14 +1085,16 @@ TEST(Batch, EqualsPredictDeadReckoningPerEntityBitForBit) {
             expected.velocity = states[i].velocity;
             expected.orientation = states[i].orientation;
         }
-        EXPECT_TRUE(sameResult(out[i], expected)) << i << " " << foresight::deadReckoningAlgorithmName(states[i].algorithm);
+        EXPECT_TRUE(sameResult(out[i], expected))
+            << i << " " << foresight::deadReckoningAlgorithmName(states[i].algorithm);
     }
     EXPECT_EQ(refused, expectedRefused);
     EXPECT_GE(refused, foresight::kDoublePrecision ? 4u : 5u);
     // Spans of different lengths: the shortest is processed, the states beyond it are refused.
     std::vector<DeadReckoningResult> shortOut(10);
-    EXPECT_EQ(foresight::predictDeadReckoningBatch(std::span(states.data(), 12), std::span(stamps.data(), 12), now, shortOut),
-              2u + 1u);  // states 10, 11, and 5 (NaN)
+    EXPECT_EQ(
+        foresight::predictDeadReckoningBatch(std::span(states.data(), 12), std::span(stamps.data(), 12), now, shortOut),
+        2u + 1u);  // states 10, 11, and 5 (NaN)
 }
 
 // =============================================================================================
@@ -1110,8 +1135,9 @@ void checkAgainstReference(const DeadReckoningState& state, double stamp, double
     // Velocity: v + a t in float for every model; reference in double, rounded once.
     const DVec3 dv = ftest::toD(got.velocity) - ftest::toD(expected.velocity);
     const double vScale = glm::length(ftest::toD(expected.velocity)) + 1e-30;
-    if (glm::length(dv) > 4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * vScale +
-                              1e-6 * (glm::length(ftest::toD(state.velocity)) + uses * glm::length(ftest::toD(state.acceleration)) * t))
+    if (glm::length(dv) >
+        4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * vScale +
+            1e-6 * (glm::length(ftest::toD(state.velocity)) + uses * glm::length(ftest::toD(state.acceleration)) * t))
         ++worst.velocityMismatches;
 }
 
@@ -1125,9 +1151,11 @@ void randomPrepared(std::size_t n, std::vector<DeadReckoningState>& states, std:
         s.position = rv(random.uniform(-2000, 2000), random.uniform(-50, 500), random.uniform(-2000, 2000));
         s.velocity = ftest::toF(DVec3(random.uniform(-300, 300), random.uniform(-30, 30), random.uniform(-300, 300)));
         s.acceleration = ftest::toF(DVec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20)));
-        s.orientation = ftest::quatWXYZ(static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)),
-                                        static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)));
-        const DVec3 axis = glm::normalize(DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)) + DVec3(1e-3));
+        s.orientation =
+            ftest::quatWXYZ(static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)),
+                            static_cast<float>(random.uniform(-2, 2)), static_cast<float>(random.uniform(-2, 2)));
+        const DVec3 axis =
+            glm::normalize(DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)) + DVec3(1e-3));
         // |w|: zero, tiny (series territory), small, typical, fast.
         const double rates[] = {0.0, 1e-30, 1e-7, 1e-3, random.uniform(0, 3), random.uniform(3, 10)};
         s.angularVelocity = ftest::toF(axis * rates[(i / 9) % 6]);
@@ -1225,8 +1253,11 @@ TEST(Prepared, AnAgeBeyondFloatRangeIsRefusedOrFinite) {
             ASSERT_EQ(batch.set(0, p), Status::Ok);
             EXPECT_EQ(batch.extrapolate(1e300, std::numeric_limits<float>::infinity(), out), refused)
                 << static_cast<int>(algorithm) << " " << spin;
-            const auto finite = [](const auto& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-            EXPECT_TRUE(finite(out[0].position) && finite(out[0].velocity)) << static_cast<int>(algorithm) << " " << spin;
+            const auto finite = [](const auto& v) {
+                return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+            };
+            EXPECT_TRUE(finite(out[0].position) && finite(out[0].velocity))
+                << static_cast<int>(algorithm) << " " << spin;
         }
     }
 }
@@ -1263,10 +1294,11 @@ TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
                 EXPECT_TRUE(ftest::sameBytes(scalar[i].velocity, expected.velocity)) << i;
             }
         }
-        std::printf("limit %g: scalar position %.3g of allowed, orientation %.3g rad, length %.3g; "
-                    "SoA position %.3g, orientation %.3g rad, length %.3g\n",
-                    static_cast<double>(limit), worstScalar.position, worstScalar.orientation, worstScalar.length,
-                    worstSoa.position, worstSoa.orientation, worstSoa.length);
+        std::printf(
+            "limit %g: scalar position %.3g of allowed, orientation %.3g rad, length %.3g; "
+            "SoA position %.3g, orientation %.3g rad, length %.3g\n",
+            static_cast<double>(limit), worstScalar.position, worstScalar.orientation, worstScalar.length,
+            worstSoa.position, worstSoa.orientation, worstSoa.length);
         // The contract of extrapolateDeadReckoning (replication.h).
         for (const ContractErrors* w : {&worstScalar, &worstSoa}) {
             EXPECT_LE(w->position, 1.0);
@@ -1290,7 +1322,6 @@ TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
     EXPECT_LE(worst.position, 1.0);
     EXPECT_LE(worst.orientation, 4e-7);
 }
-
 
 // DeadReckoningBatch skips the range reduction for chunks whose angles are all in the first
 // quadrant: an entity's result must not depend on that, i.e. on its neighbours. Entity 0 (a
@@ -1330,4 +1361,4 @@ TEST(Prepared, BatchResultDoesNotDependOnTheNeighbours) {
     }
 }
 
-} // namespace
+}  // namespace

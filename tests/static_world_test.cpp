@@ -82,7 +82,7 @@ void runCases(const foresight::CollisionWorld& world, const Case* cases, std::si
         EXPECT_NEAR(static_cast<double>(hit.fraction), c.hit->fraction, kFractionTol);
         EXPECT_VEC_NEAR(hit.position, placement.point(c.hit->position), kPositionTol);
         EXPECT_VEC_NEAR(hit.normal, placement.direction(c.hit->normal), kNormalTol);
-        EXPECT_NEAR(glm::length(ftest::toD(hit.normal)), 1.0, 1e-6); // unit, float
+        EXPECT_NEAR(glm::length(ftest::toD(hit.normal)), 1.0, 1e-6);  // unit, float
         // The position is the cast's origin point at the reported fraction.
         EXPECT_VEC_NEAR(hit.position,
                         ftest::toD(cast.origin) + ftest::toD(cast.displacement) * static_cast<double>(hit.fraction),
@@ -104,7 +104,10 @@ TEST(StaticWorldPlane, FloorCases) {
         {"ends short: o-->  |", {0, 2, 0}, {0, -1, 0}, 0.0f, std::nullopt},
         {"ends inside: o---|->", {0, 1, 0}, {0, -1.5, 0}, 0.0f, hitAt(2.0 / 3.0, {0, 0, 0}, up)},
         {"starts on surface moving in: |o->", {3, 0, -2}, {1, -1, 0}, 0.0f, hitAt(0.0, {3, 0, -2}, up)},
-        {"starts 5e-6 behind (within tolerance) moving in", {0, -5e-6, 0}, {0, -1, 0}, 0.0f,
+        {"starts 5e-6 behind (within tolerance) moving in",
+         {0, -5e-6, 0},
+         {0, -1, 0},
+         0.0f,
          hitAt(0.0, {0, -5e-6, 0}, up)},
         {"starts on surface moving away: <-o|", {0, 0, 0}, {0, 1, 0}, 0.0f, std::nullopt},
         {"starts deep inside moving deeper: | o->", {0, -1, 0}, {0, -1, 0}, 0.0f, std::nullopt},
@@ -149,7 +152,7 @@ TEST(StaticWorldPlane, TiltedPlane) {
 
 TEST(StaticWorldPlane, NormalIsNormalisedWhenAdded) {
     StaticWorld world;
-    ASSERT_EQ(world.add(Plane{Vec3(0.0f, 0.0f, -4.0f), Real(0)}), Status::Ok); // z = 0, facing -Z
+    ASSERT_EQ(world.add(Plane{Vec3(0.0f, 0.0f, -4.0f), Real(0)}), Status::Ok);  // z = 0, facing -Z
     ASSERT_EQ(world.planes().size(), 1u);
     EXPECT_VEC_NEAR(world.planes()[0].normal, DVec3(0, 0, -1), 1e-7);
     const Case cases[] = {
@@ -179,10 +182,13 @@ TEST(StaticWorldSphere, Cases) {
     StaticWorld world;
     ASSERT_EQ(world.add(Sphere{RVec3(Real(2), Real(1), Real(-3)), 1.0f}), Status::Ok);
     Placement placement;
-    placement.offset = DVec3(2, 1, -3); // cases are relative to the centre
+    placement.offset = DVec3(2, 1, -3);  // cases are relative to the centre
     const Case cases[] = {
         {"through the centre: o--(  )-->", {-3, 0, 0}, {4, 0, 0}, 0.0f, hitAt(0.5, {-1, 0, 0}, {-1, 0, 0})},
-        {"off-axis chord at y 0.6: enters at x -0.8", {-3, 0.6, 0}, {6, 0, 0}, 0.0f,
+        {"off-axis chord at y 0.6: enters at x -0.8",
+         {-3, 0.6, 0},
+         {6, 0, 0},
+         0.0f,
          hitAt(2.2 / 6.0, {-0.8, 0.6, 0}, {-0.8, 0.6, 0})},
         {"ends short: o-->  ( )", {-3, 0, 0}, {1.5, 0, 0}, 0.0f, std::nullopt},
         {"ends inside: o--(->)", {-3, 0, 0}, {2.5, 0, 0}, 0.0f, hitAt(0.8, {-1, 0, 0}, {-1, 0, 0})},
@@ -194,7 +200,10 @@ TEST(StaticWorldSphere, Cases) {
         {"passes above: o------> over ( )", {-3, 1.5, 0}, {6, 0, 0}, 0.0f, std::nullopt},
         // Swept sphere r = 0.5: hits when the centres are 1.5 apart.
         {"sphere through the centre", {-3, 0, 0}, {4, 0, 0}, 0.5f, hitAt(0.375, {-1.5, 0, 0}, {-1, 0, 0})},
-        {"sphere off-axis at y 1.2: touches at x -0.9", {-3, 1.2, 0}, {6, 0, 0}, 0.5f,
+        {"sphere off-axis at y 1.2: touches at x -0.9",
+         {-3, 1.2, 0},
+         {6, 0, 0},
+         0.5f,
          hitAt(2.1 / 6.0, {-0.9, 1.2, 0}, {-0.6, 0.8, 0})},
         {"sphere passes at y 1.6 > 1.5", {-3, 1.6, 0}, {6, 0, 0}, 0.5f, std::nullopt},
         {"sphere touching, moving in", {-1.5, 0, 0}, {1, 0, 0}, 0.5f, hitAt(0.0, {-1.5, 0, 0}, {-1, 0, 0})},
@@ -218,8 +227,8 @@ TEST(StaticWorldBox, RotatedBoxCases) {
     placement.offset = DVec3(1, 2, 3);
     placement.rotation = ftest::toD(q);
     const double r = 0.25;
-    const double e = r / kSqrt2; // edge contact offset along each of the two face normals
-    const double k = r / kSqrt3; // corner contact offset along each of the three
+    const double e = r / kSqrt2;  // edge contact offset along each of the two face normals
+    const double k = r / kSqrt3;  // corner contact offset along each of the three
     const Case cases[] = {
         {"+X face: o--[ ]", {3, 0.1, 0.2}, {-4, 0, 0}, 0.0f, hitAt(0.5, {1, 0.1, 0.2}, {1, 0, 0})},
         {"-Z face", {0.3, -0.2, -5}, {0, 0, 4}, 0.0f, hitAt(0.75, {0.3, -0.2, -2}, {0, 0, -1})},
@@ -234,12 +243,21 @@ TEST(StaticWorldBox, RotatedBoxCases) {
         {"passes over the top (y 0.7 > 0.5)", {3, 0.7, 0}, {-6, 0, 0}, 0.0f, std::nullopt},
         // Swept sphere r = 0.25 against the rounded box.
         {"sphere onto the +X face", {3, 0.1, 0.2}, {-4, 0, 0}, 0.25f, hitAt(0.4375, {1.25, 0.1, 0.2}, {1, 0, 0})},
-        {"sphere onto the (+X, +Y) edge along the diagonal", {2, 1.5, 0}, {-2, -2, 0}, 0.25f,
+        {"sphere onto the (+X, +Y) edge along the diagonal",
+         {2, 1.5, 0},
+         {-2, -2, 0},
+         0.25f,
          hitAt((1.0 - e) / 2.0, {1 + e, 0.5 + e, 0}, {1 / kSqrt2, 1 / kSqrt2, 0})},
-        {"sphere onto the (+X, +Y, +Z) corner along the diagonal", {2, 1.5, 3}, {-2, -2, -2}, 0.25f,
+        {"sphere onto the (+X, +Y, +Z) corner along the diagonal",
+         {2, 1.5, 3},
+         {-2, -2, -2},
+         0.25f,
          hitAt((1.0 - k) / 2.0, {1 + k, 0.5 + k, 2 + k}, {1 / kSqrt3, 1 / kSqrt3, 1 / kSqrt3})},
         // At y 0.7 the centre line is 0.2 above the edge: contact at x = 1 + sqrt(r^2 - 0.2^2) = 1.15.
-        {"sphere grazing the rounded edge (y 0.7)", {3, 0.7, 0}, {-6, 0, 0}, 0.25f,
+        {"sphere grazing the rounded edge (y 0.7)",
+         {3, 0.7, 0},
+         {-6, 0, 0},
+         0.25f,
          hitAt(1.85 / 6.0, {1.15, 0.7, 0}, {0.6, 0.8, 0})},
         // 0.2 above and 0.2 beyond the corner: 0.283 > r from it, inside a square inflation.
         {"sphere missing the rounded corner (y 0.7, z 2.2)", {3, 0.7, 2.2}, {-6, 0, 0}, 0.25f, std::nullopt},
@@ -264,13 +282,22 @@ TEST(StaticWorldBox, RoundedBoxCases) {
     // Seen from outside, the (+X, +Y) edge is an arc of radius 0.1 + r about (0.9, 0.4).
     const double R = 0.35, e = R / kSqrt2;
     const Case cases[] = {
-        {"sphere onto the +X face: as the sharp box", {3, 0.1, 0.2}, {-4, 0, 0}, 0.25f,
+        {"sphere onto the +X face: as the sharp box",
+         {3, 0.1, 0.2},
+         {-4, 0, 0},
+         0.25f,
          hitAt(0.4375, {1.25, 0.1, 0.2}, {1, 0, 0})},
         {"ray onto the +Y face", {0.2, 3, 0.3}, {0, -5, 0}, 0.0f, hitAt(0.5, {0.2, 0.5, 0.3}, {0, 1, 0})},
-        {"sphere onto the (+X, +Y) edge along the diagonal: later than the sharp edge", {2, 1.5, 0}, {-2, -2, 0},
-         0.25f, hitAt((1.1 - e) / 2.0, {0.9 + e, 0.4 + e, 0}, {1 / kSqrt2, 1 / kSqrt2, 0})},
+        {"sphere onto the (+X, +Y) edge along the diagonal: later than the sharp edge",
+         {2, 1.5, 0},
+         {-2, -2, 0},
+         0.25f,
+         hitAt((1.1 - e) / 2.0, {0.9 + e, 0.4 + e, 0}, {1 / kSqrt2, 1 / kSqrt2, 0})},
         // At y 0.7 the centre line is 0.3 above the arc's axis: contact at x = 0.9 + sqrt(R^2 - 0.3^2).
-        {"sphere grazing the rounded edge (y 0.7)", {3, 0.7, 0}, {-6, 0, 0}, 0.25f,
+        {"sphere grazing the rounded edge (y 0.7)",
+         {3, 0.7, 0},
+         {-6, 0, 0},
+         0.25f,
          hitAt((3 - 0.9 - std::sqrt(R * R - 0.09)) / 6.0, {0.9 + std::sqrt(R * R - 0.09), 0.7, 0},
                {std::sqrt(R * R - 0.09) / R, 0.3 / R, 0})},
         // 0.234 from the sharp box's corner (1, 0.5, 2), but 0.375 > R from the arc's centre.
@@ -287,7 +314,8 @@ TEST(StaticWorldTriangle, Cases) {
     // Two-sided: hit from above with normal +Y, from below with -Y.
     const DVec3 offset(-1.0, 0.5, 2.0);
     StaticWorld world;
-    ASSERT_EQ(world.add(Triangle{ftest::toR(offset), ftest::toR(offset + DVec3(2, 0, 0)), ftest::toR(offset + DVec3(0, 0, 2))}),
+    ASSERT_EQ(world.add(Triangle{ftest::toR(offset), ftest::toR(offset + DVec3(2, 0, 0)),
+                                 ftest::toR(offset + DVec3(0, 0, 2))}),
               Status::Ok);
     Placement placement;
     placement.offset = offset;
@@ -303,9 +331,20 @@ TEST(StaticWorldTriangle, Cases) {
         {"in its plane (parallel)", {-1, 0, 0.5}, {3, 0, 0}, 0.0f, std::nullopt},
         {"zero length on it", {0.5, 0, 0.5}, {0, 0, 0}, 0.0f, std::nullopt},
         // Swept sphere r = 0.25.
-        {"sphere onto the face from above", {0.5, 1, 0.5}, {0, -2, 0}, 0.25f, hitAt(0.375, {0.5, 0.25, 0.5}, {0, 1, 0})},
-        {"sphere onto the face from below", {0.5, -1, 0.5}, {0, 2, 0}, 0.25f, hitAt(0.375, {0.5, -0.25, 0.5}, {0, -1, 0})},
-        {"sphere onto the x edge diagonally from above-outside", {1, 1, -1}, {0, -2, 2}, 0.25f,
+        {"sphere onto the face from above",
+         {0.5, 1, 0.5},
+         {0, -2, 0},
+         0.25f,
+         hitAt(0.375, {0.5, 0.25, 0.5}, {0, 1, 0})},
+        {"sphere onto the face from below",
+         {0.5, -1, 0.5},
+         {0, 2, 0},
+         0.25f,
+         hitAt(0.375, {0.5, -0.25, 0.5}, {0, -1, 0})},
+        {"sphere onto the x edge diagonally from above-outside",
+         {1, 1, -1},
+         {0, -2, 2},
+         0.25f,
          hitAt((1.0 - e) / 2.0, {1, e, -e}, {0, 1 / kSqrt2, -1 / kSqrt2})},
         {"sphere passing above (0.3 > 0.25)", {0.5, 0.3, 0.5}, {1, 0, 0}, 0.25f, std::nullopt},
         {"sphere ends short", {0.5, 1, 0.5}, {0, -0.7, 0}, 0.25f, std::nullopt},
@@ -357,7 +396,11 @@ TEST(StaticWorld, ClosestHitWins) {
         // Down from y 10: triangle at 8, box top at 6, sphere top at 3, floor at 0.
         {"down through all: triangle first", {0, 10, 0}, {0, -10, 0}, 0.0f, hitAt(0.2, {0, 8, 0}, {0, 1, 0})},
         {"from between triangle and box: box top", {0, 7, 0}, {0, -7, 0}, 0.0f, hitAt(1.0 / 7.0, {0, 6, 0}, {0, 1, 0})},
-        {"from between box and sphere: sphere top", {0, 3.5, 0}, {0, -3.5, 0}, 0.0f, hitAt(1.0 / 7.0, {0, 3, 0}, {0, 1, 0})},
+        {"from between box and sphere: sphere top",
+         {0, 3.5, 0},
+         {0, -3.5, 0},
+         0.0f,
+         hitAt(1.0 / 7.0, {0, 3, 0}, {0, 1, 0})},
         {"beside everything: the floor", {5, 10, 0}, {0, -20, 0}, 0.0f, hitAt(0.5, {5, 0, 0}, {0, 1, 0})},
         {"up from the floor: the sphere's bottom", {0, 0, 0}, {0, 10, 0}, 0.0f, hitAt(0.1, {0, 1, 0}, {0, -1, 0})},
     };
@@ -389,10 +432,12 @@ TEST(StaticWorld, ValidatorsRefuseBadShapes) {
     const foresight::Quat id = glm::identity<foresight::Quat>();
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), id}), Status::Ok);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 0.0f, 1.0f), id}), Status::DegenerateShape);
-    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 1.0f, -2.0f), id}), Status::DegenerateShape);
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 1.0f, -2.0f), id}),
+              Status::DegenerateShape);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f), ftest::quatWXYZ(0.0f, 0.0f, 0.0f, 0.0f)}),
               Status::ZeroQuaternion);
-    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0), rinf, Real(0)), Vec3(1.0f), id}), Status::NonFiniteInput);
+    EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0), rinf, Real(0)), Vec3(1.0f), id}),
+              Status::NonFiniteInput);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 0.5f, 1.0f), id, 0.5f}), Status::Ok);
     EXPECT_EQ(foresight::validateBox(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 0.5f, 1.0f), id, 0.6f}),
               Status::InvalidRadius);  // more than the smallest half extent
@@ -411,7 +456,8 @@ TEST(StaticWorld, ValidatorsRefuseBadShapes) {
     EXPECT_EQ(foresight::validateTriangle(Triangle{o, o, z}), Status::DegenerateShape);            // repeated vertex
     EXPECT_EQ(foresight::validateTriangle(Triangle{o, o, o}), Status::DegenerateShape);            // a point
     // Area 5e-13 m^2 < 1e-12 m^2 (also a sliver: height 1e-12 m under a 1 m base).
-    EXPECT_EQ(foresight::validateTriangle(Triangle{o, x, RVec3(Real(0.5), Real(1e-12), Real(0))}), Status::DegenerateShape);
+    EXPECT_EQ(foresight::validateTriangle(Triangle{o, x, RVec3(Real(0.5), Real(1e-12), Real(0))}),
+              Status::DegenerateShape);
     EXPECT_EQ(foresight::validateTriangle(Triangle{o, x, RVec3(rnan, Real(0), Real(0))}), Status::NonFiniteInput);
 }
 
@@ -422,13 +468,16 @@ TEST(StaticWorld, RefusedShapesLeaveTheWorldUnchanged) {
     EXPECT_EQ(world.add(Plane{Vec3(0.0f), Real(3)}), Status::ZeroVector);
     EXPECT_EQ(world.add(Sphere{RVec3(Real(0), Real(5), Real(0)), 0.0f}), Status::InvalidRadius);
     EXPECT_EQ(world.add(Sphere{RVec3(Real(0), Real(5), Real(0)), -1.0f}), Status::InvalidRadius);
-    EXPECT_EQ(world.add(OrientedBox{RVec3(Real(0), Real(5), Real(0)), Vec3(1.0f, 1.0f, 0.0f), glm::identity<foresight::Quat>()}),
+    EXPECT_EQ(world.add(OrientedBox{RVec3(Real(0), Real(5), Real(0)), Vec3(1.0f, 1.0f, 0.0f),
+                                    glm::identity<foresight::Quat>()}),
               Status::DegenerateShape);
-    EXPECT_EQ(world.add(OrientedBox{RVec3(Real(0), Real(5), Real(0)), Vec3(1.0f), ftest::quatWXYZ(0.0f, 0.0f, 0.0f, 0.0f)}),
-              Status::ZeroQuaternion);
+    EXPECT_EQ(
+        world.add(OrientedBox{RVec3(Real(0), Real(5), Real(0)), Vec3(1.0f), ftest::quatWXYZ(0.0f, 0.0f, 0.0f, 0.0f)}),
+        Status::ZeroQuaternion);
     EXPECT_EQ(world.add(Triangle{RVec3(Real(0)), RVec3(Real(1), Real(0), Real(0)), RVec3(Real(2), Real(0), Real(0))}),
               Status::DegenerateShape);
-    EXPECT_EQ(world.add(Sphere{RVec3(Real(0), std::numeric_limits<Real>::quiet_NaN(), Real(0)), 1.0f}), Status::NonFiniteInput);
+    EXPECT_EQ(world.add(Sphere{RVec3(Real(0), std::numeric_limits<Real>::quiet_NaN(), Real(0)), 1.0f}),
+              Status::NonFiniteInput);
     EXPECT_EQ(world.shapeCount(), 1u);
     EXPECT_EQ(world.planes().size(), 1u);
     EXPECT_TRUE(world.spheres().empty());
@@ -449,7 +498,7 @@ TEST(StaticWorld, RefusedShapesLeaveTheWorldUnchanged) {
 
 TEST(StaticWorld, ShapesAreStoredNormalised) {
     StaticWorld world;
-    const foresight::Quat q2 = ftest::quatWXYZ(0.0f, 2.0f, 0.0f, 0.0f); // 180 degrees about X, length 2
+    const foresight::Quat q2 = ftest::quatWXYZ(0.0f, 2.0f, 0.0f, 0.0f);  // 180 degrees about X, length 2
     ASSERT_EQ(world.add(OrientedBox{RVec3(Real(0)), Vec3(1.0f, 2.0f, 3.0f), q2}), Status::Ok);
     ASSERT_EQ(world.boxes().size(), 1u);
     EXPECT_QUAT_NEAR(world.boxes()[0].orientation, ftest::dquatWXYZ(0.0, 1.0, 0.0, 0.0), 1e-7);
@@ -521,4 +570,4 @@ TEST(EmptyWorld, HitsNothing) {
     EXPECT_FALSE(world.castSegment(cast, hit));
 }
 
-} // namespace
+}  // namespace

@@ -49,21 +49,21 @@ public:
 
     std::uint64_t next() {
         switch (mStep) {
-        case Step::XorShift64:
-            mState ^= mState << 13;
-            mState ^= mState >> 7;
-            mState ^= mState << 17;
-            return mState;
-        case Step::XorShift64Star:
-            mState ^= mState >> 12;
-            mState ^= mState << 25;
-            mState ^= mState >> 27;
-            return mState * 0x2545f4914f6cdd1dull;
-        case Step::Lcg64:
-            mState = mState * 6364136223846793005ull + 1442695040888963407ull;
-            return mState;
-        case Step::SplitMix64:
-            break;
+            case Step::XorShift64:
+                mState ^= mState << 13;
+                mState ^= mState >> 7;
+                mState ^= mState << 17;
+                return mState;
+            case Step::XorShift64Star:
+                mState ^= mState >> 12;
+                mState ^= mState << 25;
+                mState ^= mState >> 27;
+                return mState * 0x2545f4914f6cdd1dull;
+            case Step::Lcg64:
+                mState = mState * 6364136223846793005ull + 1442695040888963407ull;
+                return mState;
+            case Step::SplitMix64:
+                break;
         }
         std::uint64_t z = (mState += 0x9e3779b97f4a7c15ull);
         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -163,8 +163,7 @@ inline DQuat dquatWXYZ(double w, double x, double y, double z) {
 
 /// A double quaternion as float (the library's Quat).
 inline foresight::Quat toF(const DQuat& q) {
-    return quatWXYZ(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y),
-                    static_cast<float>(q.z));
+    return quatWXYZ(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z));
 }
 
 /// The rotation by `angle` [rad] about the unit `axis`, in double (built by hand, not glm).
@@ -175,10 +174,8 @@ inline DQuat dAxisAngle(const DVec3& axis, double angle) {
 
 /// Hamilton product in double, written out (independent of glm's operator*).
 inline DQuat dMul(const DQuat& a, const DQuat& b) {
-    return dquatWXYZ(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-                     a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-                     a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-                     a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+    return dquatWXYZ(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                     a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
 }
 
 /// Rotates `v` by the unit quaternion `q` in double: v' = v + 2w (u x v) + 2 u x (u x v).
@@ -210,8 +207,8 @@ template <class A, class B>
     const DVec3 db = toD(b);
     const double d = glm::length(da - db);
     if (d <= tol) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db) << ": distance "
-                                         << d << " > " << tol;
+    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db) << ": distance " << d << " > "
+                                         << tol;
 }
 
 /// Quaternions equal up to sign: min(|a - b|, |a + b|) <= tol (4-vector norm).
@@ -225,8 +222,8 @@ template <class A, class B>
                                   (da.y + db.y) * (da.y + db.y) + (da.z + db.z) * (da.z + db.z));
     const double d = std::fmin(minus, plus);
     if (d <= tol) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db)
-                                         << ": distance (up to sign) " << d << " > " << tol;
+    return ::testing::AssertionFailure() << describe(da) << " vs " << describe(db) << ": distance (up to sign) " << d
+                                         << " > " << tol;
 }
 
 /// All components finite.
@@ -295,7 +292,7 @@ private:
     std::uint64_t mHash = 14695981039346656037ull;
 };
 
-} // namespace ftest
+}  // namespace ftest
 
 #define EXPECT_VEC_NEAR(a, b, tol) EXPECT_TRUE(::ftest::vecNear((a), (b), (tol)))
 #define ASSERT_VEC_NEAR(a, b, tol) ASSERT_TRUE(::ftest::vecNear((a), (b), (tol)))

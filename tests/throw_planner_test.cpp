@@ -69,9 +69,9 @@ ProjectileResult fly(const ThrowPlanRequest& r, const ThrowPlan& plan, const for
                      std::vector<TrajectoryPoint>& trajectory) {
     trajectory.assign(foresight::trajectoryCapacity(r.fuseTime, r.settings, plan.bounces + 8), {});
     ProjectileResult out;
-    EXPECT_EQ(foresight::predictProjectile(r.start, plan.launchVelocity, r.fuseTime, r.settings, world,
-                                           trajectory, out),
-              Status::Ok);
+    EXPECT_EQ(
+        foresight::predictProjectile(r.start, plan.launchVelocity, r.fuseTime, r.settings, world, trajectory, out),
+        Status::Ok);
     return out;
 }
 
@@ -87,9 +87,9 @@ void expectValidPlans(const ThrowPlanRequest& r, const Planning& p, const foresi
         // The same prediction run again: bit-identical (determinism).
         EXPECT_EQ(flown.position, plan.finalPosition);
         EXPECT_EQ(flown.bounces, plan.bounces);
-        EXPECT_NEAR(plan.distance, distance, 1e-6); // float of the same double
+        EXPECT_NEAR(plan.distance, distance, 1e-6);  // float of the same double
         EXPECT_LE(glm::length(ftest::toD(plan.launchVelocity)), r.maxSpeed * (1 + 1e-6));
-        EXPECT_GE(plan.distance, previous); // closest first
+        EXPECT_GE(plan.distance, previous);  // closest first
         previous = plan.distance;
     }
     for (std::size_t i = 0; i < p.result.planCount; ++i) {
@@ -108,7 +108,7 @@ void expectValidPlans(const ThrowPlanRequest& r, const Planning& p, const foresi
 class ThrowPlanner : public ::testing::Test {
 protected:
     void SetUp() override { ASSERT_EQ(floor.add(Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok); }
-    StaticWorld floor; // y = 0
+    StaticWorld floor;  // y = 0
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -126,11 +126,11 @@ TEST_F(ThrowPlanner, FlatFloorReachableTargetGetsDistinctPlansWithinTheRadius) {
         // grenade covers |v_h| * 3 s horizontally (0.5 m of radius, ~1e-6 m of rounding).
         const double covered = horizontalLength(ftest::toD(plan.launchVelocity)) * 3.0;
         EXPECT_NEAR(covered, std::hypot(4.0, 7.0), 0.5);
-        EXPECT_EQ(plan.firstImpactNormal, Vec3(0.0f, 1.0f, 0.0f)); // the floor
+        EXPECT_EQ(plan.firstImpactNormal, Vec3(0.0f, 1.0f, 0.0f));  // the floor
         EXPECT_GT(plan.firstImpactTime, 0.0f);
         EXPECT_GE(plan.bounces, 1u);
     }
-    EXPECT_LE(p.result.predictions, 10u); // one prediction per seed on open ground
+    EXPECT_LE(p.result.predictions, 10u);  // one prediction per seed on open ground
     EXPECT_LE(p.result.closestDistance, p.plans[0].distance);
 }
 
@@ -164,10 +164,10 @@ TEST_F(ThrowPlanner, ZeroGravityFlightIsAStraightLine) {
     const Planning p(r, nullptr, 1);
     ASSERT_EQ(p.status, Status::Ok);
     ASSERT_EQ(p.result.planCount, 1u);
-    EXPECT_NEAR(p.plans[0].launchVelocity.x, 1.0f, 1e-5f); // 3 m / 3 s, float rounding
+    EXPECT_NEAR(p.plans[0].launchVelocity.x, 1.0f, 1e-5f);  // 3 m / 3 s, float rounding
     EXPECT_NEAR(p.plans[0].launchVelocity.z, 2.0f, 1e-5f);
     EXPECT_EQ(p.plans[0].bounces, 0u);
-    EXPECT_LT(p.plans[0].firstImpactTime, 0.0f); // no impact
+    EXPECT_LT(p.plans[0].firstImpactTime, 0.0f);  // no impact
     expectValidPlans(r, p, nullptr);
 }
 
@@ -201,8 +201,8 @@ TEST_F(ThrowPlannerBank, TargetBehindAWallIsReachedOffTheOtherWall) {
     r.acceptanceRadius = 0.3f;
     const Planning p(r, &world, 2);
     ASSERT_EQ(p.status, Status::Ok);
-    ASSERT_GE(p.result.planCount, 1u) << "closest " << p.result.closestDistance << " m after "
-                                      << p.result.predictions << " predictions";
+    ASSERT_GE(p.result.planCount, 1u) << "closest " << p.result.closestDistance << " m after " << p.result.predictions
+                                      << " predictions";
     expectValidPlans(r, p, &world);
     std::vector<TrajectoryPoint> trajectory;
     int singleBounce = 0;
@@ -212,7 +212,7 @@ TEST_F(ThrowPlannerBank, TargetBehindAWallIsReachedOffTheOtherWall) {
         for (std::size_t i = 0; i < flown.trajectorySize && first == nullptr; ++i)
             if (trajectory[i].event == TrajectoryEvent::Bounce) first = &trajectory[i];
         ASSERT_NE(first, nullptr);
-        EXPECT_EQ(first->normal, Vec3(-1.0f, 0.0f, 0.0f)); // the plane x = 4, exact in float
+        EXPECT_EQ(first->normal, Vec3(-1.0f, 0.0f, 0.0f));  // the plane x = 4, exact in float
         EXPECT_NEAR(first->position.x, 4.0f, 1e-5f);        // on the plane, float rounding
         EXPECT_EQ(plan.firstImpactNormal, first->normal);
         EXPECT_EQ(plan.firstImpactTime, first->time);
@@ -275,9 +275,9 @@ TEST_F(ThrowPlanner, OutOfReachIsAnEmptyAnswer) {
     ThrowPlanResult result;
     ASSERT_EQ(foresight::planThrow(r, &floor, plans, scratch, result), Status::Ok);
     EXPECT_EQ(result.planCount, 0u);
-    EXPECT_GE(result.closestDistance, 200.0f - 30.0f - 0.5f); // |v| * t at most, and the radius
+    EXPECT_GE(result.closestDistance, 200.0f - 30.0f - 0.5f);  // |v| * t at most, and the radius
     EXPECT_LE(result.predictions, r.budget.maxPredictions);
-    for (const ThrowPlan& plan : plans) EXPECT_EQ(plan.distance, 123.0f); // untouched
+    for (const ThrowPlan& plan : plans) EXPECT_EQ(plan.distance, 123.0f);  // untouched
 }
 
 // A target beyond a float's range of any throw (3e38 m on two axes: 4.2e38 m > FLT_MAX): no
@@ -372,7 +372,8 @@ TEST_F(ThrowPlanner, BadInputIsRefusedWithAStatusAndNothingWritten) {
         {"too many refinements",
          [](ThrowPlanRequest& r, float) { r.budget.refinements = foresight::kMaxThrowPlanRefinements + 1; },
          Status::InvalidIterations},
-        {"restitution 2", [](ThrowPlanRequest& r, float) { r.settings.restitution = 2.0f; }, Status::InvalidRestitution},
+        {"restitution 2", [](ThrowPlanRequest& r, float) { r.settings.restitution = 2.0f; },
+         Status::InvalidRestitution},
         {"zero step", [](ThrowPlanRequest& r, float) { r.settings.step = 0.0f; }, Status::InvalidStep},
         {"negative grid step", [](ThrowPlanRequest& r, float) { r.budget.gridStep = -0.1f; }, Status::InvalidStep},
         {"NaN grid step", [](ThrowPlanRequest& r, float n) { r.budget.gridStep = n; }, Status::InvalidStep},
@@ -388,7 +389,7 @@ TEST_F(ThrowPlanner, BadInputIsRefusedWithAStatusAndNothingWritten) {
         ThrowPlanResult result;
         result.predictions = 99;
         EXPECT_EQ(foresight::planThrow(r, &floor, plans, {}, result), c.expected) << c.what;
-        EXPECT_EQ(result.predictions, 99u) << c.what; // untouched
+        EXPECT_EQ(result.predictions, 99u) << c.what;  // untouched
         EXPECT_EQ(plans[0].distance, 42.0f) << c.what;
     }
     EXPECT_EQ(foresight::validateThrowPlanRequest(good), Status::Ok);
@@ -427,8 +428,8 @@ TEST_F(ThrowPlannerBank, PlanningDoesNotAllocate) {
     const long allocations = ftest::gAllocations.load() - before;
     ASSERT_EQ(planned, Status::Ok);
     ASSERT_EQ(replayed, Status::Ok);
-    EXPECT_GT(result.predictions, 10u); // the grid ran: the search did real work
+    EXPECT_GT(result.predictions, 10u);  // the grid ran: the search did real work
     EXPECT_EQ(allocations, 0);
 }
 
-} // namespace
+}  // namespace

@@ -23,8 +23,8 @@ using foresight::Vec3;
 using foresight::VehicleSettings;
 using foresight::VehicleState;
 using ftest::DQuat;
-using ftest::DVec3;
 using ftest::dquatWXYZ;
+using ftest::DVec3;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
@@ -83,7 +83,8 @@ DVehicle articleVehicle(const VehicleState& start, float time, int iterations, c
     const DQuat r = dRotation(ftest::toD(start.angularVelocity), dt);
     for (int i = 1; i <= iterations; ++i) {
         s.position += s.velocity * dt;
-        s.orientation = settings.frame == AngularFrame::Body ? ftest::dMul(s.orientation, r) : ftest::dMul(r, s.orientation);
+        s.orientation =
+            settings.frame == AngularFrame::Body ? ftest::dMul(s.orientation, r) : ftest::dMul(r, s.orientation);
         s.velocity = ftest::dRotate(s.orientation, forward * speed);
     }
     return s;
@@ -133,10 +134,10 @@ TEST(VehicleIterative, OneIterationIsOneLinearStepPlusRotation) {
     for (const AngularFrame frame : {AngularFrame::Body, AngularFrame::World}) {
         VehicleState out;
         ASSERT_EQ(foresight::predictVehicleIterative(start, 2.0f, 1, makeSettings(frame), out), Status::Ok);
-        EXPECT_VEC_NEAR(out.position, DVec3(13.0, 0.0, 18.0), 1e-5);                  // float, values ~18
-        EXPECT_QUAT_NEAR(out.orientation, dquatWXYZ(std::cos(0.5), 0.0, std::sin(0.5), 0.0), 1e-6); // float trig
-        EXPECT_VEC_NEAR(out.velocity, DVec3(10.0 * std::sin(1.0), 0.0, 10.0 * std::cos(1.0)), 1e-5); // float, |v| = 10
-        EXPECT_VEC_NEAR(out.angularVelocity, DVec3(0.0, 0.5, 0.0), 0.0);                // carried unchanged
+        EXPECT_VEC_NEAR(out.position, DVec3(13.0, 0.0, 18.0), 1e-5);  // float, values ~18
+        EXPECT_QUAT_NEAR(out.orientation, dquatWXYZ(std::cos(0.5), 0.0, std::sin(0.5), 0.0), 1e-6);   // float trig
+        EXPECT_VEC_NEAR(out.velocity, DVec3(10.0 * std::sin(1.0), 0.0, 10.0 * std::cos(1.0)), 1e-5);  // float, |v| = 10
+        EXPECT_VEC_NEAR(out.angularVelocity, DVec3(0.0, 0.5, 0.0), 0.0);  // carried unchanged
     }
 }
 
@@ -161,7 +162,8 @@ TEST(VehicleIterative, MatchesArticlePort) {
     };
     const Quat tilted = glm::angleAxis(0.7f, glm::normalize(Vec3(1.0f, 2.0f, 3.0f)));
     const Case cases[] = {
-        {"article car", makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f)),
+        {"article car",
+         makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f)),
          AngularFrame::Body, Vec3(0.0f, 0.0f, 1.0f), 2.0f},
         {"off-axis velocity, tilted, body",
          makeVehicle(RVec3(Real(5), Real(1), Real(-3)), Vec3(2.0f, 1.0f, 9.0f), tilted, Vec3(0.3f, 0.8f, -0.2f)),
@@ -169,7 +171,8 @@ TEST(VehicleIterative, MatchesArticlePort) {
         {"off-axis velocity, tilted, world",
          makeVehicle(RVec3(Real(5), Real(1), Real(-3)), Vec3(2.0f, 1.0f, 9.0f), tilted, Vec3(0.3f, 0.8f, -0.2f)),
          AngularFrame::World, Vec3(0.0f, 0.0f, 1.0f), 2.5f},
-        {"reversing", makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, -6.0f), glm::identity<Quat>(), Vec3(0.0f, -0.7f, 0.0f)),
+        {"reversing",
+         makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, -6.0f), glm::identity<Quat>(), Vec3(0.0f, -0.7f, 0.0f)),
          AngularFrame::Body, Vec3(0.0f, 0.0f, 1.0f), 1.5f},
         {"forward +X", makeVehicle(RVec3(Real(0)), Vec3(8.0f, 0.0f, 1.0f), tilted, Vec3(0.0f, 0.4f, 0.1f)),
          AngularFrame::Body, Vec3(1.0f, 0.0f, 0.0f), 2.0f},
@@ -177,13 +180,14 @@ TEST(VehicleIterative, MatchesArticlePort) {
     for (const Case& c : cases) {
         for (const int n : {1, 4, 16}) {
             VehicleState out;
-            ASSERT_EQ(foresight::predictVehicleIterative(c.start, c.time, n, makeSettings(c.frame, c.forward), out), Status::Ok);
+            ASSERT_EQ(foresight::predictVehicleIterative(c.start, c.time, n, makeSettings(c.frame, c.forward), out),
+                      Status::Ok);
             const DVehicle ref = articleVehicle(c.start, c.time, n, makeSettings(c.frame, c.forward));
             // float positions ~25 m over up to 16 steps (ulp 1.9e-6 each) plus the heading's
             // float rounding (~1e-6 rad per composition) times the distance: < 1e-4 m.
             EXPECT_VEC_NEAR(out.position, ref.position, 1e-4) << c.what << " N=" << n;
-            EXPECT_VEC_NEAR(out.velocity, ref.velocity, 2e-5) << c.what << " N=" << n; // |v| <= 10, float
-            EXPECT_QUAT_NEAR(out.orientation, ref.orientation, 4e-6) << c.what << " N=" << n; // 16 float products
+            EXPECT_VEC_NEAR(out.velocity, ref.velocity, 2e-5) << c.what << " N=" << n;         // |v| <= 10, float
+            EXPECT_QUAT_NEAR(out.orientation, ref.orientation, 4e-6) << c.what << " N=" << n;  // 16 float products
         }
     }
 }
@@ -193,13 +197,14 @@ TEST(VehicleIterative, MatchesArticlePort) {
 
 TEST(VehicleIterative, ConvergesFirstOrderToExact) {
     // 10 m/s, 0.5 rad/s about +Y, 2 s (the article's car): a 20 m radius arc of 1 rad.
-    const VehicleState start = makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(),
-                                           Vec3(0.0f, 0.5f, 0.0f));
+    const VehicleState start =
+        makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
     const VehicleSettings settings = makeSettings(AngularFrame::Body);
     VehicleState exact;
     ASSERT_EQ(foresight::predictVehicleExact(start, 2.0f, settings, exact), Status::Ok);
     // Closed form of the arc (independent): x = R (1 - cos 1), z = R sin 1 with R = 20 m.
-    EXPECT_VEC_NEAR(exact.position, DVec3(20.0 * (1.0 - std::cos(1.0)), 0.0, 20.0 * std::sin(1.0)), 2e-5); // float, 17 m
+    EXPECT_VEC_NEAR(exact.position, DVec3(20.0 * (1.0 - std::cos(1.0)), 0.0, 20.0 * std::sin(1.0)),
+                    2e-5);  // float, 17 m
 
     auto error = [&](int n) {
         VehicleState out;
@@ -220,7 +225,7 @@ TEST(VehicleIterative, ConvergesFirstOrderToExact) {
                     libraryError, portError);
         ::testing::Test::RecordProperty("vehicle_error_N" + std::to_string(n), std::to_string(libraryError));
         // float result vs double port: the same first-order error.
-        EXPECT_NEAR(libraryError, portError, 1e-4) << "N=" << n; // float positions ~17 m
+        EXPECT_NEAR(libraryError, portError, 1e-4) << "N=" << n;  // float positions ~17 m
     }
     // The article's 4 iterations are about 2 m off: the heading lags by half a step on average.
     const double e4 = error(4);
@@ -247,12 +252,14 @@ TEST(VehicleExact, MatchesNumericalIntegration) {
         for (const AngularFrame frame : {AngularFrame::Body, AngularFrame::World}) {
             // Velocity on the (tilted) forward axis at 12 m/s, from a non-origin start.
             const Vec3 velocity = tilted * Vec3(0.0f, 0.0f, 12.0f);
-            const VehicleState start = makeVehicle(RVec3(Real(3), Real(-1), Real(4)), velocity, tilted, c.angularVelocity);
+            const VehicleState start =
+                makeVehicle(RVec3(Real(3), Real(-1), Real(4)), velocity, tilted, c.angularVelocity);
             const VehicleSettings settings = makeSettings(frame);
             VehicleState out;
             ASSERT_EQ(foresight::predictVehicleExact(start, c.time, settings, out), Status::Ok);
             const DVehicle ref = integratedVehicle(start, c.time, settings, 100000);
-            EXPECT_VEC_NEAR(out.position, ref.position, 1e-3) << c.what << (frame == AngularFrame::Body ? " body" : " world");
+            EXPECT_VEC_NEAR(out.position, ref.position, 1e-3)
+                << c.what << (frame == AngularFrame::Body ? " body" : " world");
             // Velocity stays on the forward axis with the same speed; orientation is q0 * R(w t).
             EXPECT_VEC_NEAR(out.velocity, ref.velocity, 1e-4) << c.what;         // |v| = 12, float trig
             EXPECT_QUAT_NEAR(out.orientation, ref.orientation, 2e-6) << c.what;  // float, angle <= 9 rad
@@ -266,7 +273,8 @@ TEST(VehicleExact, AcrossAngularSpeedMagnitudes) {
     const Quat start = glm::angleAxis(-0.4f, glm::normalize(Vec3(0.0f, 1.0f, 1.0f)));
     for (const float magnitude : {1e-9f, 1e-6f, 1e-4f, 1e-3f, 1e-2f, 0.1f, 1.0f, 10.0f}) {
         for (const AngularFrame frame : {AngularFrame::Body, AngularFrame::World}) {
-            const VehicleState s = makeVehicle(RVec3(Real(0)), start * Vec3(0.0f, 0.0f, 10.0f), start, axis * magnitude);
+            const VehicleState s =
+                makeVehicle(RVec3(Real(0)), start * Vec3(0.0f, 0.0f, 10.0f), start, axis * magnitude);
             VehicleState out;
             ASSERT_EQ(foresight::predictVehicleExact(s, 2.0f, makeSettings(frame), out), Status::Ok);
             const DVehicle ref = integratedVehicle(s, 2.0f, makeSettings(frame), 5000);
@@ -289,7 +297,8 @@ TEST(Vehicle, SmallAngularVelocityIsAStraightLine) {
         VehicleState exact;
         VehicleState iterative;
         ASSERT_EQ(foresight::predictVehicleExact(start, 2.0f, makeSettings(AngularFrame::Body), exact), Status::Ok);
-        ASSERT_EQ(foresight::predictVehicleIterative(start, 2.0f, 4, makeSettings(AngularFrame::Body), iterative), Status::Ok);
+        ASSERT_EQ(foresight::predictVehicleIterative(start, 2.0f, 4, makeSettings(AngularFrame::Body), iterative),
+                  Status::Ok);
         // float positions ~23 m (ulp 1.9e-6) plus the 2e-6 m true deviation.
         EXPECT_VEC_NEAR(exact.position, DVec3(1.0, 2.0, 23.0), 1e-5) << "w=" << w;
         EXPECT_VEC_NEAR(iterative.position, DVec3(1.0, 2.0, 23.0), 1e-5) << "w=" << w;
@@ -301,12 +310,12 @@ TEST(Vehicle, SmallAngularVelocityIsAStraightLine) {
 
 TEST(Vehicle, TimeZeroKeepsThePosition) {
     const Quat q = glm::angleAxis(0.3f, Vec3(0.0f, 1.0f, 0.0f));
-    const VehicleState start = makeVehicle(RVec3(Real(4), Real(5), Real(6)), q * Vec3(0.0f, 0.0f, 3.0f), q,
-                                           Vec3(0.1f, 0.2f, 0.3f));
+    const VehicleState start =
+        makeVehicle(RVec3(Real(4), Real(5), Real(6)), q * Vec3(0.0f, 0.0f, 3.0f), q, Vec3(0.1f, 0.2f, 0.3f));
     VehicleState out;
     ASSERT_EQ(foresight::predictVehicleExact(start, 0.0f, makeSettings(AngularFrame::Body), out), Status::Ok);
     EXPECT_VEC_NEAR(out.position, start.position, 0.0);
-    EXPECT_QUAT_NEAR(out.orientation, q, 1e-7); // renormalised unit quaternion
+    EXPECT_QUAT_NEAR(out.orientation, q, 1e-7);  // renormalised unit quaternion
     ASSERT_EQ(foresight::predictVehicleIterative(start, 0.0f, 4, makeSettings(AngularFrame::Body), out), Status::Ok);
     EXPECT_VEC_NEAR(out.position, start.position, 0.0);
     EXPECT_QUAT_NEAR(out.orientation, q, 1e-7);
@@ -317,15 +326,15 @@ TEST(Vehicle, TimeZeroKeepsThePosition) {
 
 TEST(Vehicle, ReversingVehicleKeepsReversing) {
     // Velocity (0, 0, -10) against forward +Z: speed -10. Yawing 0.5 rad/s for 1 s.
-    const VehicleState start = makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, -10.0f), glm::identity<Quat>(),
-                                           Vec3(0.0f, 0.5f, 0.0f));
+    const VehicleState start =
+        makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, -10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
     const VehicleSettings settings = makeSettings(AngularFrame::Body);
     // Closed form: forward(t) = (sin wt, 0, cos wt), displacement = speed * integral:
     //   -10 * ((1 - cos 0.5) / 0.5, 0, sin 0.5 / 0.5).
     const DVec3 expected = -10.0 * DVec3((1.0 - std::cos(0.5)) / 0.5, 0.0, std::sin(0.5) / 0.5);
     VehicleState exact;
     ASSERT_EQ(foresight::predictVehicleExact(start, 1.0f, settings, exact), Status::Ok);
-    EXPECT_VEC_NEAR(exact.position, expected, 1e-5); // float, ~10 m
+    EXPECT_VEC_NEAR(exact.position, expected, 1e-5);  // float, ~10 m
     // The final velocity points backwards along the final forward axis.
     const DVec3 finalForward = ftest::dRotate(ftest::toD(exact.orientation), DVec3(0.0, 0.0, 1.0));
     EXPECT_VEC_NEAR(exact.velocity, -10.0 * finalForward, 1e-5);
@@ -333,9 +342,9 @@ TEST(Vehicle, ReversingVehicleKeepsReversing) {
     for (const int n : {1, 4, 16}) {
         VehicleState iterative;
         ASSERT_EQ(foresight::predictVehicleIterative(start, 1.0f, n, settings, iterative), Status::Ok);
-        EXPECT_LT(iterative.position.z, Real(-8)) << "N=" << n; // backwards, not forwards
+        EXPECT_LT(iterative.position.z, Real(-8)) << "N=" << n;  // backwards, not forwards
         const DVec3 forward = ftest::dRotate(ftest::toD(iterative.orientation), DVec3(0.0, 0.0, 1.0));
-        EXPECT_LT(glm::dot(ftest::toD(iterative.velocity), forward), -9.99) << "N=" << n; // still reversing
+        EXPECT_LT(glm::dot(ftest::toD(iterative.velocity), forward), -9.99) << "N=" << n;  // still reversing
         // And it tends to the same arc, first order: the heading lags by about w dt / 2 over
         // the 10 m travelled, 10 * 0.5 / (2 N) = 2.5 / N m; allow 4 / N.
         EXPECT_VEC_NEAR(iterative.position, expected, 4.0 / n) << "N=" << n;
@@ -349,8 +358,10 @@ TEST(Vehicle, ForwardXIsTheRotatedEquivalentOfForwardZ) {
     // Simple case: identity start, yaw about +Y. A +X-forward vehicle moving along +X is the
     // +Z-forward one rotated by +90 degrees about Y (which maps +Z to +X).
     const DQuat ry90 = ftest::dAxisAngle(DVec3(0.0, 1.0, 0.0), 0.5 * 3.14159265358979323846);
-    const VehicleState z = makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
-    const VehicleState x = makeVehicle(RVec3(Real(0)), Vec3(10.0f, 0.0f, 0.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
+    const VehicleState z =
+        makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 10.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
+    const VehicleState x =
+        makeVehicle(RVec3(Real(0)), Vec3(10.0f, 0.0f, 0.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
     for (const bool exact : {true, false}) {
         VehicleState outZ;
         VehicleState outX;
@@ -381,7 +392,7 @@ TEST(Vehicle, ForwardXWithGeneralOrientationMatchesForwardZ) {
     ASSERT_TRUE(ftest::vecNear(ftest::dRotate(c, DVec3(1.0, 0.0, 0.0)), DVec3(0.0, 0.0, 1.0), 1e-12));
     const Quat qA = glm::angleAxis(1.1f, glm::normalize(Vec3(-1.0f, 2.0f, 0.5f)));
     const Quat qB = ftest::toF(ftest::dMul(ftest::toD(qA), c));
-    const Vec3 velocity = qA * Vec3(0.5f, -0.5f, 9.0f); // slightly off the forward axis
+    const Vec3 velocity = qA * Vec3(0.5f, -0.5f, 9.0f);  // slightly off the forward axis
     const Vec3 wA(0.2f, -0.6f, 0.3f);
     for (const AngularFrame frame : {AngularFrame::Body, AngularFrame::World}) {
         const Vec3 wB = frame == AngularFrame::Body ? ftest::toF(ftest::dRotate(cInverse, ftest::toD(wA))) : wA;
@@ -411,8 +422,10 @@ TEST(Vehicle, ForwardXWithGeneralOrientationMatchesForwardZ) {
 // (8) Refusals.
 
 TEST(Vehicle, RefusalsLeaveOutUntouched) {
-    const VehicleState good = makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 5.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
-    VehicleState before = makeVehicle(RVec3(Real(-9)), Vec3(-9.0f), ftest::quatWXYZ(0.5f, 0.5f, 0.5f, 0.5f), Vec3(-9.0f));
+    const VehicleState good =
+        makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 5.0f), glm::identity<Quat>(), Vec3(0.0f, 0.5f, 0.0f));
+    VehicleState before =
+        makeVehicle(RVec3(Real(-9)), Vec3(-9.0f), ftest::quatWXYZ(0.5f, 0.5f, 0.5f, 0.5f), Vec3(-9.0f));
     const VehicleSettings body = makeSettings(AngularFrame::Body);
 
     auto expectIterative = [&](const VehicleState& s, float t, int n, const VehicleSettings& settings, Status expected,
@@ -461,7 +474,8 @@ TEST(Vehicle, RefusalsLeaveOutUntouched) {
     expectExact(nanQ, 1.0f, body, Status::NonFiniteInput, "NaN quaternion");
     expectIterative(good, kNaN, 4, body, Status::NonFiniteInput, "NaN time");
     expectExact(good, kNaN, body, Status::NonFiniteInput, "NaN time");
-    expectExact(good, 1.0f, makeSettings(AngularFrame::Body, Vec3(0.0f, kNaN, 1.0f)), Status::NonFiniteInput, "NaN forward");
+    expectExact(good, 1.0f, makeSettings(AngularFrame::Body, Vec3(0.0f, kNaN, 1.0f)), Status::NonFiniteInput,
+                "NaN forward");
 }
 
 TEST(Vehicle, NonNormalisedInputsAreNormalised) {
@@ -476,19 +490,21 @@ TEST(Vehicle, NonNormalisedInputsAreNormalised) {
     ASSERT_EQ(foresight::predictVehicleExact(unit, 2.0f, makeSettings(AngularFrame::Body), a), Status::Ok);
     ASSERT_EQ(foresight::predictVehicleExact(scaled, 2.0f, makeSettings(AngularFrame::Body, Vec3(0.0f, 0.0f, 3.0f)), b),
               Status::Ok);
-    EXPECT_VEC_NEAR(b.position, a.position, 1e-5); // float, ~20 m
+    EXPECT_VEC_NEAR(b.position, a.position, 1e-5);  // float, ~20 m
     EXPECT_NEAR(ftest::quatLength(b.orientation), 1.0, 1e-6);
-    EXPECT_NEAR(glm::length(ftest::toD(b.velocity)), 10.0, 1e-5); // speed kept, not scaled by |forward|
+    EXPECT_NEAR(glm::length(ftest::toD(b.velocity)), 10.0, 1e-5);  // speed kept, not scaled by |forward|
 }
 
 TEST(Vehicle, OverflowingResultIsRefused) {
     if constexpr (foresight::kDoublePrecision) {
         GTEST_SKIP() << "double positions do not overflow here";
     } else {
-        const VehicleState huge = makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 3e38f), glm::identity<Quat>(), Vec3(0.0f));
+        const VehicleState huge =
+            makeVehicle(RVec3(Real(0)), Vec3(0.0f, 0.0f, 3e38f), glm::identity<Quat>(), Vec3(0.0f));
         VehicleState out = huge;
         // 3e38 m/s for 100 s: 3e40 m does not fit a float position.
-        EXPECT_EQ(foresight::predictVehicleExact(huge, 100.0f, makeSettings(AngularFrame::Body), out), Status::NonFiniteResult);
+        EXPECT_EQ(foresight::predictVehicleExact(huge, 100.0f, makeSettings(AngularFrame::Body), out),
+                  Status::NonFiniteResult);
         EXPECT_TRUE(ftest::sameBytes(out, huge));
         EXPECT_EQ(foresight::predictVehicleIterative(huge, 100.0f, 4, makeSettings(AngularFrame::Body), out),
                   Status::NonFiniteResult);
@@ -496,4 +512,4 @@ TEST(Vehicle, OverflowingResultIsRefused) {
     }
 }
 
-} // namespace
+}  // namespace

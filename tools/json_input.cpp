@@ -31,7 +31,7 @@ std::string printable(const std::string& line) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 void printDiagnostics(const Diagnostics& diagnostics, std::ostream& err) {
     for (const auto& line : diagnostics.warnings) err << "warning: " << printable(line) << '\n';
@@ -48,7 +48,7 @@ struct NestingTooDeep {
     std::string path;
 };
 
-} // namespace
+}  // namespace
 
 std::string jsonQuoted(const std::string& text) {
     return Json(text).dump(-1, ' ', false, Json::error_handler_t::replace);
@@ -88,24 +88,26 @@ bool parseJsonText(const std::string& text, const std::string& name, Json& docum
     };
     Json::parser_callback_t callback = [&](int depth, Json::parse_event_t event, Json& parsed) -> bool {
         switch (event) {
-        case Json::parse_event_t::object_start:
-        case Json::parse_event_t::array_start:
-            if (depth >= kMaxJsonDepth) throw NestingTooDeep{childPath()};
-            stack.push_back(Frame{event == Json::parse_event_t::object_start, childPath(), {}, 0, {}});
-            break;
-        case Json::parse_event_t::key:
-            if (!stack.empty() && parsed.is_string()) {
-                Frame& frame = stack.back();
-                frame.key = parsed.get<std::string>();
-                if (!frame.keys.insert(frame.key).second) duplicates.push_back(childPath());
-            }
-            break;
-        case Json::parse_event_t::value: nextElement(); break;
-        case Json::parse_event_t::object_end:
-        case Json::parse_event_t::array_end:
-            if (!stack.empty()) stack.pop_back();
-            nextElement();
-            break;
+            case Json::parse_event_t::object_start:
+            case Json::parse_event_t::array_start:
+                if (depth >= kMaxJsonDepth) throw NestingTooDeep{childPath()};
+                stack.push_back(Frame{event == Json::parse_event_t::object_start, childPath(), {}, 0, {}});
+                break;
+            case Json::parse_event_t::key:
+                if (!stack.empty() && parsed.is_string()) {
+                    Frame& frame = stack.back();
+                    frame.key = parsed.get<std::string>();
+                    if (!frame.keys.insert(frame.key).second) duplicates.push_back(childPath());
+                }
+                break;
+            case Json::parse_event_t::value:
+                nextElement();
+                break;
+            case Json::parse_event_t::object_end:
+            case Json::parse_event_t::array_end:
+                if (!stack.empty()) stack.pop_back();
+                nextElement();
+                break;
         }
         return true;
     };
@@ -115,7 +117,8 @@ bool parseJsonText(const std::string& text, const std::string& name, Json& docum
     } catch (const Json::parse_error& error) {
         std::string message = error.what();
         // "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
-        if (const auto bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+        if (const auto bracket = message.find("] ");
+            message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
             message.erase(0, bracket + 2);
         }
         diagnostics.errors.push_back(name + ": invalid JSON: " + message);
@@ -140,7 +143,8 @@ bool parseJsonText(const std::string& text, const std::string& name, Json& docum
                                      (error.path.empty() ? std::string("(root)") : error.path) + ")");
         return false;
     }
-    for (const auto& path : duplicates) diagnostics.error(path, "duplicate key (a later value would silently replace the first)");
+    for (const auto& path : duplicates)
+        diagnostics.error(path, "duplicate key (a later value would silently replace the first)");
     return true;
 }
 
@@ -179,7 +183,7 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
-} // namespace
+}  // namespace
 
 std::string typeName(const Json& value) {
     if (value.is_number()) return "a number";
@@ -414,8 +418,8 @@ bool Fields::quaternion(const char* key, bool required, foresight::Quat& out) {
     if (value == nullptr) return false;
     const std::string path = at(key);
     if (!value->is_object()) {
-        mDiagnostics.error(path, "expected a quaternion {\"w\": ..., \"x\": ..., \"y\": ..., \"z\": ...}, got " +
-                                     typeName(*value));
+        mDiagnostics.error(
+            path, "expected a quaternion {\"w\": ..., \"x\": ..., \"y\": ..., \"z\": ...}, got " + typeName(*value));
         return false;
     }
     Fields members(*value, path, mDiagnostics);
@@ -439,4 +443,4 @@ bool Fields::quaternion(const char* key, bool required, foresight::Quat& out) {
     return true;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

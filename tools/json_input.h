@@ -18,8 +18,8 @@ namespace foresight_cli {
 
 /// Problems (exit status 2) and warnings found while reading or running an input.
 struct Diagnostics {
-    std::vector<std::string> errors;   ///< one line each, "path: message".
-    std::vector<std::string> warnings; ///< one line each, printed with a "warning: " prefix.
+    std::vector<std::string> errors;    ///< one line each, "path: message".
+    std::vector<std::string> warnings;  ///< one line each, printed with a "warning: " prefix.
 
     void error(const std::string& path, const std::string& message);
     void warning(const std::string& path, const std::string& message);
@@ -128,4 +128,4 @@ void forEachElement(Fields& fields, const char* key, Each&& each) {
     }
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

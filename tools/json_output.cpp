@@ -54,9 +54,7 @@ Json jsonQuaternion(const foresight::Quat& quaternion) {
 
 namespace {
 
-std::string scalarText(const Json& value) {
-    return value.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
+std::string scalarText(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 /// Number of values in `value`, counting stops once above `limit`.
 std::size_t countNodes(const Json& value, std::size_t limit) {
@@ -96,7 +94,7 @@ void writeInline(std::string& out, const Json& value) {
     }
 }
 
-constexpr std::size_t kInlineNodes = 24; // a trajectory point with a normal has 19
+constexpr std::size_t kInlineNodes = 24;  // a trajectory point with a normal has 19
 constexpr std::size_t kLineWidth = 200;
 
 void writeValue(std::string& out, const Json& value, std::size_t indent) {
@@ -137,7 +135,7 @@ void writeValue(std::string& out, const Json& value, std::size_t indent) {
     out += value.is_array() ? ']' : '}';
 }
 
-} // namespace
+}  // namespace
 
 std::string formatJson(const Json& value) {
     std::string out;
@@ -173,4 +171,4 @@ int writeJsonResult(const Json& document) {
     return 1;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

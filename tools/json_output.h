@@ -43,4 +43,4 @@ int writeJsonResult(const Json& document);
 /// `value` in the shortest general form, e.g. 5e9, 0.02, 1048576 (for error messages).
 std::string shortNumber(double value);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -37,4 +37,4 @@ bool addLevelMesh(Scenario& scenario, const foresight_level::LevelMesh& mesh, st
     return true;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

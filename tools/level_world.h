@@ -17,4 +17,4 @@ namespace foresight_cli {
 /// mesh is refused.
 bool addLevelMesh(Scenario& scenario, const foresight_level::LevelMesh& mesh, std::string& error);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

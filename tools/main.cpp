@@ -51,9 +51,10 @@ int run(int argc, char** argv) {
 
     std::string jsonFile;
     std::string demoScenarioFile;
-    CLI::App* demo = app.add_subcommand(
-        "demo", "Compare the reference article's predictions with exact ones on built-in scenarios");
-    demo->add_option("--json", jsonFile, "also write the full result (with trajectories) as JSON to FILE (- for stdout)")
+    CLI::App* demo =
+        app.add_subcommand("demo", "Compare the reference article's predictions with exact ones on built-in scenarios");
+    demo->add_option("--json", jsonFile,
+                     "also write the full result (with trajectories) as JSON to FILE (- for stdout)")
         ->type_name("FILE");
     foresight_cli::PictureOptions demoPictures;
     bool demoNoHtml = false;
@@ -61,7 +62,8 @@ int run(int argc, char** argv) {
                      "write the interactive 3D view to FILE (default: foresight-demo.html in the current directory)")
         ->type_name("FILE");
     demo->add_flag("--no-html", demoNoHtml, "do not write the viewer page");
-    demo->add_option("--svg", demoPictures.svgFile, "also write a top and a side view (SVG) to FILE")->type_name("FILE");
+    demo->add_option("--svg", demoPictures.svgFile, "also write a top and a side view (SVG) to FILE")
+        ->type_name("FILE");
     demo->add_option("--scenario", demoScenarioFile,
                      "also write the demo's input scenario to FILE (- for stdout), for `foresight predict`")
         ->type_name("FILE");
@@ -76,35 +78,41 @@ int run(int argc, char** argv) {
     compare->add_option("--frequency", compareOptions.frequency, "Bullet's step rate in Hz (240 to 100000)")
         ->type_name("HZ")
         ->default_val(960);
-    compare->add_flag("--spin", compareOptions.spin, "let the simulated sphere rotate (default: no spin, as a point mass)");
+    compare->add_flag("--spin", compareOptions.spin,
+                      "let the simulated sphere rotate (default: no spin, as a point mass)");
     compare->add_option("--json", compareOptions.jsonFile, "also write every detail as JSON to FILE (- for stdout)")
         ->type_name("FILE");
-    compare->add_option("--engine", compareOptions.engine,
-                        "run the projectiles in a real engine instead (jolt, physx, rapier, ammo, bullet, godot3, "
-                        "godot3-bullet, box2d; its runtime must be installed) beside the engine-matched predictions")
+    compare
+        ->add_option("--engine", compareOptions.engine,
+                     "run the projectiles in a real engine instead (jolt, physx, rapier, ammo, bullet, godot3, "
+                     "godot3-bullet, box2d; its runtime must be installed) beside the engine-matched predictions")
         ->type_name("NAME");
-    compare->add_option("--harness-dir", compareOptions.harnessDir,
-                        "the engine harnesses' folder (default: tests/engines of the source tree, or "
-                        "$FORESIGHT_ENGINE_HARNESSES)")
+    compare
+        ->add_option("--harness-dir", compareOptions.harnessDir,
+                     "the engine harnesses' folder (default: tests/engines of the source tree, or "
+                     "$FORESIGHT_ENGINE_HARNESSES)")
         ->type_name("DIR");
 
     CLI::App* accuracy = app.add_subcommand(
         "accuracy", "Measure how far the article's methods are from the exact ones (Markdown tables)");
 
     foresight_cli::LevelOptions levelOptions;
-    CLI::App* level = app.add_subcommand(
-        "level", "Write the demo level (a walled courtyard) or a closed room as OBJ and glTF files");
+    CLI::App* level =
+        app.add_subcommand("level", "Write the demo level (a walled courtyard) or a closed room as OBJ and glTF files");
     level->add_option("--obj", levelOptions.objFile, "write Wavefront OBJ to FILE")->type_name("FILE");
-    level->add_option("--gltf", levelOptions.gltfFile, "write glTF (JSON, buffer embedded) to FILE.gltf")->type_name("FILE");
+    level->add_option("--gltf", levelOptions.gltfFile, "write glTF (JSON, buffer embedded) to FILE.gltf")
+        ->type_name("FILE");
     level->add_option("--glb", levelOptions.glbFile, "write binary glTF to FILE.glb")->type_name("FILE");
     level->add_flag("--room", levelOptions.room, "a closed room seen from inside instead of the courtyard");
-    level->add_option("--room-size", levelOptions.roomSize, "the room's size in metres (default 10 4 10; implies --room)")
+    level
+        ->add_option("--room-size", levelOptions.roomSize,
+                     "the room's size in metres (default 10 4 10; implies --room)")
         ->expected(3)
         ->type_name("X Y Z");
 
     std::string aimFile;
-    CLI::App* aim = app.add_subcommand(
-        "aim", "Firing solutions: launch velocities that meet moving targets (JSON in and out)");
+    CLI::App* aim =
+        app.add_subcommand("aim", "Firing solutions: launch velocities that meet moving targets (JSON in and out)");
     aim->add_option("FILE", aimFile, "shots file, or - for standard input")->required()->type_name("FILE");
 
     std::string planFile;
@@ -119,9 +127,13 @@ int run(int argc, char** argv) {
         ->required()
         ->type_name("FILE");
     foresight_cli::PictureOptions dangerPictures;
-    danger->add_option("--html", dangerPictures.htmlFile, "also write an interactive 3D view with the danger zones to FILE")
+    danger
+        ->add_option("--html", dangerPictures.htmlFile,
+                     "also write an interactive 3D view with the danger zones to FILE")
         ->type_name("FILE");
-    danger->add_option("--svg", dangerPictures.svgFile, "also write a top and a side view (SVG) with the danger zones to FILE")
+    danger
+        ->add_option("--svg", dangerPictures.svgFile,
+                     "also write a top and a side view (SVG) with the danger zones to FILE")
         ->type_name("FILE");
 
     foresight_cli::NetsimOptions netsimOptions;
@@ -155,7 +167,7 @@ int run(int argc, char** argv) {
     return 2;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
     try {

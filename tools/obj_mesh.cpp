@@ -33,7 +33,7 @@ std::string oneLine(const std::string& text) {
     return joined.empty() ? std::string("malformed OBJ") : joined;
 }
 
-} // namespace
+}  // namespace
 
 bool loadObjMesh(const std::filesystem::path& file, ObjMesh& mesh, std::string& reason) {
     mesh = ObjMesh{};
@@ -129,4 +129,4 @@ bool loadObjMesh(const std::filesystem::path& file, ObjMesh& mesh, std::string& 
     return true;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -46,18 +46,26 @@ Json jsonDVec(const glm::dvec3& v) { return Json::array({jsonDouble(v.x), jsonDo
 
 const char* methodName(const Prediction& p) {
     switch (p.model) {
-    case Model::Linear: return "linear";
-    case Model::Accelerated: return "accelerated";
-    case Model::Orientation: return "orientation";
-    case Model::Projectile:
-        switch (p.projectile.method) {
-        case foresight::ProjectileMethod::Stepped: return "stepped";
-        case foresight::ProjectileMethod::Exact: return "exact";
-        case foresight::ProjectileMethod::Engine: return "engine";
-        }
-        return "exact";
-    case Model::Vehicle: return p.vehicleIterative ? "iterative" : "exact";
-    case Model::DeadReckoning: return foresight::deadReckoningAlgorithmName(p.deadReckoning);
+        case Model::Linear:
+            return "linear";
+        case Model::Accelerated:
+            return "accelerated";
+        case Model::Orientation:
+            return "orientation";
+        case Model::Projectile:
+            switch (p.projectile.method) {
+                case foresight::ProjectileMethod::Stepped:
+                    return "stepped";
+                case foresight::ProjectileMethod::Exact:
+                    return "exact";
+                case foresight::ProjectileMethod::Engine:
+                    return "engine";
+            }
+            return "exact";
+        case Model::Vehicle:
+            return p.vehicleIterative ? "iterative" : "exact";
+        case Model::DeadReckoning:
+            return foresight::deadReckoningAlgorithmName(p.deadReckoning);
     }
     return "";
 }
@@ -66,14 +74,19 @@ const char* methodName(const Prediction& p) {
 /// physics engine steps it (docs/viewer-format.md).
 const char* variantName(const Prediction& p) {
     switch (p.model) {
-    case Model::Linear: return "faithful";
-    case Model::Accelerated: return "exact";
-    case Model::Orientation: return "exact";
-    case Model::Projectile:
-        if (p.projectile.method == foresight::ProjectileMethod::Engine) return "engine";
-        return p.projectile.method == foresight::ProjectileMethod::Stepped ? "faithful" : "exact";
-    case Model::Vehicle: return p.vehicleIterative ? "faithful" : "exact";
-    case Model::DeadReckoning: return "exact";
+        case Model::Linear:
+            return "faithful";
+        case Model::Accelerated:
+            return "exact";
+        case Model::Orientation:
+            return "exact";
+        case Model::Projectile:
+            if (p.projectile.method == foresight::ProjectileMethod::Engine) return "engine";
+            return p.projectile.method == foresight::ProjectileMethod::Stepped ? "faithful" : "exact";
+        case Model::Vehicle:
+            return p.vehicleIterative ? "faithful" : "exact";
+        case Model::DeadReckoning:
+            return "exact";
     }
     return "exact";
 }
@@ -83,7 +96,8 @@ std::vector<double> sampleTimes(double time) {
     const auto intervals = static_cast<std::size_t>(std::max(1.0, std::ceil(time * kPictureSamplesPerSecond)));
     std::vector<double> times;
     times.reserve(intervals + 1);
-    for (std::size_t i = 0; i <= intervals; ++i) times.push_back(time * static_cast<double>(i) / static_cast<double>(intervals));
+    for (std::size_t i = 0; i <= intervals; ++i)
+        times.push_back(time * static_cast<double>(i) / static_cast<double>(intervals));
     return times;
 }
 
@@ -194,7 +208,7 @@ Json worldJson(const Scenario& scenario, Bounds& bounds) {
     return world;
 }
 
-} // namespace
+}  // namespace
 
 Json pictureDocument(const Scenario& scenario, const std::vector<PredictionResult>& results, const std::string& title) {
     Bounds bounds;
@@ -259,7 +273,7 @@ namespace {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 bool viewerAvailable() {
 #ifdef FORESIGHT_CLI_WITH_VIEWER
@@ -326,4 +340,4 @@ bool writePictures(const PictureOptions& options, const Json& document, const st
     return true;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

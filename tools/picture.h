@@ -35,4 +35,4 @@ std::string htmlPage(const Json& document, const std::string& title);
 /// Writes the page to `file`; on failure returns false with `reason`.
 bool writeHtml(const std::string& file, const Json& document, const std::string& title, std::string& reason);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -13,4 +13,4 @@ struct PictureOptions {
     bool wanted() const { return !htmlFile.empty() || !svgFile.empty(); }
 };
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

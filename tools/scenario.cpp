@@ -24,24 +24,36 @@ using foresight::Status;
 
 const char* modelName(Model model) {
     switch (model) {
-    case Model::Linear: return "linear";
-    case Model::Accelerated: return "accelerated";
-    case Model::Orientation: return "orientation";
-    case Model::Projectile: return "projectile";
-    case Model::Vehicle: return "vehicle";
-    case Model::DeadReckoning: return "dead_reckoning";
+        case Model::Linear:
+            return "linear";
+        case Model::Accelerated:
+            return "accelerated";
+        case Model::Orientation:
+            return "orientation";
+        case Model::Projectile:
+            return "projectile";
+        case Model::Vehicle:
+            return "vehicle";
+        case Model::DeadReckoning:
+            return "dead_reckoning";
     }
     return "?";
 }
 
 const char* eventName(foresight::TrajectoryEvent event) {
     switch (event) {
-    case foresight::TrajectoryEvent::Start: return "start";
-    case foresight::TrajectoryEvent::Step: return "step";
-    case foresight::TrajectoryEvent::Bounce: return "bounce";
-    case foresight::TrajectoryEvent::Rest: return "rest";
-    case foresight::TrajectoryEvent::Hit: return "hit";
-    case foresight::TrajectoryEvent::End: return "end";
+        case foresight::TrajectoryEvent::Start:
+            return "start";
+        case foresight::TrajectoryEvent::Step:
+            return "step";
+        case foresight::TrajectoryEvent::Bounce:
+            return "bounce";
+        case foresight::TrajectoryEvent::Rest:
+            return "rest";
+        case foresight::TrajectoryEvent::Hit:
+            return "hit";
+        case foresight::TrajectoryEvent::End:
+            return "end";
     }
     return "?";
 }
@@ -130,8 +142,8 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
             probe.halfExtents = shape.halfExtents;
             const Status status = foresight::validateBox(probe);
             if (status != Status::Ok) {
-                d.error(box.at("half_extents"), std::string(foresight::statusMessage(status)) +
-                                                    ": each half extent must be > 0");
+                d.error(box.at("half_extents"),
+                        std::string(foresight::statusMessage(status)) + ": each half extent must be > 0");
                 return;
             }
         }
@@ -158,7 +170,8 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
             probe.radius = shape.radius;
             const Status status = foresight::validateSphere(probe);
             if (status != Status::Ok) {
-                d.error(sphere.at("radius"), std::string(foresight::statusMessage(status)) + ": a sphere's radius must be > 0");
+                d.error(sphere.at("radius"),
+                        std::string(foresight::statusMessage(status)) + ": a sphere's radius must be > 0");
                 return;
             }
         }
@@ -262,7 +275,8 @@ bool readFrame(Fields& fields, foresight::AngularFrame& frame) {
     } else if (name == "world") {
         frame = foresight::AngularFrame::World;
     } else {
-        fields.diagnostics().error(fields.at("frame"), "unknown frame " + jsonQuoted(name) + " (expected \"body\" or \"world\")");
+        fields.diagnostics().error(fields.at("frame"),
+                                   "unknown frame " + jsonQuoted(name) + " (expected \"body\" or \"world\")");
         return false;
     }
     return true;
@@ -324,9 +338,10 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
             known = true;
         }
     if (!known) {
-        f.diagnostics().error(f.at("profile"), "unknown profile " + jsonQuoted(name) +
-                                                   " (expected \"jolt\", \"physx\", \"rapier\", \"bullet\", \"godot3\", "
-                                                   "\"godot3-bullet\", \"box2d\" or \"custom\")");
+        f.diagnostics().error(f.at("profile"),
+                              "unknown profile " + jsonQuoted(name) +
+                                  " (expected \"jolt\", \"physx\", \"rapier\", \"bullet\", \"godot3\", "
+                                  "\"godot3-bullet\", \"box2d\" or \"custom\")");
     }
     foresight::EngineProfile profile = foresight::engineProfile(engine);
     f.positive("timestep", false, true, profile.timestep);
@@ -355,15 +370,16 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
         {"step_start", foresight::RestitutionBase::StepStart},
         {"after_gravity", foresight::RestitutionBase::AfterGravity}};
     readEnumName(f, "restitution_base", bases, profile.restitutionBase);
-    static const std::pair<const char*, CombineRule> rules[] = {
-        {"average", CombineRule::Average},   {"min", CombineRule::Min},
-        {"max", CombineRule::Max},           {"multiply", CombineRule::Multiply},
-        {"geometric_mean", CombineRule::GeometricMean}, {"sum_clamped", CombineRule::SumClamped}};
+    static const std::pair<const char*, CombineRule> rules[] = {{"average", CombineRule::Average},
+                                                                {"min", CombineRule::Min},
+                                                                {"max", CombineRule::Max},
+                                                                {"multiply", CombineRule::Multiply},
+                                                                {"geometric_mean", CombineRule::GeometricMean},
+                                                                {"sum_clamped", CombineRule::SumClamped}};
     readEnumName(f, "restitution_combine", rules, profile.restitutionCombine);
     readEnumName(f, "friction_combine", rules, profile.frictionCombine);
     static const std::pair<const char*, foresight::ContactMethod> contacts[] = {
-        {"speculative", foresight::ContactMethod::Speculative},
-        {"penetration", foresight::ContactMethod::Penetration}};
+        {"speculative", foresight::ContactMethod::Speculative}, {"penetration", foresight::ContactMethod::Penetration}};
     readEnumName(f, "contact", contacts, profile.contact);
     f.positive("contact_distance", false, false, profile.contactDistance);
     f.positive("penetration_slop", false, false, profile.penetrationSlop);
@@ -402,8 +418,9 @@ void readProjectile(Fields& f, Prediction& p, const foresight::Vec3& gravity) {
             settings.method = foresight::ProjectileMethod::Engine;
             readEngine(f, settings);
         } else {
-            f.diagnostics().error(f.at("method"), "unknown method " + jsonQuoted(method) +
-                                                      " for a projectile (expected \"exact\", \"stepped\" or \"engine\")");
+            f.diagnostics().error(f.at("method"),
+                                  "unknown method " + jsonQuoted(method) +
+                                      " for a projectile (expected \"exact\", \"stepped\" or \"engine\")");
         }
     }
     const bool okStep = f.floatNumber("step", false, settings.step);
@@ -495,7 +512,7 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
     p.path = path;
     f.id(p.id);
     std::string model;
-    if (!f.string("model", true, model)) return; // without a model the allowed keys are unknown
+    if (!f.string("model", true, model)) return;  // without a model the allowed keys are unknown
     if (model == "linear") {
         p.model = Model::Linear;
     } else if (model == "accelerated") {
@@ -509,34 +526,41 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
     } else if (model == "dead_reckoning") {
         p.model = Model::DeadReckoning;
     } else {
-        d.error(f.at("model"), "unknown model " + jsonQuoted(model) +
-                                   " (expected linear, accelerated, orientation, projectile, vehicle or dead_reckoning)");
+        d.error(f.at("model"),
+                "unknown model " + jsonQuoted(model) +
+                    " (expected linear, accelerated, orientation, projectile, vehicle or dead_reckoning)");
         return;
     }
 
     switch (p.model) {
-    case Model::Linear:
-    case Model::Accelerated:
-        f.position("position", true, p.position);
-        f.vector("velocity", true, p.velocity);
-        if (p.model == Model::Accelerated) f.vector("acceleration", true, p.acceleration);
-        f.time("time", true, p.time);
-        break;
-    case Model::Orientation:
-        f.quaternion("orientation", true, p.orientation);
-        f.vector("angular_velocity", true, p.angularVelocity);
-        readFrame(f, p.frame);
-        f.time("time", true, p.time);
-        break;
-    case Model::Projectile: readProjectile(f, p, scenario.gravity); break;
-    case Model::Vehicle: readVehicle(f, p); break;
-    case Model::DeadReckoning: readDeadReckoning(f, p); break;
+        case Model::Linear:
+        case Model::Accelerated:
+            f.position("position", true, p.position);
+            f.vector("velocity", true, p.velocity);
+            if (p.model == Model::Accelerated) f.vector("acceleration", true, p.acceleration);
+            f.time("time", true, p.time);
+            break;
+        case Model::Orientation:
+            f.quaternion("orientation", true, p.orientation);
+            f.vector("angular_velocity", true, p.angularVelocity);
+            readFrame(f, p.frame);
+            f.time("time", true, p.time);
+            break;
+        case Model::Projectile:
+            readProjectile(f, p, scenario.gravity);
+            break;
+        case Model::Vehicle:
+            readVehicle(f, p);
+            break;
+        case Model::DeadReckoning:
+            readDeadReckoning(f, p);
+            break;
     }
     f.finish();
     if (d.errors.size() == errorsBefore) scenario.predictions.push_back(std::move(p));
 }
 
-} // namespace
+}  // namespace
 
 bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
                    Diagnostics& diagnostics) {
@@ -549,7 +573,8 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
 #ifdef FORESIGHT_CLI_WITH_EMBREE
     scenario.meshWorld.reset();
 #endif
-    if (const Json* world = root.get("world", false)) buildWorld(*world, baseDirectory, scenario.world, scenario.meshWorld, diagnostics);
+    if (const Json* world = root.get("world", false))
+        buildWorld(*world, baseDirectory, scenario.world, scenario.meshWorld, diagnostics);
 #ifdef FORESIGHT_CLI_WITH_EMBREE
     if (diagnostics.ok()) {
         if (scenario.meshWorld) {
@@ -634,65 +659,65 @@ Status runProjectile(const Scenario& scenario, const Prediction& p, PredictionRe
 /// Runs one prediction; `detail` may explain a refusal.
 Status runPrediction(const Scenario& scenario, const Prediction& p, PredictionResult& result, std::string& detail) {
     switch (p.model) {
-    case Model::Linear:
-    case Model::Accelerated: {
-        const foresight::PointState start{p.position, p.velocity};
-        foresight::PointState out;
-        const Status status = p.model == Model::Linear
-                                  ? foresight::predictLinear(start, p.time, out)
-                                  : foresight::predictAccelerated(start, p.acceleration, p.time, out);
-        if (status != Status::Ok) return status;
-        result.position = out.position;
-        result.velocity = out.velocity;
-        return Status::Ok;
-    }
-    case Model::Orientation:
-        return foresight::predictOrientation(p.orientation, p.angularVelocity, p.frame, p.time, result.orientation);
-    case Model::Projectile: {
-        const Status status = runProjectile(scenario, p, result);
-        if (status == Status::TooManySteps) {
-            detail = "time / step = " +
-                     shortNumber(static_cast<double>(p.time) / static_cast<double>(p.projectile.step)) +
-                     " steps, the cap is " + std::to_string(p.projectile.maxSteps);
-        } else if (status == Status::TooManyEvents) {
-            detail = "the cap is " + std::to_string(p.projectile.maxEvents);
+        case Model::Linear:
+        case Model::Accelerated: {
+            const foresight::PointState start{p.position, p.velocity};
+            foresight::PointState out;
+            const Status status = p.model == Model::Linear
+                                      ? foresight::predictLinear(start, p.time, out)
+                                      : foresight::predictAccelerated(start, p.acceleration, p.time, out);
+            if (status != Status::Ok) return status;
+            result.position = out.position;
+            result.velocity = out.velocity;
+            return Status::Ok;
         }
-        return status;
-    }
-    case Model::Vehicle: {
-        foresight::VehicleState start;
-        start.position = p.position;
-        start.velocity = p.velocity;
-        start.orientation = p.orientation;
-        start.angularVelocity = p.angularVelocity;
-        foresight::VehicleSettings settings;
-        settings.frame = p.frame;
-        foresight::VehicleState out;
-        const Status status = p.vehicleIterative
-                                  ? foresight::predictVehicleIterative(start, p.time, p.iterations, settings, out)
-                                  : foresight::predictVehicleExact(start, p.time, settings, out);
-        if (status != Status::Ok) return status;
-        result.position = out.position;
-        result.velocity = out.velocity;
-        result.orientation = out.orientation;
-        return Status::Ok;
-    }
-    case Model::DeadReckoning: {
-        foresight::DeadReckoningState start;
-        start.algorithm = p.deadReckoning;
-        start.position = p.position;
-        start.velocity = p.velocity;
-        start.acceleration = p.acceleration;
-        start.orientation = p.orientation;
-        start.angularVelocity = p.angularVelocity;
-        foresight::DeadReckoningResult out;
-        const Status status = foresight::predictDeadReckoning(start, p.time, out);
-        if (status != Status::Ok) return status;
-        result.position = out.position;
-        result.velocity = out.velocity;
-        result.orientation = out.orientation;
-        return Status::Ok;
-    }
+        case Model::Orientation:
+            return foresight::predictOrientation(p.orientation, p.angularVelocity, p.frame, p.time, result.orientation);
+        case Model::Projectile: {
+            const Status status = runProjectile(scenario, p, result);
+            if (status == Status::TooManySteps) {
+                detail = "time / step = " +
+                         shortNumber(static_cast<double>(p.time) / static_cast<double>(p.projectile.step)) +
+                         " steps, the cap is " + std::to_string(p.projectile.maxSteps);
+            } else if (status == Status::TooManyEvents) {
+                detail = "the cap is " + std::to_string(p.projectile.maxEvents);
+            }
+            return status;
+        }
+        case Model::Vehicle: {
+            foresight::VehicleState start;
+            start.position = p.position;
+            start.velocity = p.velocity;
+            start.orientation = p.orientation;
+            start.angularVelocity = p.angularVelocity;
+            foresight::VehicleSettings settings;
+            settings.frame = p.frame;
+            foresight::VehicleState out;
+            const Status status = p.vehicleIterative
+                                      ? foresight::predictVehicleIterative(start, p.time, p.iterations, settings, out)
+                                      : foresight::predictVehicleExact(start, p.time, settings, out);
+            if (status != Status::Ok) return status;
+            result.position = out.position;
+            result.velocity = out.velocity;
+            result.orientation = out.orientation;
+            return Status::Ok;
+        }
+        case Model::DeadReckoning: {
+            foresight::DeadReckoningState start;
+            start.algorithm = p.deadReckoning;
+            start.position = p.position;
+            start.velocity = p.velocity;
+            start.acceleration = p.acceleration;
+            start.orientation = p.orientation;
+            start.angularVelocity = p.angularVelocity;
+            foresight::DeadReckoningResult out;
+            const Status status = foresight::predictDeadReckoning(start, p.time, out);
+            if (status != Status::Ok) return status;
+            result.position = out.position;
+            result.velocity = out.velocity;
+            result.orientation = out.orientation;
+            return Status::Ok;
+        }
     }
     return Status::Ok;
 }
@@ -705,7 +730,7 @@ bool resultIsFinite(const PredictionResult& result) {
     });
 }
 
-} // namespace
+}  // namespace
 
 Status runPrediction(const Scenario& scenario, const Prediction& prediction, PredictionResult& result) {
     std::string detail;
@@ -747,54 +772,56 @@ Json resultJson(const Prediction& p, const PredictionResult& result) {
     if (!p.id.is_null()) out["id"] = p.id;
     out["model"] = modelName(p.model);
     switch (p.model) {
-    case Model::Linear:
-    case Model::Accelerated:
-        out["position"] = jsonPosition(result.position);
-        out["velocity"] = jsonVector(result.velocity);
-        break;
-    case Model::Orientation: out["orientation"] = jsonQuaternion(result.orientation); break;
-    case Model::Projectile: {
-        const auto& r = result.projectile;
-        out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped ? "stepped"
-                        : p.projectile.method == foresight::ProjectileMethod::Engine  ? "engine"
-                                                                                       : "exact";
-        out["position"] = jsonPosition(r.position);
-        out["velocity"] = jsonVector(r.velocity);
-        out["time"] = jsonFloat(r.time);
-        out["bounces"] = r.bounces;
-        out["at_rest"] = r.atRest;
-        out["stopped_at_hit"] = r.stoppedAtHit;
-        if (r.stoppedAtHit) out["hit_normal"] = jsonVector(r.hitNormal);
-        if (p.trajectory) {
-            Json points = Json::array();
-            for (const auto& point : result.trajectory) {
-                Json entry = Json::object();
-                entry["t"] = jsonFloat(point.time);
-                entry["position"] = jsonPosition(point.position);
-                entry["velocity"] = jsonVector(point.velocity);
-                entry["event"] = eventName(point.event);
-                const bool impact = point.event == foresight::TrajectoryEvent::Bounce ||
-                                    point.event == foresight::TrajectoryEvent::Hit;
-                if (impact || point.normal != foresight::Vec3(0.0f)) entry["normal"] = jsonVector(point.normal);
-                points.push_back(std::move(entry));
+        case Model::Linear:
+        case Model::Accelerated:
+            out["position"] = jsonPosition(result.position);
+            out["velocity"] = jsonVector(result.velocity);
+            break;
+        case Model::Orientation:
+            out["orientation"] = jsonQuaternion(result.orientation);
+            break;
+        case Model::Projectile: {
+            const auto& r = result.projectile;
+            out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped  ? "stepped"
+                            : p.projectile.method == foresight::ProjectileMethod::Engine ? "engine"
+                                                                                         : "exact";
+            out["position"] = jsonPosition(r.position);
+            out["velocity"] = jsonVector(r.velocity);
+            out["time"] = jsonFloat(r.time);
+            out["bounces"] = r.bounces;
+            out["at_rest"] = r.atRest;
+            out["stopped_at_hit"] = r.stoppedAtHit;
+            if (r.stoppedAtHit) out["hit_normal"] = jsonVector(r.hitNormal);
+            if (p.trajectory) {
+                Json points = Json::array();
+                for (const auto& point : result.trajectory) {
+                    Json entry = Json::object();
+                    entry["t"] = jsonFloat(point.time);
+                    entry["position"] = jsonPosition(point.position);
+                    entry["velocity"] = jsonVector(point.velocity);
+                    entry["event"] = eventName(point.event);
+                    const bool impact = point.event == foresight::TrajectoryEvent::Bounce ||
+                                        point.event == foresight::TrajectoryEvent::Hit;
+                    if (impact || point.normal != foresight::Vec3(0.0f)) entry["normal"] = jsonVector(point.normal);
+                    points.push_back(std::move(entry));
+                }
+                out["trajectory"] = std::move(points);
             }
-            out["trajectory"] = std::move(points);
+            break;
         }
-        break;
-    }
-    case Model::Vehicle:
-        out["method"] = p.vehicleIterative ? "iterative" : "exact";
-        if (p.vehicleIterative) out["iterations"] = p.iterations;
-        out["position"] = jsonPosition(result.position);
-        out["velocity"] = jsonVector(result.velocity);
-        out["orientation"] = jsonQuaternion(result.orientation);
-        break;
-    case Model::DeadReckoning:
-        out["algorithm"] = foresight::deadReckoningAlgorithmName(p.deadReckoning);
-        out["position"] = jsonPosition(result.position);
-        out["velocity"] = jsonVector(result.velocity);
-        out["orientation"] = jsonQuaternion(result.orientation);
-        break;
+        case Model::Vehicle:
+            out["method"] = p.vehicleIterative ? "iterative" : "exact";
+            if (p.vehicleIterative) out["iterations"] = p.iterations;
+            out["position"] = jsonPosition(result.position);
+            out["velocity"] = jsonVector(result.velocity);
+            out["orientation"] = jsonQuaternion(result.orientation);
+            break;
+        case Model::DeadReckoning:
+            out["algorithm"] = foresight::deadReckoningAlgorithmName(p.deadReckoning);
+            out["position"] = jsonPosition(result.position);
+            out["velocity"] = jsonVector(result.velocity);
+            out["orientation"] = jsonQuaternion(result.orientation);
+            break;
     }
     return out;
 }
@@ -809,4 +836,4 @@ Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult
     return document;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

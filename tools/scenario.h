@@ -28,10 +28,10 @@ const char* modelName(Model model);
 
 /// One validated entry of `predictions`.
 struct Prediction {
-    std::string path; ///< "predictions[i]", for messages.
-    Json id;          ///< echoed back; null when absent.
+    std::string path;  ///< "predictions[i]", for messages.
+    Json id;           ///< echoed back; null when absent.
     Model model = Model::Linear;
-    float time = 0;   ///< [Units: s]
+    float time = 0;  ///< [Units: s]
 
     // linear, accelerated, projectile, vehicle, dead_reckoning
     foresight::RVec3 position{0};
@@ -76,8 +76,8 @@ struct PredictionResult {
     foresight::RVec3 position{0};
     foresight::Vec3 velocity{0};
     foresight::Quat orientation = glm::identity<foresight::Quat>();
-    foresight::ProjectileResult projectile;                ///< projectile only.
-    std::vector<foresight::TrajectoryPoint> trajectory;    ///< projectile with "trajectory": true.
+    foresight::ProjectileResult projectile;              ///< projectile only.
+    std::vector<foresight::TrajectoryPoint> trajectory;  ///< projectile with "trajectory": true.
 };
 
 /// Validates a parsed scenario and loads its meshes (relative to `baseDirectory`).
@@ -101,4 +101,4 @@ Json resultJson(const Prediction& prediction, const PredictionResult& result);
 /// Lower-case name of a trajectory event ("start", "step", "bounce", "rest", "hit", "end").
 const char* eventName(foresight::TrajectoryEvent event);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

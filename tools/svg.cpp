@@ -16,11 +16,11 @@ namespace foresight_cli {
 
 namespace {
 
-constexpr double kWidth = 900;          // px, whole picture
-constexpr double kMargin = 56;          // px, left and bottom of each panel (axis labels)
+constexpr double kWidth = 900;  // px, whole picture
+constexpr double kMargin = 56;  // px, left and bottom of each panel (axis labels)
 constexpr double kPanelWidth = kWidth - kMargin - 24;
-constexpr double kMaxPanelHeight = 520; // px
-constexpr double kLegendLine = 18;      // px per legend entry
+constexpr double kMaxPanelHeight = 520;  // px
+constexpr double kLegendLine = 18;       // px per legend entry
 
 const char* const kFaithfulColours[] = {"#e67e22", "#c0392b", "#b9770e", "#d35400"};
 const char* const kExactColours[] = {"#1f6fd1", "#16a085", "#6c3483", "#117a65"};
@@ -64,11 +64,11 @@ const Json& member(const Json& object, const char* key) {
 /// One view: world axes (u, v) of the panel (u to the right, v up the page).
 struct Panel {
     const char* title;
-    int uAxis, vAxis;             // 0 x, 1 y, 2 z
+    int uAxis, vAxis;  // 0 x, 1 y, 2 z
     const char* uName;
     const char* vName;
-    double u0, u1, v0, v1;        // world range
-    double left, top, scale;      // px
+    double u0, u1, v0, v1;    // world range
+    double left, top, scale;  // px
     double height() const { return (v1 - v0) * scale; }
     double px(double u) const { return left + (u - u0) * scale; }
     double py(double v) const { return top + (v1 - v) * scale; }
@@ -79,9 +79,8 @@ struct Panel {
 
 /// Convex hull of 2D points (Andrew's monotone chain), counter-clockwise.
 std::vector<glm::dvec2> hull(std::vector<glm::dvec2> points) {
-    std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
-        return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
+    std::sort(points.begin(), points.end(),
+              [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     if (points.size() < 3) return points;
     std::vector<glm::dvec2> h(2 * points.size());
     std::size_t k = 0;
@@ -156,7 +155,8 @@ std::string axes(const Panel& panel) {
     ticks(panel.u0, panel.u1, [&](double u) {
         out += kSvg.line(panel.px(u), panel.top, panel.px(u), panel.top + panel.height(), "stroke=\"#e3e3e3\"");
         std::snprintf(label, sizeof label, "%g", u);
-        out += kSvg.text(panel.px(u), panel.top + panel.height() + 16, "font-size=\"11\" text-anchor=\"middle\"", label);
+        out +=
+            kSvg.text(panel.px(u), panel.top + panel.height() + 16, "font-size=\"11\" text-anchor=\"middle\"", label);
     });
     ticks(panel.v0, panel.v1, [&](double v) {
         out += kSvg.line(panel.left, panel.py(v), panel.left + width, panel.py(v), "stroke=\"#e3e3e3\"");
@@ -181,7 +181,8 @@ struct Style {
 std::string world(const Panel& panel, const Json& document) {
     std::string out;
     const Json& w = member(document, "world");
-    const glm::dvec3 middle = 0.5 * (vec3(member(member(document, "bounds"), "min")) + vec3(member(member(document, "bounds"), "max")));
+    const glm::dvec3 middle =
+        0.5 * (vec3(member(member(document, "bounds"), "min")) + vec3(member(member(document, "bounds"), "max")));
     const int other = 3 - panel.uAxis - panel.vAxis;  // the axis the view looks along
     for (const auto& plane : member(w, "planes")) {
         const glm::dvec3 n = vec3(member(plane, "normal"));
@@ -218,7 +219,9 @@ std::string world(const Panel& panel, const Json& document) {
     }
     const std::string solidStyle = "fill=\"#bdc3c7\" fill-opacity=\"0.6\" stroke=\"#7f8c8d\"";
     for (const auto& box : member(w, "boxes"))
-        out += polygon(panel, boxCorners(vec3(member(box, "center")), vec3(member(box, "half_extents")), quat(member(box, "orientation"))),
+        out += polygon(panel,
+                       boxCorners(vec3(member(box, "center")), vec3(member(box, "half_extents")),
+                                  quat(member(box, "orientation"))),
                        solidStyle);
     for (const auto& sphere : member(w, "spheres")) {
         const glm::dvec3 c = vec3(member(sphere, "center"));
@@ -232,42 +235,44 @@ std::string predictions(const Panel& panel, const Json& document, const std::vec
     std::string out;
     // Exact paths first, the article's dashed ones over them (where they coincide, both show).
     for (const bool faithfulPass : {false, true}) {
-    std::size_t index = 0;
-    for (const auto& prediction : member(document, "predictions")) {
-        const Style& style = styles[index++];
-        if (style.faithful != faithfulPass) continue;
-        const Json& path = member(prediction, "path");
-        if (!path.is_array() || path.empty()) continue;
-        const bool vehicle = member(prediction, "model") == "vehicle";
-        if (vehicle) {
-            const glm::dvec3 half = vec3(member(prediction, "half_extents"), glm::dvec3(0.9, 0.7, 2.2));
-            double lastGhost = -1;
+        std::size_t index = 0;
+        for (const auto& prediction : member(document, "predictions")) {
+            const Style& style = styles[index++];
+            if (style.faithful != faithfulPass) continue;
+            const Json& path = member(prediction, "path");
+            if (!path.is_array() || path.empty()) continue;
+            const bool vehicle = member(prediction, "model") == "vehicle";
+            if (vehicle) {
+                const glm::dvec3 half = vec3(member(prediction, "half_extents"), glm::dvec3(0.9, 0.7, 2.2));
+                double lastGhost = -1;
+                for (const auto& point : path) {
+                    const double t = member(point, "t").is_number() ? member(point, "t").get<double>() : 0.0;
+                    const bool last = &point == &path.back();
+                    if (!last && t - lastGhost < 0.5) continue;
+                    lastGhost = t;
+                    out += polygon(
+                        panel, boxCorners(vec3(member(point, "position")), half, quat(member(point, "orientation"))),
+                        "fill=\"" + style.colour + "\" fill-opacity=\"" + (last ? "0.45" : "0.12") + "\" stroke=\"" +
+                            style.colour + "\" stroke-width=\"1\"");
+                }
+            }
+            std::string points;
+            for (const auto& point : path) points += panel.point(vec3(member(point, "position"))) + " ";
+            out += kSvg.polyline("fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"" +
+                                     (style.engine ? "3" : "2") + "\"" +
+                                     (style.faithful ? " stroke-dasharray=\"7 4\"" : ""),
+                                 points);
             for (const auto& point : path) {
-                const double t = member(point, "t").is_number() ? member(point, "t").get<double>() : 0.0;
-                const bool last = &point == &path.back();
-                if (!last && t - lastGhost < 0.5) continue;
-                lastGhost = t;
-                out += polygon(panel, boxCorners(vec3(member(point, "position")), half, quat(member(point, "orientation"))),
-                               "fill=\"" + style.colour + "\" fill-opacity=\"" + (last ? "0.45" : "0.12") +
-                                   "\" stroke=\"" + style.colour + "\" stroke-width=\"1\"");
+                const Json& event = member(point, "event");
+                const glm::dvec3 p = vec3(member(point, "position"));
+                if (event == "bounce" || event == "hit") {
+                    out += kSvg.circle(panel.px(p), panel.py(p), "3.5",
+                                       "fill=\"white\" stroke=\"" + style.colour + "\" stroke-width=\"1.5\"");
+                } else if (event == "rest") {
+                    out += kSvg.rect(panel.px(p) - 4, panel.py(p) - 4, "8", "8", "fill=\"" + style.colour + "\"");
+                }
             }
         }
-        std::string points;
-        for (const auto& point : path) points += panel.point(vec3(member(point, "position"))) + " ";
-        out += kSvg.polyline("fill=\"none\" stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") +
-                                 "\"" + (style.faithful ? " stroke-dasharray=\"7 4\"" : ""),
-                             points);
-        for (const auto& point : path) {
-            const Json& event = member(point, "event");
-            const glm::dvec3 p = vec3(member(point, "position"));
-            if (event == "bounce" || event == "hit") {
-                out += kSvg.circle(panel.px(p), panel.py(p), "3.5",
-                                   "fill=\"white\" stroke=\"" + style.colour + "\" stroke-width=\"1.5\"");
-            } else if (event == "rest") {
-                out += kSvg.rect(panel.px(p) - 4, panel.py(p) - 4, "8", "8", "fill=\"" + style.colour + "\"");
-            }
-        }
-    }
     }
     return out;
 }
@@ -300,7 +305,8 @@ std::string picture(const Json& document) {
         lo[axis] = std::clamp(lo[axis], -1e12, 1e12);
         hi[axis] = std::clamp(hi[axis], lo[axis], 1e12);
     }
-    const glm::dvec3 pad = glm::max(0.05 * (hi - lo), glm::max(glm::dvec3(0.5), 1e-9 * glm::max(glm::abs(lo), glm::abs(hi))));
+    const glm::dvec3 pad =
+        glm::max(0.05 * (hi - lo), glm::max(glm::dvec3(0.5), 1e-9 * glm::max(glm::abs(lo), glm::abs(hi))));
     lo -= pad;
     hi += pad;
 
@@ -324,7 +330,8 @@ std::string picture(const Json& document) {
     const double legendTop = side.top + side.height() + 60;
     const double height = legendTop + kLegendLine * static_cast<double>(styles.size() + 2) + 16;
 
-    std::string title = member(document, "title").is_string() ? member(document, "title").get<std::string>() : "foresight";
+    std::string title =
+        member(document, "title").is_string() ? member(document, "title").get<std::string>() : "foresight";
     std::string out = kSvg.begin(kWidth, height, &title);
     out += kSvg.text(kMargin, "28", "font-size=\"18\"", escapeXml(title));
     for (const Panel* panel : {&top, &side}) {
@@ -332,8 +339,8 @@ std::string picture(const Json& document) {
         // Everything inside the panel is clipped to it.
         const std::string id = panel == &top ? "top" : "side";
         out += "<clipPath id=\"" + id + "\">" +
-               SvgWriter::inlined(kSvg.rect(panel->left, panel->top, (panel->u1 - panel->u0) * panel->scale,
-                                            panel->height(), "")) +
+               SvgWriter::inlined(
+                   kSvg.rect(panel->left, panel->top, (panel->u1 - panel->u0) * panel->scale, panel->height(), "")) +
                "</clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
         out += world(*panel, document);
         out += dangerZones(*panel, document);
@@ -347,19 +354,22 @@ std::string picture(const Json& document) {
         const Style& style = styles[index++];
         const std::string id = member(prediction, "id").is_string() ? member(prediction, "id").get<std::string>()
                                                                     : member(prediction, "id").dump();
-        std::string method = member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
+        std::string method =
+            member(prediction, "method").is_string() ? member(prediction, "method").get<std::string>() : "";
         if (style.engine && member(prediction, "engine").is_string())
             method = "as " + member(prediction, "engine").get<std::string>() + " steps it";
         out += kSvg.line(kMargin, y, kMargin + 36, y,
                          "stroke=\"" + style.colour + "\" stroke-width=\"" + (style.engine ? "3" : "2") + "\"" +
                              (style.faithful ? " stroke-dasharray=\"7 4\"" : ""));
-        out += kSvg.text(kMargin + 44, y + 4, "font-size=\"12\"",
-                         escapeXml(id) + " (" + escapeXml(method) + (style.faithful ? ": the article's method" : "") + ")");
+        out += kSvg.text(
+            kMargin + 44, y + 4, "font-size=\"12\"",
+            escapeXml(id) + " (" + escapeXml(method) + (style.faithful ? ": the article's method" : "") + ")");
         y += kLegendLine;
     }
     // The markers' key: each marker and its name on one line.
-    out += SvgWriter::inlined(kSvg.circle(kMargin + 18, y, "3.5", "fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"")) +
-           kSvg.text(kMargin + 44, y + 4, "font-size=\"12\"", "bounce");
+    out +=
+        SvgWriter::inlined(kSvg.circle(kMargin + 18, y, "3.5", "fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"")) +
+        kSvg.text(kMargin + 44, y + 4, "font-size=\"12\"", "bounce");
     out += SvgWriter::inlined(kSvg.rect(kMargin + 160, y - 4, "8", "8", "fill=\"#333\"")) +
            kSvg.text(kMargin + 176, y + 4, "font-size=\"12\"", "at rest");
     if (member(document, "danger_zones").is_array() && !member(document, "danger_zones").empty()) {
@@ -372,7 +382,7 @@ std::string picture(const Json& document) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string svgPicture(const Json& document) {
     try {
@@ -384,4 +394,4 @@ std::string svgPicture(const Json& document) {
     }
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

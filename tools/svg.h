@@ -17,4 +17,4 @@ namespace foresight_cli {
 /// document; fields it does not know are ignored.
 std::string svgPicture(const Json& document);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -76,7 +76,7 @@ bool readNamed(const std::string& file, bool allowPipes, std::size_t maxBytes, s
     return readDescriptor(d.fd, maxBytes, text, reason);
 }
 
-} // namespace
+}  // namespace
 
 bool readTextFile(const std::string& file, std::string& text, std::string& reason, std::size_t maxBytes) {
     if (file == "-") return readDescriptor(STDIN_FILENO, maxBytes, text, reason);
@@ -109,4 +109,4 @@ bool writeTextFile(const std::string& file, const std::string& text, std::string
     return ok;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

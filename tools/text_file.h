@@ -26,4 +26,4 @@ bool readRegularFile(const std::filesystem::path& file, std::size_t maxBytes, st
 /// `reason`.
 bool writeTextFile(const std::string& file, const std::string& text, std::string& reason);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -12,4 +12,4 @@ extern const char kViewerBundle[];
 /// The number of bytes of kViewerBundle, without the terminating NUL.
 extern const std::size_t kViewerBundleSize;
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -112,7 +112,7 @@ int main() {
     // The one line: the game's world as a foresight collision world.
     const foresight::BulletWorld world(game.world);
 
-    bool ok = throwGrenade(world, 0.0f);     // a point (Bullet ray tests)
-    ok = throwGrenade(world, 0.05f) && ok;   // a 5 cm ball (Bullet sphere sweeps)
+    bool ok = throwGrenade(world, 0.0f);    // a point (Bullet ray tests)
+    ok = throwGrenade(world, 0.05f) && ok;  // a 5 cm ball (Bullet sphere sweeps)
     return ok ? 0 : 1;
 }

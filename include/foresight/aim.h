@@ -63,8 +63,8 @@ enum class AimConstraint : std::uint8_t {
 
 /// The shooter and the shot's constraint.
 struct AimShot {
-    RVec3 from{0};                                        ///< launch point [Units: m].
-    AimConstraint constraint = AimConstraint::Speed;      ///< what fixes the velocity.
+    RVec3 from{0};                                    ///< launch point [Units: m].
+    AimConstraint constraint = AimConstraint::Speed;  ///< what fixes the velocity.
     /// Speed or HorizontalSpeed: the launch speed (of the horizontal part for HorizontalSpeed)
     /// [Units: m/s] [Limit: finite]. 0 drops the projectile; a negative speed reaches nothing
     /// (no solutions, not an error).
@@ -72,23 +72,23 @@ struct AimShot {
     /// ApexAboveStart / ApexAboveTarget: the apex's height above the start or the hit point,
     /// along -gravity [Units: m] [Limit: finite]. Below 0 nothing is reachable (no solutions).
     float apexHeight = 0.0f;
-    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f};          ///< [Units: m/s^2], world axes.
+    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f};  ///< [Units: m/s^2], world axes.
     /// Latest flight time reported [Units: s] [Limit: >= 0, finite]; 0 gives no solutions.
     float maxTime = 60.0f;
 };
 
 /// A target moving with constant acceleration: `position + velocity t + acceleration t^2 / 2`.
 struct AimTarget {
-    RVec3 position{0};    ///< at t = 0 [Units: m].
-    Vec3 velocity{0};     ///< [Units: m/s].
-    Vec3 acceleration{0}; ///< [Units: m/s^2].
+    RVec3 position{0};     ///< at t = 0 [Units: m].
+    Vec3 velocity{0};      ///< [Units: m/s].
+    Vec3 acceleration{0};  ///< [Units: m/s^2].
 };
 
 /// One way to hit the target.
 struct FiringSolution {
-    Vec3 velocity{0};     ///< launch velocity [Units: m/s]; for Speed, of length `speed`.
-    float time = 0.0f;    ///< flight time to the hit [Units: s] [Limit: (0, maxTime]].
-    RVec3 hit{0};         ///< where projectile and target meet at `time` [Units: m].
+    Vec3 velocity{0};   ///< launch velocity [Units: m/s]; for Speed, of length `speed`.
+    float time = 0.0f;  ///< flight time to the hit [Units: s] [Limit: (0, maxTime]].
+    RVec3 hit{0};       ///< where projectile and target meet at `time` [Units: m].
     /// Launch angle above the plane across gravity [Units: rad] [Limit: -pi/2 .. pi/2]; with
     /// zero gravity above the XZ plane; 0 for a zero velocity.
     float elevation = 0.0f;

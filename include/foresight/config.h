@@ -35,12 +35,12 @@
 #endif
 
 /// Opens the foresight namespace (with the precision-tagged inline namespace).
-#define FORESIGHT_NAMESPACE_BEGIN                                                                  \
-    namespace foresight {                                                                          \
+#define FORESIGHT_NAMESPACE_BEGIN \
+    namespace foresight {         \
     inline namespace FORESIGHT_ABI_NAMESPACE {
 /// Closes what FORESIGHT_NAMESPACE_BEGIN opened.
-#define FORESIGHT_NAMESPACE_END                                                                    \
-    }                                                                                              \
+#define FORESIGHT_NAMESPACE_END \
+    }                           \
     }
 
 FORESIGHT_NAMESPACE_BEGIN

@@ -77,8 +77,8 @@ struct ProjectileDanger {
     /// The predicted trajectory (e.g. points[0 .. result.trajectorySize) of predictProjectile),
     /// in time order [Limit: at least one point; times finite and non-decreasing]. Not owned.
     std::span<const TrajectoryPoint> trajectory;
-    float fuseTime = 0;      ///< when it explodes [Units: s] [Limit: >= 0].
-    float blastRadius = 0;   ///< radius of the blast around its centre [Units: m] [Limit: >= 0].
+    float fuseTime = 0;     ///< when it explodes [Units: s] [Limit: >= 0].
+    float blastRadius = 0;  ///< radius of the blast around its centre [Units: m] [Limit: >= 0].
     /// Before the fuse, a point this close to the projectile is unsafe (the projectile itself is
     /// dangerous; include the projectile's own radius). 0: nothing is dangerous before the fuse.
     /// [Units: m] [Limit: >= 0]
@@ -94,8 +94,8 @@ struct DangerZone {
 
 /// When something starts (danger at a point, a path coming close).
 struct DangerStart {
-    bool ever = false; ///< false: never (then `time` is 0).
-    float time = 0;    ///< the earliest time [Units: s]; valid when `ever`.
+    bool ever = false;  ///< false: never (then `time` is 0).
+    float time = 0;     ///< the earliest time [Units: s]; valid when `ever`.
 };
 
 /// The closest approach of a path to a point, or of a vehicle to a character.
@@ -148,23 +148,23 @@ Status findDangerStart(const ProjectileDanger& danger, RVec3 point, DangerStart&
 /// @param fromTime, untilTime  the time window [Units: s] [Limit: finite, fromTime <= untilTime
 ///                   or the window is empty: never].
 /// @return Ok, validateTrajectory's refusals, NonFiniteInput or InvalidRadius (distance < 0).
-Status findPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float distance,
-                        float fromTime, float untilTime, DangerStart& out);
+Status findPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float distance, float fromTime,
+                        float untilTime, DangerStart& out);
 
 /// The closest approach of the projectile to `point` over [fromTime, untilTime] (exact per
 /// segment). An empty window (fromTime > untilTime) is treated as the single time fromTime.
 /// @return Ok, validateTrajectory's refusals, NonFiniteInput or NonFiniteResult.
-Status findClosestPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point,
-                               float fromTime, float untilTime, ClosestApproach& out);
+Status findClosestPathApproach(std::span<const TrajectoryPoint> trajectory, RVec3 point, float fromTime,
+                               float untilTime, ClosestApproach& out);
 
 // ---------------------------------------------------------------------------------------------
 // Vehicles against characters
 
 /// A vehicle as an oriented box moving on the exact path of predictVehicleExact.
 struct VehicleBody {
-    VehicleState state;        ///< at t = 0 (as predictVehicleExact takes it).
-    VehicleSettings settings;  ///< frame of the angular velocity, forward axis.
-    Vec3 halfExtents{0.9f, 0.7f, 2.2f}; ///< the box [Units: m] [Limit: each > 0], local axes.
+    VehicleState state;                  ///< at t = 0 (as predictVehicleExact takes it).
+    VehicleSettings settings;            ///< frame of the angular velocity, forward axis.
+    Vec3 halfExtents{0.9f, 0.7f, 2.2f};  ///< the box [Units: m] [Limit: each > 0], local axes.
     /// The box's centre in the vehicle's local axes, from VehicleState::position [Units: m].
     Vec3 boxCenter{0};
 };
@@ -191,12 +191,12 @@ struct ApproachSettings {
 
 /// The first contact of a vehicle and a character.
 struct VehicleContact {
-    bool contact = false;  ///< whether they come within `tolerance` before the horizon.
-    float time = 0;        ///< the time of first contact [Units: s]; valid when `contact`:
-                           ///< never later than the true first overlap, and the separation
-                           ///< there is <= tolerance.
-    float separation = 0;  ///< the separation at `time` (at the horizon if no contact) [Units: m].
-    std::uint32_t evaluations = 0; ///< separations computed.
+    bool contact = false;           ///< whether they come within `tolerance` before the horizon.
+    float time = 0;                 ///< the time of first contact [Units: s]; valid when `contact`:
+                                    ///< never later than the true first overlap, and the separation
+                                    ///< there is <= tolerance.
+    float separation = 0;           ///< the separation at `time` (at the horizon if no contact) [Units: m].
+    std::uint32_t evaluations = 0;  ///< separations computed.
 };
 
 /// Checks a vehicle body and a character: Ok, NonFiniteInput, ZeroQuaternion, ZeroVector (the
@@ -207,8 +207,8 @@ Status validateVehicleCharacter(const VehicleBody& vehicle, const CharacterBody&
 /// radius; <= 0 when they overlap).
 /// @param time  [Units: s] [Limit: >= 0, finite].
 /// @return Ok, validateVehicleCharacter's refusals, NegativeTime or NonFiniteResult.
-Status computeVehicleSeparation(const VehicleBody& vehicle, const CharacterBody& character,
-                                float time, float& separation);
+Status computeVehicleSeparation(const VehicleBody& vehicle, const CharacterBody& character, float time,
+                                float& separation);
 
 /// The first time in [0, horizon] at which the vehicle and the character touch (conservative
 /// advancement with the proven bound of the header).
@@ -217,8 +217,8 @@ Status computeVehicleSeparation(const VehicleBody& vehicle, const CharacterBody&
 ///         or not finite, or maxEvaluations 0), TooManySteps (maxEvaluations reached: a horizon
 ///         too long for the tolerance, the work growing with horizon / tolerance, or a long
 ///         grazing pass) or NonFiniteResult. `out` is untouched unless Ok.
-Status findVehicleContact(const VehicleBody& vehicle, const CharacterBody& character,
-                          float horizon, const ApproachSettings& settings, VehicleContact& out);
+Status findVehicleContact(const VehicleBody& vehicle, const CharacterBody& character, float horizon,
+                          const ApproachSettings& settings, VehicleContact& out);
 
 /// The closest approach in [0, horizon] (Lipschitz branch and bound, then conservative
 /// advancement; see the header): `distance` is the separation at `time`, and the true minimum
@@ -227,8 +227,7 @@ Status findVehicleContact(const VehicleBody& vehicle, const CharacterBody& chara
 /// the first time it comes within `tolerance` of mu. Among equal minima (a vehicle turning in
 /// circles) the first is reported, whatever the horizon.
 /// @return as findVehicleContact (both passes share maxEvaluations).
-Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBody& character,
-                                  float horizon, const ApproachSettings& settings,
-                                  ClosestApproach& out);
+Status findClosestVehicleApproach(const VehicleBody& vehicle, const CharacterBody& character, float horizon,
+                                  const ApproachSettings& settings, ClosestApproach& out);
 
 FORESIGHT_NAMESPACE_END

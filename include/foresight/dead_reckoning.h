@@ -35,15 +35,15 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// The DIS dead-reckoning algorithms; the values are the DIS enumeration (1 to 9).
 enum class DeadReckoningAlgorithm : std::uint8_t {
-    Static = 1, ///< DRM 1, STATIC: the entity does not move or turn.
-    Fpw = 2,    ///< DRM 2, FPW: fixed orientation, constant world velocity.
-    Rpw = 3,    ///< DRM 3, RPW: rotating, constant world velocity.
-    Rvw = 4,    ///< DRM 4, RVW: rotating, constant world acceleration.
-    Fvw = 5,    ///< DRM 5, FVW: fixed orientation, constant world acceleration.
-    Fpb = 6,    ///< DRM 6, FPB: fixed orientation, constant body velocity.
-    Rpb = 7,    ///< DRM 7, RPB: rotating, constant body velocity (turns with the body).
-    Rvb = 8,    ///< DRM 8, RVB: rotating, constant body acceleration (turns with the body).
-    Fvb = 9,    ///< DRM 9, FVB: fixed orientation, constant body acceleration.
+    Static = 1,  ///< DRM 1, STATIC: the entity does not move or turn.
+    Fpw = 2,     ///< DRM 2, FPW: fixed orientation, constant world velocity.
+    Rpw = 3,     ///< DRM 3, RPW: rotating, constant world velocity.
+    Rvw = 4,     ///< DRM 4, RVW: rotating, constant world acceleration.
+    Fvw = 5,     ///< DRM 5, FVW: fixed orientation, constant world acceleration.
+    Fpb = 6,     ///< DRM 6, FPB: fixed orientation, constant body velocity.
+    Rpb = 7,     ///< DRM 7, RPB: rotating, constant body velocity (turns with the body).
+    Rvb = 8,     ///< DRM 8, RVB: rotating, constant body acceleration (turns with the body).
+    Fvb = 9,     ///< DRM 9, FVB: fixed orientation, constant body acceleration.
 };
 
 /// The number of DIS dead-reckoning algorithms (Static to Fvb).
@@ -51,20 +51,20 @@ inline constexpr int kDeadReckoningAlgorithmCount = 9;
 
 /// The state an entity last reported (a DIS entity state update), the input of a prediction.
 struct DeadReckoningState {
-    DeadReckoningAlgorithm algorithm = DeadReckoningAlgorithm::Fpw; ///< the model to extrapolate with.
-    RVec3 position{0};    ///< [Units: m], world axes (geocentric in DIS).
-    Vec3 velocity{0};     ///< [Units: m/s]; world axes (`*W`) or body axes at time 0 (`*B`).
-    Vec3 acceleration{0}; ///< [Units: m/s^2]; axes as `velocity`; used by RVW, FVW, RVB, FVB only.
-    Quat orientation = glm::identity<Quat>(); ///< body-to-world; normalised here, must be non-zero.
-    Vec3 angularVelocity{0}; ///< [Units: rad/s], body axes; used by RPW, RVW, RPB, RVB only.
+    DeadReckoningAlgorithm algorithm = DeadReckoningAlgorithm::Fpw;  ///< the model to extrapolate with.
+    RVec3 position{0};                                               ///< [Units: m], world axes (geocentric in DIS).
+    Vec3 velocity{0};                          ///< [Units: m/s]; world axes (`*W`) or body axes at time 0 (`*B`).
+    Vec3 acceleration{0};                      ///< [Units: m/s^2]; axes as `velocity`; used by RVW, FVW, RVB, FVB only.
+    Quat orientation = glm::identity<Quat>();  ///< body-to-world; normalised here, must be non-zero.
+    Vec3 angularVelocity{0};                   ///< [Units: rad/s], body axes; used by RPW, RVW, RPB, RVB only.
 };
 
 /// The extrapolated state.
 struct DeadReckoningResult {
-    RVec3 position{0};                        ///< [Units: m], world axes.
-    Vec3 velocity{0};                         ///< [Units: m/s], in the input velocity's axes
-                                              ///< (world for `*W`, body for `*B`).
-    Quat orientation = glm::identity<Quat>(); ///< body-to-world, unit.
+    RVec3 position{0};                         ///< [Units: m], world axes.
+    Vec3 velocity{0};                          ///< [Units: m/s], in the input velocity's axes
+                                               ///< (world for `*W`, body for `*B`).
+    Quat orientation = glm::identity<Quat>();  ///< body-to-world, unit.
 };
 
 /// The DIS name of `algorithm`: "STATIC", "FPW", "RPW", "RVW", "FVW", "FPB", "RPB", "RVB" or

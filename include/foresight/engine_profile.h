@@ -24,44 +24,44 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// The engines with a named profile.
 enum class PhysicsEngine : std::uint8_t {
-    Custom,       ///< every field set by the caller (defaults: plain semi-implicit Euler).
-    Jolt,         ///< Jolt Physics 5 (Godot 4.4+ "Jolt Physics", Horizon): discrete motion quality.
-    PhysX,        ///< NVIDIA PhysX 4/5 rigid bodies with Unity's defaults (Rigidbody, drag 0).
-    Rapier,       ///< Rapier (Bevy): 4 solver sub-steps.
-    Bullet,       ///< Bullet's btDiscreteDynamicsWorld with its defaults.
-    Godot3,       ///< Godot 3 with GodotPhysics.
-    Godot3Bullet, ///< Godot 3 with its default 3-D engine (Bullet), project damping added.
-    Box2D,        ///< Box2D v2.4 (2-D: motion in the x-y plane, z kept at its start value).
+    Custom,        ///< every field set by the caller (defaults: plain semi-implicit Euler).
+    Jolt,          ///< Jolt Physics 5 (Godot 4.4+ "Jolt Physics", Horizon): discrete motion quality.
+    PhysX,         ///< NVIDIA PhysX 4/5 rigid bodies with Unity's defaults (Rigidbody, drag 0).
+    Rapier,        ///< Rapier (Bevy): 4 solver sub-steps.
+    Bullet,        ///< Bullet's btDiscreteDynamicsWorld with its defaults.
+    Godot3,        ///< Godot 3 with GodotPhysics.
+    Godot3Bullet,  ///< Godot 3 with its default 3-D engine (Bullet), project damping added.
+    Box2D,         ///< Box2D v2.4 (2-D: motion in the x-y plane, z kept at its start value).
 };
 
 /// Where the damping factor goes in a step.
 enum class DampingOrder : std::uint8_t {
-    GravityThenDamping, ///< `v = (v + g dt) d` (Jolt, PhysX, Rapier after its sub-steps).
-    DampingThenGravity, ///< `v = v d + g dt` (Bullet, Godot 3, Box2D).
+    GravityThenDamping,  ///< `v = (v + g dt) d` (Jolt, PhysX, Rapier after its sub-steps).
+    DampingThenGravity,  ///< `v = v d + g dt` (Bullet, Godot 3, Box2D).
 };
 
 /// The damping factor `d` applied once per step to the linear velocity, for a coefficient `c`.
 enum class DampingLaw : std::uint8_t {
-    None,          ///< `d = 1` (the coefficient is ignored).
-    LinearClamped, ///< `d = max(0, 1 - c dt)` (Jolt, PhysX, Godot 3).
-    Rational,      ///< `d = 1 / (1 + c dt)` (Rapier, Box2D).
-    Power,         ///< `d = (1 - min(c, 1))^dt` (Bullet).
+    None,           ///< `d = 1` (the coefficient is ignored).
+    LinearClamped,  ///< `d = max(0, 1 - c dt)` (Jolt, PhysX, Godot 3).
+    Rational,       ///< `d = 1 / (1 + c dt)` (Rapier, Box2D).
+    Power,          ///< `d = (1 - min(c, 1))^dt` (Bullet).
 };
 
 /// How an engine combines two materials' coefficients into the contact's value.
 enum class CombineRule : std::uint8_t {
-    Average,       ///< `(a + b) / 2` (PhysX and Rapier by default).
-    Min,           ///< `min(a, b)` (Godot 3 friction).
-    Max,           ///< `max(a, b)` (Jolt restitution, Box2D restitution).
-    Multiply,      ///< `a b` (Bullet).
-    GeometricMean, ///< `sqrt(a b)` (Jolt friction, Box2D friction).
-    SumClamped,    ///< `clamp(a + b, 0, 1)` (Godot 3 restitution).
+    Average,        ///< `(a + b) / 2` (PhysX and Rapier by default).
+    Min,            ///< `min(a, b)` (Godot 3 friction).
+    Max,            ///< `max(a, b)` (Jolt restitution, Box2D restitution).
+    Multiply,       ///< `a b` (Bullet).
+    GeometricMean,  ///< `sqrt(a b)` (Jolt friction, Box2D friction).
+    SumClamped,     ///< `clamp(a + b, 0, 1)` (Godot 3 restitution).
 };
 
 /// Which velocity a bounce reflects (the normal speed that restitution multiplies).
 enum class RestitutionBase : std::uint8_t {
-    StepStart,    ///< the velocity at the start of the contact step (Jolt, Rapier, Bullet).
-    AfterGravity, ///< the velocity after that step's gravity and damping (PhysX, Godot 3, Box2D).
+    StepStart,     ///< the velocity at the start of the contact step (Jolt, Rapier, Bullet).
+    AfterGravity,  ///< the velocity after that step's gravity and damping (PhysX, Godot 3, Box2D).
 };
 
 /// What a body's first step does (the step in which it enters the world).
@@ -85,26 +85,26 @@ enum class ContactMethod : std::uint8_t {
 /// engineProfile(); every field can be overridden (a project's own damping, bounce threshold).
 /// Coefficients are as the engine's API takes them.
 struct EngineProfile {
-    PhysicsEngine engine = PhysicsEngine::Custom; ///< which engine the values describe.
-    float timestep = 1.0f / 60.0f;   ///< the engine's fixed step [Units: s] [Limit: 1e-5 .. 1].
+    PhysicsEngine engine = PhysicsEngine::Custom;  ///< which engine the values describe.
+    float timestep = 1.0f / 60.0f;                 ///< the engine's fixed step [Units: s] [Limit: 1e-5 .. 1].
     /// Equal sub-steps per step, each `v += g h; p += v h` with `h = timestep / substeps`; the
     /// damping factor is then applied once with the whole step (Rapier: 4) [Limit: 1 .. 64].
     std::uint32_t substeps = 1;
-    DampingOrder order = DampingOrder::GravityThenDamping; ///< where damping goes in a step.
-    DampingLaw damping = DampingLaw::LinearClamped;        ///< the linear damping law.
+    DampingOrder order = DampingOrder::GravityThenDamping;  ///< where damping goes in a step.
+    DampingLaw damping = DampingLaw::LinearClamped;         ///< the linear damping law.
     float linearDamping = 0.0f;  ///< the body's linear damping coefficient [Units: 1/s] [Limit: >= 0].
     /// Added to linearDamping before the law is applied: a project-wide default the engine adds
     /// to every body's own value (Godot 3 with Bullet: 0.1) [Units: 1/s] [Limit: >= 0].
     float addedLinearDamping = 0.0f;
     /// The body's angular damping coefficient, same law as the linear one [Units: 1/s] [Limit: >= 0].
     float angularDamping = 0.0f;
-    FirstStepRule firstStep = FirstStepRule::Normal; ///< the body's first step.
+    FirstStepRule firstStep = FirstStepRule::Normal;  ///< the body's first step.
     /// Impacts whose normal approach speed is not above this do not bounce [Units: m/s] [Limit: >= 0].
     float restitutionThreshold = 0.0f;
-    RestitutionBase restitutionBase = RestitutionBase::StepStart; ///< what a bounce reflects.
-    CombineRule restitutionCombine = CombineRule::Max; ///< rule for a shape's own restitution.
-    CombineRule frictionCombine = CombineRule::GeometricMean; ///< rule for a shape's own friction.
-    ContactMethod contact = ContactMethod::Speculative; ///< when a contact starts to act.
+    RestitutionBase restitutionBase = RestitutionBase::StepStart;  ///< what a bounce reflects.
+    CombineRule restitutionCombine = CombineRule::Max;             ///< rule for a shape's own restitution.
+    CombineRule frictionCombine = CombineRule::GeometricMean;      ///< rule for a shape's own friction.
+    ContactMethod contact = ContactMethod::Speculative;            ///< when a contact starts to act.
     /// Speculative contacts: the largest gap that makes a contact [Units: m] [Limit: >= 0].
     float contactDistance = 0.02f;
     /// Penetration that is left alone (not pushed out) [Units: m] [Limit: >= 0].
@@ -169,8 +169,8 @@ float combineMaterial(CombineRule rule, float a, float b);
 
 /// A free-flying body's state after a whole number of engine steps.
 struct EngineFlightState {
-    RVec3 position{0}; ///< [Units: m]
-    Vec3 velocity{0};  ///< [Units: m/s]
+    RVec3 position{0};  ///< [Units: m]
+    Vec3 velocity{0};   ///< [Units: m/s]
 };
 
 /// The state after `steps` engine steps of free flight (no contact) from `position`, `velocity`

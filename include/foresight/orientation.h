@@ -31,8 +31,7 @@ Quat composeRotation(Quat orientation, Quat rotation, AngularFrame frame);
 /// @param time             [Units: s] [Limit: >= 0, finite].
 /// @param out              receives the unit quaternion; untouched unless Ok.
 /// @return Ok, NonFiniteInput, ZeroQuaternion or NegativeTime.
-Status predictOrientation(Quat orientation, Vec3 angularVelocity, AngularFrame frame, float time,
-                          Quat& out);
+Status predictOrientation(Quat orientation, Vec3 angularVelocity, AngularFrame frame, float time, Quat& out);
 
 /// Normalises `q` into `out`; refuses a zero or non-finite quaternion (ZeroQuaternion,
 /// NonFiniteInput). Public so that tools validate exactly as the predictors do.

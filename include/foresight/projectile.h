@@ -42,30 +42,30 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// Which projectile integrator to run.
 enum class ProjectileMethod : std::uint8_t {
-    Exact,   ///< event-driven, exact impact times, contact handling (default).
-    Stepped, ///< the reference article's fixed-step loop, faithfully.
-    Engine,  ///< step for step as a physics engine computes it (ProjectileSettings::engine).
+    Exact,    ///< event-driven, exact impact times, contact handling (default).
+    Stepped,  ///< the reference article's fixed-step loop, faithfully.
+    Engine,   ///< step for step as a physics engine computes it (ProjectileSettings::engine).
 };
 
 /// What a TrajectoryPoint marks.
 enum class TrajectoryEvent : std::uint8_t {
-    Start,  ///< the initial state (t = 0).
-    Step,   ///< the state at a step boundary (Exact: a multiple of `step`).
-    Bounce, ///< an impact (Exact: at its exact time; Stepped: the step that hit; Engine: a step in
-            ///< which a contact changed the velocity, rolling included). Has a normal.
-    Rest,   ///< the projectile came to rest (Exact only); it stays there until the end.
-    Hit,    ///< the prediction stopped at this impact (maxBounces reached). Has a normal.
-    End,    ///< the final state at the prediction time.
+    Start,   ///< the initial state (t = 0).
+    Step,    ///< the state at a step boundary (Exact: a multiple of `step`).
+    Bounce,  ///< an impact (Exact: at its exact time; Stepped: the step that hit; Engine: a step in
+             ///< which a contact changed the velocity, rolling included). Has a normal.
+    Rest,    ///< the projectile came to rest (Exact only); it stays there until the end.
+    Hit,     ///< the prediction stopped at this impact (maxBounces reached). Has a normal.
+    End,     ///< the final state at the prediction time.
 };
 
 /// A point of a predicted trajectory.
 struct TrajectoryPoint {
-    float time = 0;           ///< since the start [Units: s].
+    float time = 0;  ///< since the start [Units: s].
     TrajectoryEvent event = TrajectoryEvent::Step;
-    RVec3 position{0};        ///< [Units: m]
-    Vec3 velocity{0};         ///< [Units: m/s]; after the bounce for Bounce points.
-    Vec3 normal{0};           ///< surface normal for Bounce and Hit points (and a Stepped End
-                              ///< whose step hit); zero otherwise.
+    RVec3 position{0};  ///< [Units: m]
+    Vec3 velocity{0};   ///< [Units: m/s]; after the bounce for Bounce points.
+    Vec3 normal{0};     ///< surface normal for Bounce and Hit points (and a Stepped End
+                        ///< whose step hit); zero otherwise.
 };
 
 /// Use as ProjectileSettings::maxBounces for no limit.
@@ -74,14 +74,14 @@ inline constexpr std::uint32_t kUnlimitedBounces = std::numeric_limits<std::uint
 /// How to predict a projectile. Defaults follow the reference article.
 struct ProjectileSettings {
     ProjectileMethod method = ProjectileMethod::Exact;
-    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f}; ///< [Units: m/s^2], world axes.
-    float step = 0.02f;         ///< time step [Units: s] [Limit: > 0]; Exact records a point per step.
-    float restitution = 0.5f;   ///< coefficient of restitution [Limit: 0 .. 1].
+    Vec3 gravity{0.0f, -kDefaultGravity, 0.0f};  ///< [Units: m/s^2], world axes.
+    float step = 0.02f;                          ///< time step [Units: s] [Limit: > 0]; Exact records a point per step.
+    float restitution = 0.5f;                    ///< coefficient of restitution [Limit: 0 .. 1].
     /// Coulomb friction coefficient [Limit: >= 0]. At an impact the tangential velocity loses
     /// `friction * (1 + e) * |normal speed|` (never reversing); while sliding (Exact) it
     /// decelerates by `friction * |normal gravity|`. 0 (the article) is frictionless.
     float friction = 0.0f;
-    float radius = 0.0f;        ///< 0: a point (line casts); > 0: a sphere (sphere casts) [Units: m].
+    float radius = 0.0f;  ///< 0: a point (line casts); > 0: a sphere (sphere casts) [Units: m].
     /// Bounces allowed; the next impact ends the prediction there (TrajectoryEvent::Hit).
     /// 0 stops at the first hit, as Unreal's PredictProjectilePath does.
     std::uint32_t maxBounces = kUnlimitedBounces;
@@ -111,21 +111,20 @@ std::uint64_t steppedStepCount(float time, float step);
 
 /// Trajectory storage that is always enough for the Stepped method, and for Exact when there
 /// are at most `expectedEvents` bounces and contact changes: `steps + 3 + 2 * expectedEvents`.
-std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings,
-                               std::size_t expectedEvents = 64);
+std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings, std::size_t expectedEvents = 64);
 
 /// The outcome of a projectile prediction.
 struct ProjectileResult {
-    RVec3 position{0};         ///< final position [Units: m].
-    Vec3 velocity{0};          ///< final velocity [Units: m/s].
-    float time = 0;            ///< time reached [Units: s]: `time` (Exact), steps * step
-                               ///< (Stepped), or the impact time when stoppedAtHit.
-    std::uint32_t bounces = 0; ///< bounces applied.
-    bool atRest = false;       ///< Exact: the projectile came to rest on a surface.
-    bool stoppedAtHit = false; ///< the prediction ended at an impact (maxBounces).
-    Vec3 hitNormal{0};         ///< normal of the last impact (zero if none).
-    std::size_t trajectorySize = 0;   ///< points written into the trajectory storage.
-    std::size_t trajectoryNeeded = 0; ///< points the whole trajectory has; > size if truncated.
+    RVec3 position{0};                 ///< final position [Units: m].
+    Vec3 velocity{0};                  ///< final velocity [Units: m/s].
+    float time = 0;                    ///< time reached [Units: s]: `time` (Exact), steps * step
+                                       ///< (Stepped), or the impact time when stoppedAtHit.
+    std::uint32_t bounces = 0;         ///< bounces applied.
+    bool atRest = false;               ///< Exact: the projectile came to rest on a surface.
+    bool stoppedAtHit = false;         ///< the prediction ended at an impact (maxBounces).
+    Vec3 hitNormal{0};                 ///< normal of the last impact (zero if none).
+    std::size_t trajectorySize = 0;    ///< points written into the trajectory storage.
+    std::size_t trajectoryNeeded = 0;  ///< points the whole trajectory has; > size if truncated.
 };
 
 /// Predicts a projectile.
@@ -143,15 +142,14 @@ struct ProjectileResult {
 /// @return Ok, or why the input was refused (see validateProjectileSettings), TooManySteps,
 ///         TooManyEvents (out is untouched) or NonFiniteResult.
 Status predictProjectile(RVec3 position, Vec3 velocity, float time, const ProjectileSettings& settings,
-                         const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
-                         ProjectileResult& out);
+                         const CollisionWorld* world, std::span<TrajectoryPoint> trajectory, ProjectileResult& out);
 
 /// How a game shows a body between its fixed physics steps.
 enum class RenderSmoothing : std::uint8_t {
-    None,        ///< the state of the last completed step (no smoothing).
-    Interpolate, ///< between the last two completed steps, one step behind (Unity's Rigidbody
-                 ///< interpolation, Godot 4's physics interpolation).
-    Extrapolate, ///< the last completed step moved on with its velocity (Unity's extrapolation).
+    None,         ///< the state of the last completed step (no smoothing).
+    Interpolate,  ///< between the last two completed steps, one step behind (Unity's Rigidbody
+                  ///< interpolation, Godot 4's physics interpolation).
+    Extrapolate,  ///< the last completed step moved on with its velocity (Unity's extrapolation).
 };
 
 /// The position a game will draw at `renderTime` for a fixed-step trajectory (Engine or Stepped:

@@ -34,7 +34,7 @@ struct SenderSettings {
     float positionThreshold = 1.0f;
     /// [Units: rad] [Limit: > 0, finite] send when the extrapolated orientation is this far
     /// from the true one, measured as the angle of the rotation between them (0 to pi).
-    float orientationThreshold = 0.05235987755982988f; // 3 degrees
+    float orientationThreshold = 0.05235987755982988f;  // 3 degrees
     /// [Units: s] [Limit: > 0, finite] send at least this often, even when nothing changed.
     float heartbeat = 5.0f;
 };
@@ -55,7 +55,7 @@ enum SendReason : std::uint8_t {
 
 /// What DeadReckoningSender::update decided.
 struct SendDecision {
-    std::uint8_t reasons = SendReasonNone; ///< SendReason bits; non-zero means "send now".
+    std::uint8_t reasons = SendReasonNone;  ///< SendReason bits; non-zero means "send now".
     /// [Units: m] distance between the receivers' extrapolation and the truth, before sending
     /// (0 for the first update; the largest float when the extrapolation overflows).
     float positionError = 0.0f;
@@ -98,10 +98,10 @@ public:
 
 private:
     SenderSettings mSettings;
-    Status mSettingsStatus = Status::Ok; // validateSenderSettings(mSettings), checked once
+    Status mSettingsStatus = Status::Ok;  // validateSenderSettings(mSettings), checked once
     DeadReckoningState mLastSent{};
     double mLastSentTime = 0.0;
-    double mLastTime = 0.0; // the previous update()'s time (TimeWentBackwards)
+    double mLastTime = 0.0;  // the previous update()'s time (TimeWentBackwards)
     bool mHasSent = false;
     bool mHasTime = false;
 };
@@ -163,8 +163,8 @@ enum class ReceiverMode : std::uint8_t {
 
 /// How a receiver shows a remote entity.
 struct ReceiverSettings {
-    ReceiverMode mode = ReceiverMode::Extrapolate;               ///< extrapolate or interpolate.
-    Smoothing smoothing = Smoothing::ProjectiveVelocityBlending; ///< Extrapolate mode only.
+    ReceiverMode mode = ReceiverMode::Extrapolate;                ///< extrapolate or interpolate.
+    Smoothing smoothing = Smoothing::ProjectiveVelocityBlending;  ///< Extrapolate mode only.
     /// [Units: s] [Limit: > 0, finite] duration of LinearBlend and ProjectiveVelocityBlending,
     /// and of the fade of Interpolate mode's switch from extrapolating to interpolating.
     float blendTime = 0.2f;
@@ -218,32 +218,32 @@ enum class UpdateOutcome : std::uint8_t {
 
 /// Counts of what a receiver did, for statistics and tests.
 struct ReceiverCounters {
-    std::uint64_t accepted = 0;    ///< updates applied or buffered (Accepted, Snapped, Buffered).
-    std::uint64_t snaps = 0;       ///< updates that snapped (first, Snap smoothing, teleports,
-                                   ///< sender restarts).
-    std::uint64_t teleports = 0;   ///< snaps caused by teleportDistance (Interpolate mode: updates
-                                   ///< further than it from the previous buffered one's
-                                   ///< prediction at their timestamp).
-    std::uint64_t outOfOrder = 0;  ///< OutOfOrder updates dropped.
-    std::uint64_t duplicates = 0;  ///< Duplicate updates dropped.
-    std::uint64_t invalid = 0;     ///< Invalid updates dropped.
-    std::uint64_t held = 0;        ///< sample() calls that returned a held pose (ReceivedPose::held).
-    std::uint64_t futureUpdates = 0; ///< updates stamped later than the receive time (treated
-                                     ///< as age 0 until their timestamp: never extrapolated
-                                     ///< backwards), within maxFutureSkew.
-    std::uint64_t tooFarAhead = 0;   ///< TooFarAhead updates dropped.
-    std::uint64_t clockRestarts = 0; ///< older updates taken as a sender restart (restartAfter);
-                                     ///< each also counts as a snap.
+    std::uint64_t accepted = 0;       ///< updates applied or buffered (Accepted, Snapped, Buffered).
+    std::uint64_t snaps = 0;          ///< updates that snapped (first, Snap smoothing, teleports,
+                                      ///< sender restarts).
+    std::uint64_t teleports = 0;      ///< snaps caused by teleportDistance (Interpolate mode: updates
+                                      ///< further than it from the previous buffered one's
+                                      ///< prediction at their timestamp).
+    std::uint64_t outOfOrder = 0;     ///< OutOfOrder updates dropped.
+    std::uint64_t duplicates = 0;     ///< Duplicate updates dropped.
+    std::uint64_t invalid = 0;        ///< Invalid updates dropped.
+    std::uint64_t held = 0;           ///< sample() calls that returned a held pose (ReceivedPose::held).
+    std::uint64_t futureUpdates = 0;  ///< updates stamped later than the receive time (treated
+                                      ///< as age 0 until their timestamp: never extrapolated
+                                      ///< backwards), within maxFutureSkew.
+    std::uint64_t tooFarAhead = 0;    ///< TooFarAhead updates dropped.
+    std::uint64_t clockRestarts = 0;  ///< older updates taken as a sender restart (restartAfter);
+                                      ///< each also counts as a snap.
 };
 
 /// The pose a receiver shows at a time, in world axes.
 struct ReceivedPose {
-    RVec3 position{0};                        ///< [Units: m], world axes.
+    RVec3 position{0};  ///< [Units: m], world axes.
     /// [Units: m/s], world axes (converted for `*B`): the model's velocity at the age shown
     /// (also when held); during a correction the blend of the old and new velocities, not the
     /// derivative of the blended position (which includes the correction's own speed).
     Vec3 velocity{0};
-    Quat orientation = glm::identity<Quat>(); ///< body-to-world, unit.
+    Quat orientation = glm::identity<Quat>();  ///< body-to-world, unit.
     /// True when extrapolationLimit stopped the extrapolation of the newest update: the
     /// position stays at its extrapolation to timestamp + extrapolationLimit.
     bool held = false;
@@ -294,8 +294,7 @@ private:
         glm::dvec3 velocity{0.0};
         glm::dquat orientation{glm::identity<glm::dquat>()};
     };
-    Status extrapolate(const Snapshot& update, double time, DeadReckoningResult& result, Pose& pose,
-                       bool& held) const;
+    Status extrapolate(const Snapshot& update, double time, DeadReckoningResult& result, Pose& pose, bool& held) const;
     Status showExtrapolated(double time, ReceivedPose& out, Pose& shown) const;
     Status showInterpolated(double renderTime, ReceivedPose& out) const;
     // Whether `to` is further than teleportDistance from `from`'s prediction at its timestamp
@@ -306,13 +305,13 @@ private:
     const Snapshot& buffered(std::size_t i) const { return mBuffer[(mBufferStart + i) % kBufferCapacity]; }
 
     ReceiverSettings mSettings;
-    Status mSettingsStatus = Status::Ok; // validateReceiverSettings(mSettings), checked once
+    Status mSettingsStatus = Status::Ok;  // validateReceiverSettings(mSettings), checked once
     ReceiverCounters mCounters;
     // Interpolate mode: the newest updates, a ring ordered by timestamp.
     std::array<Snapshot, kBufferCapacity> mBuffer{};
     std::size_t mBufferStart = 0;
     std::size_t mBufferCount = 0;
-    double mLastRenderTime = 0.0; // the last sample()'s render time (OutOfOrder)
+    double mLastRenderTime = 0.0;  // the last sample()'s render time (OutOfOrder)
     bool mHasRendered = false;
     // Interpolate mode: what the switch from extrapolating the newest update to interpolating
     // towards a newer one moved the shown pose by, fading out over blendTime from mSwitchStart.
@@ -322,14 +321,14 @@ private:
     bool mHasSwitchOffset = false;
     // Extrapolate mode: the update being shown and the correction in progress.
     Snapshot mCurrent{};
-    Snapshot mPrevious{};          // the update shown before mCurrent (LinearBlend)
-    Pose mShownAtCorrection{};     // what was shown when the correction started
-    glm::dvec3 mPreviousOffset{0.0}; // LinearBlend: shown minus mPrevious's extrapolation at start
-    glm::dquat mPreviousRotationOffset{glm::identity<glm::dquat>()}; // the same, world-frame rotation
-    glm::dvec3 mCurrentOffset{0.0}; // shown minus mCurrent's extrapolation at start (decay)
-    glm::dquat mCurrentRotationOffset{glm::identity<glm::dquat>()}; // the same, world-frame rotation
-    glm::dvec3 mCurrentVelocity{0.0};     // PVB: V', mCurrent's world velocity at start
-    glm::dvec3 mCurrentAcceleration{0.0}; // PVB: A', mCurrent's world acceleration at start
+    Snapshot mPrevious{};             // the update shown before mCurrent (LinearBlend)
+    Pose mShownAtCorrection{};        // what was shown when the correction started
+    glm::dvec3 mPreviousOffset{0.0};  // LinearBlend: shown minus mPrevious's extrapolation at start
+    glm::dquat mPreviousRotationOffset{glm::identity<glm::dquat>()};  // the same, world-frame rotation
+    glm::dvec3 mCurrentOffset{0.0};  // shown minus mCurrent's extrapolation at start (decay)
+    glm::dquat mCurrentRotationOffset{glm::identity<glm::dquat>()};  // the same, world-frame rotation
+    glm::dvec3 mCurrentVelocity{0.0};                                // PVB: V', mCurrent's world velocity at start
+    glm::dvec3 mCurrentAcceleration{0.0};                            // PVB: A', mCurrent's world acceleration at start
     double mCorrectionStart = 0.0;
     double mLastAcceptedAt = 0.0;  // receive time of the last accepted update (restartAfter)
     bool mHasCurrent = false;
@@ -348,9 +347,8 @@ private:
 ///                    at its update (age 0).
 /// @param out         receives one result per entity; same length as `states`.
 /// @return the number of entities refused (their `out` is their update as given).
-std::size_t predictDeadReckoningBatch(std::span<const DeadReckoningState> states,
-                                      std::span<const double> timestamps, double time,
-                                      std::span<DeadReckoningResult> out);
+std::size_t predictDeadReckoningBatch(std::span<const DeadReckoningState> states, std::span<const double> timestamps,
+                                      double time, std::span<DeadReckoningResult> out);
 
 // ---------------------------------------------------------------------------------------------
 // Prepared extrapolation (many entities per frame)
@@ -373,22 +371,21 @@ public:
     double timestamp() const { return mTimestamp; }
 
 private:
-    friend Status prepareDeadReckoning(const DeadReckoningState& state, double timestamp,
-                                       PreparedDeadReckoning& out);
+    friend Status prepareDeadReckoning(const DeadReckoningState& state, double timestamp, PreparedDeadReckoning& out);
     friend std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> entities, double time,
                                                 float extrapolationLimit, std::span<DeadReckoningResult> out);
     friend class DeadReckoningBatch;
     friend struct detail::PreparedAccess;
 
-    RVec3 mPosition{0};                       // p
-    double mTimestamp = 0.0;                  // [s]
-    double mHalfRate = 0.0;                   // |w| / 2 [rad/s]; 0 unless the model rotates
-    Vec3 mVelocity{0};                        // v, the model's axes
-    Vec3 mAcceleration{0};                    // a; 0 unless the model uses it
-    Quat mOrientation = glm::identity<Quat>(); // A = q normalised
-    Quat mAxisTerm = zeroQuat();              // B = q (0, u): q exp(w t) = A cos h + B sin h
-    Vec3 mAxis{0};                            // u = w / |w|, body axes; 0 unless rotating
-    std::uint8_t mKernel = 0;                 // 0 STATIC, 1 world axes, 2 body axes
+    RVec3 mPosition{0};                         // p
+    double mTimestamp = 0.0;                    // [s]
+    double mHalfRate = 0.0;                     // |w| / 2 [rad/s]; 0 unless the model rotates
+    Vec3 mVelocity{0};                          // v, the model's axes
+    Vec3 mAcceleration{0};                      // a; 0 unless the model uses it
+    Quat mOrientation = glm::identity<Quat>();  // A = q normalised
+    Quat mAxisTerm = zeroQuat();                // B = q (0, u): q exp(w t) = A cos h + B sin h
+    Vec3 mAxis{0};                              // u = w / |w|, body axes; 0 unless rotating
+    std::uint8_t mKernel = 0;                   // 0 STATIC, 1 world axes, 2 body axes
     DeadReckoningAlgorithm mAlgorithm = DeadReckoningAlgorithm::Static;
 
     static Quat zeroQuat() {

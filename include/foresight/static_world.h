@@ -18,29 +18,29 @@ FORESIGHT_NAMESPACE_BEGIN
 /// frictionCombine), as the engine combines two colliders' materials; the other methods use the
 /// projectile's values. Casts report it in CastHit::restitution and CastHit::friction.
 struct SurfaceMaterial {
-    float restitution = -1.0f; ///< [Limit: 0 .. 1, or negative: none (the projectile's value acts alone)]
-    float friction = -1.0f;    ///< [Limit: >= 0, or negative: none]
+    float restitution = -1.0f;  ///< [Limit: 0 .. 1, or negative: none (the projectile's value acts alone)]
+    float friction = -1.0f;     ///< [Limit: >= 0, or negative: none]
 };
 
 /// A one-sided infinite plane: the points x with `dot(normal, x) = distance`. The front side
 /// is where the normal points; behind it is solid (a floor, a wall of an arena).
 struct Plane {
-    Vec3 normal{0, 1, 0}; ///< [Limit: non-zero]; normalised when added (distance with it).
-    Real distance = 0;    ///< `dot(normal, x)` on the plane; with a unit normal, the plane's
-                          ///< signed distance from the origin [Units: m].
+    Vec3 normal{0, 1, 0};  ///< [Limit: non-zero]; normalised when added (distance with it).
+    Real distance = 0;     ///< `dot(normal, x)` on the plane; with a unit normal, the plane's
+                           ///< signed distance from the origin [Units: m].
 };
 
 /// A solid sphere.
 struct Sphere {
-    RVec3 center{0};     ///< [Units: m]
-    float radius = 1.0f; ///< [Units: m] [Limit: > 0]
+    RVec3 center{0};      ///< [Units: m]
+    float radius = 1.0f;  ///< [Units: m] [Limit: > 0]
 };
 
 /// A solid box, rotated by `orientation` about its centre.
 struct OrientedBox {
-    RVec3 center{0};                          ///< [Units: m]
-    Vec3 halfExtents{0.5f};                   ///< half sizes along the box's local axes [Units: m] [Limit: > 0]
-    Quat orientation = glm::identity<Quat>(); ///< local-to-world; normalised when added.
+    RVec3 center{0};                           ///< [Units: m]
+    Vec3 halfExtents{0.5f};                    ///< half sizes along the box's local axes [Units: m] [Limit: > 0]
+    Quat orientation = glm::identity<Quat>();  ///< local-to-world; normalised when added.
     /// Radius of the rounded edges and corners: the box is the points within `rounding` of the
     /// box shrunk by it (faces stay where they are). Jolt's BoxShape is such a box, with its
     /// convex radius (0.05 m unless set) [Units: m] [Limit: 0 .. the smallest half extent].
@@ -49,7 +49,7 @@ struct OrientedBox {
 
 /// A two-sided triangle.
 struct Triangle {
-    RVec3 a{0}, b{0}, c{0}; ///< vertices [Units: m]; must span a non-zero area.
+    RVec3 a{0}, b{0}, c{0};  ///< vertices [Units: m]; must span a non-zero area.
 };
 
 /// Checks a shape as StaticWorld::add would: Ok, NonFiniteInput, ZeroVector, InvalidRadius,
@@ -70,9 +70,9 @@ namespace detail {
 /// Internal to ClosestHitCaster: a cast prepared for the shape tests (double precision).
 struct PreparedRay {
     glm::dvec3 origin{0.0};
-    glm::dvec3 direction{0.0, 0.0, 1.0}; ///< unit
-    double length = 0.0;                 ///< 0: the cast hits nothing
-    double tolerance = 0.0;              ///< how far behind a one-sided surface a start is "on" it
+    glm::dvec3 direction{0.0, 0.0, 1.0};  ///< unit
+    double length = 0.0;                  ///< 0: the cast hits nothing
+    double tolerance = 0.0;               ///< how far behind a one-sided surface a start is "on" it
     double radius = 0.0;
 };
 /// Internal to ClosestHitCaster: the closest hit so far, as a distance along the ray.
@@ -204,17 +204,17 @@ private:
     bool sameMaterial(const SurfaceMaterial& material) const;
     void addEdge(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w);
 
-    SegmentCast mCapsule;             // the region, as given
-    glm::dvec3 mA{0.0}, mB{0.0};      // the capsule's segment
-    double mRadius = 0.0;             // the capsule's radius, grown for rounding
+    SegmentCast mCapsule;         // the region, as given
+    glm::dvec3 mA{0.0}, mB{0.0};  // the capsule's segment
+    double mRadius = 0.0;         // the capsule's radius, grown for rounding
     glm::dvec3 mNormal{0.0, 1.0, 0.0};
-    double mDistance = 0.0;           // dot(normal, x) on the plane
-    double mTolerance = 0.0;          // how far from the plane a vertex still lies in it [m]
-    glm::dvec3 mAnchor{0.0};          // a point of the cross-section: the start's projection
+    double mDistance = 0.0;   // dot(normal, x) on the plane
+    double mTolerance = 0.0;  // how far from the plane a vertex still lies in it [m]
+    glm::dvec3 mAnchor{0.0};  // a point of the cross-section: the start's projection
     SurfaceMaterial mMaterial;
     bool mFailed = false;
-    bool mCovered = false;            // a plane or a box covers the cross-section
-    bool mAnchored = false;           // a triangle holds the anchor
+    bool mCovered = false;   // a plane or a box covers the cross-section
+    bool mAnchored = false;  // a triangle holds the anchor
     mutable std::array<Edge, kMaxEdges> mEdges{};
     int mEdgeCount = 0;
 };

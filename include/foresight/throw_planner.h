@@ -47,8 +47,8 @@ struct ThrowPlanBudget {
     std::uint32_t speedSamples = 3;      ///< grid: speeds evenly in (minSpeed, maxSpeed].
     /// Candidates refined at most (seeds that missed, then grid cells) [Limit: 1 .. 32].
     std::uint32_t refinements = 6;
-    std::uint32_t refinementPredictions = 24; ///< predictions per refinement at most.
-    std::uint32_t maxPredictions = 400;  ///< predictions per planThrow call at most, in total.
+    std::uint32_t refinementPredictions = 24;  ///< predictions per refinement at most.
+    std::uint32_t maxPredictions = 400;        ///< predictions per planThrow call at most, in total.
     /// The work of one call at most: maxPredictions x the steps of one prediction
     /// (`fuseTime / settings.step`, counted as for the Stepped method whatever the method: the
     /// exact method's chord casts also advance by `step`) [Limit: >= 1]. A request over it is
@@ -82,38 +82,38 @@ struct ThrowPlanRequest {
     float minSpeed = 0.0f;          ///< lowest launch speed [Units: m/s] [Limit: 0 .. maxSpeed].
     /// Gravity, restitution, friction, radius, step, method and caps of the forward model.
     ProjectileSettings settings;
-    std::uint32_t maxPlans = 3;     ///< plans wanted (also capped by the output span) [Limit: >= 1].
+    std::uint32_t maxPlans = 3;  ///< plans wanted (also capped by the output span) [Limit: >= 1].
     /// Two plans are distinct when their launch directions differ by at least this angle or
     /// their first impacts are on surfaces whose normals differ by more than it
     /// [Units: rad] [Limit: 0 .. pi; values outside are clamped].
     float distinctAngle = 0.1f;
-    ThrowPlanBudget budget;         ///< caps on the work.
+    ThrowPlanBudget budget;  ///< caps on the work.
 };
 
 /// One throw that works.
 struct ThrowPlan {
-    Vec3 launchVelocity{0};      ///< [Units: m/s], world axes; speed within [minSpeed, maxSpeed].
-    RVec3 finalPosition{0};      ///< where the grenade is at the fuse time [Units: m].
-    float distance = 0;          ///< |finalPosition - target| [Units: m] [Limit: <= acceptanceRadius].
-    std::uint32_t bounces = 0;   ///< bounces until the fuse time.
-    bool atRest = false;         ///< the grenade rests on a surface at the fuse time.
+    Vec3 launchVelocity{0};     ///< [Units: m/s], world axes; speed within [minSpeed, maxSpeed].
+    RVec3 finalPosition{0};     ///< where the grenade is at the fuse time [Units: m].
+    float distance = 0;         ///< |finalPosition - target| [Units: m] [Limit: <= acceptanceRadius].
+    std::uint32_t bounces = 0;  ///< bounces until the fuse time.
+    bool atRest = false;        ///< the grenade rests on a surface at the fuse time.
     /// Time of the first impact [Units: s]; < 0 when there is none (or it was not recorded:
     /// scratch smaller than throwPlanScratchSize).
     float firstImpactTime = -1.0f;
-    Vec3 firstImpactNormal{0};   ///< unit normal of the first impact; zero when there is none.
-    RVec3 firstImpactPosition{0};///< where the first impact is [Units: m]; start when none.
+    Vec3 firstImpactNormal{0};     ///< unit normal of the first impact; zero when there is none.
+    RVec3 firstImpactPosition{0};  ///< where the first impact is [Units: m]; start when none.
 };
 
 /// What planThrow did.
 struct ThrowPlanResult {
-    std::size_t planCount = 0;        ///< plans written, best (closest) first.
-    std::uint32_t predictions = 0;    ///< forward predictions run.
+    std::size_t planCount = 0;      ///< plans written, best (closest) first.
+    std::uint32_t predictions = 0;  ///< forward predictions run.
     /// The closest any tried throw came to the target at the fuse time [Units: m] (also when
     /// no plan was found: how far out of reach the target is, as far as the search saw);
     /// FLT_MAX when no throw finished or the distance is beyond a float (a target ~1e38 m
     /// away or more): then closestVelocity is zero. `foresight plan` prints null for both.
     float closestDistance = 0;
-    Vec3 closestVelocity{0};          ///< the launch velocity of that throw [Units: m/s].
+    Vec3 closestVelocity{0};  ///< the launch velocity of that throw [Units: m/s].
 };
 
 /// Checks a request as planThrow does: Ok, NonFiniteInput (any NaN or infinity), InvalidFuse
@@ -147,17 +147,15 @@ std::size_t throwPlanScratchSize(const ThrowPlanRequest& request);
 /// @return Ok (also when nothing was found: planCount 0), or why the request was refused
 ///         (validateThrowPlanRequest). Forward predictions that fail during the search (work
 ///         caps, overflow) count as misses.
-Status planThrow(const ThrowPlanRequest& request, const CollisionWorld* world,
-                 std::span<ThrowPlan> plans, std::span<TrajectoryPoint> scratch,
-                 ThrowPlanResult& out);
+Status planThrow(const ThrowPlanRequest& request, const CollisionWorld* world, std::span<ThrowPlan> plans,
+                 std::span<TrajectoryPoint> scratch, ThrowPlanResult& out);
 
 /// Predicts the trajectory of a plan (or of any launch velocity) with the request's settings
 /// until its fuse time: predictProjectile(request.start, plan.launchVelocity,
 /// request.fuseTime, request.settings, world, trajectory, out). Size the storage with
 /// trajectoryCapacity(request.fuseTime, request.settings, plan.bounces + 8).
 /// @return as predictProjectile.
-Status predictThrowPlan(const ThrowPlanRequest& request, const ThrowPlan& plan,
-                        const CollisionWorld* world, std::span<TrajectoryPoint> trajectory,
-                        ProjectileResult& out);
+Status predictThrowPlan(const ThrowPlanRequest& request, const ThrowPlan& plan, const CollisionWorld* world,
+                        std::span<TrajectoryPoint> trajectory, ProjectileResult& out);
 
 FORESIGHT_NAMESPACE_END

@@ -22,10 +22,10 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// The kinematic state of a vehicle.
 struct VehicleState {
-    RVec3 position{0};                    ///< [Units: m], world axes.
-    Vec3 velocity{0};                     ///< [Units: m/s], world axes.
-    Quat orientation = glm::identity<Quat>(); ///< local-to-world, unit.
-    Vec3 angularVelocity{0};              ///< [Units: rad/s], in the axes of VehicleSettings::frame.
+    RVec3 position{0};                         ///< [Units: m], world axes.
+    Vec3 velocity{0};                          ///< [Units: m/s], world axes.
+    Quat orientation = glm::identity<Quat>();  ///< local-to-world, unit.
+    Vec3 angularVelocity{0};                   ///< [Units: rad/s], in the axes of VehicleSettings::frame.
 };
 
 /// The largest iteration count predictVehicleIterative accepts (caps the work of one call).
@@ -33,8 +33,8 @@ inline constexpr int kMaxVehicleIterations = 1 << 20;
 
 /// How to interpret a VehicleState.
 struct VehicleSettings {
-    AngularFrame frame = AngularFrame::Body; ///< axes of the angular velocity.
-    Vec3 forward{0.0f, 0.0f, 1.0f};          ///< local forward axis (unit, non-zero; article: +Z).
+    AngularFrame frame = AngularFrame::Body;  ///< axes of the angular velocity.
+    Vec3 forward{0.0f, 0.0f, 1.0f};           ///< local forward axis (unit, non-zero; article: +Z).
 };
 
 /// The signed speed of a vehicle: `|velocity|`, negative when it moves backwards relative to
@@ -48,13 +48,12 @@ float signedVehicleSpeed(Vec3 velocity, Vec3 forwardWorld);
 /// @param out         receives the state after `time`; velocity is on the final forward axis.
 /// @return Ok, NonFiniteInput, NegativeTime, InvalidIterations, ZeroQuaternion, ZeroVector or
 ///         NonFiniteResult.
-Status predictVehicleIterative(const VehicleState& start, float time, int iterations,
-                               const VehicleSettings& settings, VehicleState& out);
+Status predictVehicleIterative(const VehicleState& start, float time, int iterations, const VehicleSettings& settings,
+                               VehicleState& out);
 
 /// The exact arc of the article's model (constant angular velocity, velocity on the forward
 /// axis with constant signed speed). Costs about as much as two loop iterations.
 /// @return Ok, NonFiniteInput, NegativeTime, ZeroQuaternion, ZeroVector or NonFiniteResult.
-Status predictVehicleExact(const VehicleState& start, float time, const VehicleSettings& settings,
-                           VehicleState& out);
+Status predictVehicleExact(const VehicleState& start, float time, const VehicleSettings& settings, VehicleState& out);
 
 FORESIGHT_NAMESPACE_END

@@ -19,10 +19,10 @@ struct SegmentCast {
 
 /// The first hit of a SegmentCast.
 struct CastHit {
-    float fraction = 1.0f; ///< where along the segment [Limit: 0 .. 1]: origin + fraction * displacement.
-    RVec3 position{0};     ///< the cast's origin point (sphere centre) at the hit [Units: m].
-                           ///< The surface contact is `position - normal * radius`.
-    Vec3 normal{0, 1, 0};  ///< unit surface normal at the hit, facing against the motion.
+    float fraction = 1.0f;  ///< where along the segment [Limit: 0 .. 1]: origin + fraction * displacement.
+    RVec3 position{0};      ///< the cast's origin point (sphere centre) at the hit [Units: m].
+                            ///< The surface contact is `position - normal * radius`.
+    Vec3 normal{0, 1, 0};   ///< unit surface normal at the hit, facing against the motion.
     /// The surface's own coefficient of restitution, or negative when the world has none (then
     /// the projectile's value is the contact's). Used by ProjectileMethod::Engine, which combines
     /// it with the projectile's by the engine's rule [Limit: < 0, or 0 .. 1].
@@ -36,11 +36,11 @@ struct CastHit {
 /// through `point` with unit normal `normal` (towards the free side) that should be the only
 /// surface there, with the material `restitution`, `friction` (as CastHit reports them).
 struct PlaneRegion {
-    SegmentCast capsule;       ///< the region [Units: m].
-    RVec3 point{0};            ///< a point of the plane [Units: m].
-    Vec3 normal{0, 1, 0};      ///< the plane's unit normal, pointing to the free side.
-    float restitution = -1.0f; ///< the material the plane's hits report (negative: none).
-    float friction = -1.0f;    ///< see restitution.
+    SegmentCast capsule;        ///< the region [Units: m].
+    RVec3 point{0};             ///< a point of the plane [Units: m].
+    Vec3 normal{0, 1, 0};       ///< the plane's unit normal, pointing to the free side.
+    float restitution = -1.0f;  ///< the material the plane's hits report (negative: none).
+    float friction = -1.0f;     ///< see restitution.
 };
 
 /// What a world must answer. Rules every implementation should follow (the built-in one does):
@@ -117,16 +117,12 @@ public:
     static CallbackWorld wrap(Callable& callable) {
         static_assert(std::is_invocable_r_v<bool, Callable&, const SegmentCast&, CastHit&>,
                       "callable must be bool(const SegmentCast&, CastHit&)");
-        return CallbackWorld(
-            [](void* context, const SegmentCast& cast, CastHit& hit) -> bool {
-                return (*static_cast<Callable*>(context))(cast, hit);
-            },
-            static_cast<void*>(&callable));
+        return CallbackWorld([](void* context, const SegmentCast& cast,
+                                CastHit& hit) -> bool { return (*static_cast<Callable*>(context))(cast, hit); },
+                             static_cast<void*>(&callable));
     }
 
-    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
-        return mFunction(mContext, cast, hit);
-    }
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override { return mFunction(mContext, cast, hit); }
 
 private:
     CastSegmentFunction mFunction;

@@ -210,8 +210,7 @@ Trajectory run_bullet(const CaseSpec& spec) {
 
     for (const BoxSpec& box : spec.boxes) {
         shapes.push_back(std::make_unique<btBoxShape>(bt(box.half_extents)));
-        const btQuaternion rotation(bt(box.rotation[0]), bt(box.rotation[1]), bt(box.rotation[2]),
-                                    bt(box.rotation[3]));
+        const btQuaternion rotation(bt(box.rotation[0]), bt(box.rotation[1]), bt(box.rotation[2]), bt(box.rotation[3]));
         btRigidBody::btRigidBodyConstructionInfo info(btScalar(0), nullptr, shapes.back().get());
         info.m_startWorldTransform = btTransform(rotation, bt(box.center));
         if (box.restitution) {
@@ -276,8 +275,8 @@ float f32(double value) { return static_cast<float>(value); }
 
 // Box2D 2.4.1 still says 2.4.0 in b2_version: the package's version (from CMake) comes first.
 std::string box2d_version() {
-    const std::string library = std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
-                                "." + std::to_string(b2_version.revision);
+    const std::string library = std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
+                                std::to_string(b2_version.revision);
 #ifdef FORESIGHT_BOX2D_PACKAGE_VERSION
     const std::string package = FORESIGHT_BOX2D_PACKAGE_VERSION;
     if (package != library) {

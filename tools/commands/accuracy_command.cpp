@@ -22,9 +22,7 @@ const foresight::StaticWorld& floorWorld() {
     return world;
 }
 
-double distance(const RVec3& a, const RVec3& b) {
-    return glm::length(glm::dvec3(a) - glm::dvec3(b));
-}
+double distance(const RVec3& a, const RVec3& b) { return glm::length(glm::dvec3(a) - glm::dvec3(b)); }
 
 void vehicleTable() {
     std::printf("### Vehicle: the article's loop against the exact arc\n\n");
@@ -87,10 +85,12 @@ struct ErrorStats {
 
 void projectileTable() {
     std::printf("### Projectile: the article's stepped loop against the exact method\n\n");
-    std::printf("Restitution 0.5, gravity 9.81 m/s^2, no friction. Errors are distances to the closed-form\n"
-                "bounce sequence on planes at the end time, over 201 evenly spaced cases each.\n\n");
-    std::printf("| case | step (s) | article: mean error (m) | article: max (m) | exact: max (m) |\n"
-                "|---|---:|---:|---:|---:|\n");
+    std::printf(
+        "Restitution 0.5, gravity 9.81 m/s^2, no friction. Errors are distances to the closed-form\n"
+        "bounce sequence on planes at the end time, over 201 evenly spaced cases each.\n\n");
+    std::printf(
+        "| case | step (s) | article: mean error (m) | article: max (m) | exact: max (m) |\n"
+        "|---|---:|---:|---:|---:|\n");
     std::vector<foresight::TrajectoryPoint> points(4096);
     for (float step : {0.02f, 0.01f, 0.005f}) {
         ErrorStats stepped, exact;
@@ -104,9 +104,10 @@ void projectileTable() {
             for (auto method : {foresight::ProjectileMethod::Stepped, foresight::ProjectileMethod::Exact}) {
                 settings.method = method;
                 foresight::ProjectileResult result;
-                foresight::predictProjectile(RVec3(0.0f, 1.5f, 0.0f), Vec3(0.0f, 0.0f, 12.0f), 1.0f, settings,
-                                             &wall, points, result);
-                (method == foresight::ProjectileMethod::Stepped ? stepped : exact).add(distance(result.position, expected));
+                foresight::predictProjectile(RVec3(0.0f, 1.5f, 0.0f), Vec3(0.0f, 0.0f, 12.0f), 1.0f, settings, &wall,
+                                             points, result);
+                (method == foresight::ProjectileMethod::Stepped ? stepped : exact)
+                    .add(distance(result.position, expected));
             }
         }
         std::printf("| thrown at 12 m/s at a wall 4 to 6 m away, 1 s | %.3f | %.3f | %.3f | %.1e |\n",
@@ -122,9 +123,10 @@ void projectileTable() {
             for (auto method : {foresight::ProjectileMethod::Stepped, foresight::ProjectileMethod::Exact}) {
                 settings.method = method;
                 foresight::ProjectileResult result;
-                foresight::predictProjectile(RVec3(0.0f, static_cast<float>(height), 0.0f), Vec3(2.0f, 0.0f, 0.0f), 1.0f,
-                                             settings, &floorWorld(), points, result);
-                (method == foresight::ProjectileMethod::Stepped ? stepped : exact).add(distance(result.position, expected));
+                foresight::predictProjectile(RVec3(0.0f, static_cast<float>(height), 0.0f), Vec3(2.0f, 0.0f, 0.0f),
+                                             1.0f, settings, &floorWorld(), points, result);
+                (method == foresight::ProjectileMethod::Stepped ? stepped : exact)
+                    .add(distance(result.position, expected));
             }
         }
         std::printf("| dropped from 0.5 to 1.5 m, 2 m/s sideways, 1 s | %.3f | %.3f | %.3f | %.1e |\n",
@@ -134,10 +136,12 @@ void projectileTable() {
     const foresight::StaticWorld& floor = floorWorld();
 
     // Resting and sliding contact: dropped from 1 m with 2 m/s sideways onto the floor, 3 s.
-    std::printf("Contact: dropped from 1 m with 2 m/s sideways onto the floor, restitution 0.5, 3 s.\n"
-                "Closed form: the bounces end at t = 1.355 s; without friction it then slides on, to x = 6 m.\n\n");
-    std::printf("| friction | method | final x (m) | final y (m) | final speed (m/s) | at rest |\n"
-                "|---:|---|---:|---:|---:|---|\n");
+    std::printf(
+        "Contact: dropped from 1 m with 2 m/s sideways onto the floor, restitution 0.5, 3 s.\n"
+        "Closed form: the bounces end at t = 1.355 s; without friction it then slides on, to x = 6 m.\n\n");
+    std::printf(
+        "| friction | method | final x (m) | final y (m) | final speed (m/s) | at rest |\n"
+        "|---:|---|---:|---:|---:|---|\n");
     for (float friction : {0.0f, 0.5f}) {
         for (auto method : {foresight::ProjectileMethod::Stepped, foresight::ProjectileMethod::Exact}) {
             foresight::ProjectileSettings settings;
@@ -155,7 +159,7 @@ void projectileTable() {
     std::printf("\n");
 }
 
-} // namespace
+}  // namespace
 
 int accuracyCommand() {
     vehicleTable();
@@ -163,4 +167,4 @@ int accuracyCommand() {
     return 0;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -9,4 +9,4 @@ namespace foresight_cli {
 /// Prints the accuracy tables (Markdown) to standard output. Returns the exit status.
 int accuracyCommand();
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -50,7 +50,8 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
     const bool hasApex = item.contains("apex_height");
     const int constraints = int(hasSpeed) + int(hasHorizontal) + int(hasApex);
     if (constraints > 1) {
-        d.error(path, "give one of \"speed\", \"horizontal_speed\" and \"apex_height\", not " + std::to_string(constraints));
+        d.error(path,
+                "give one of \"speed\", \"horizontal_speed\" and \"apex_height\", not " + std::to_string(constraints));
     }
     auto nonNegative = [&](const char* key, float& value) {
         if (m.floatNumber(key, constraints == 0 && std::string(key) == "speed", value) && value < 0.0f) {
@@ -79,7 +80,8 @@ void readShot(const Json& item, const std::string& path, const foresight::Vec3& 
         } else if (apexAbove == "target") {
             s.shot.constraint = foresight::AimConstraint::ApexAboveTarget;
         } else if (apexAbove != "start") {
-            d.error(m.at("apex_above"), "unknown value " + jsonQuoted(apexAbove) + " (expected \"start\" or \"target\")");
+            d.error(m.at("apex_above"),
+                    "unknown value " + jsonQuoted(apexAbove) + " (expected \"start\" or \"target\")");
         }
     }
 
@@ -170,7 +172,7 @@ bool runShots(const std::vector<Shot>& shots, Json& document, Diagnostics& d) {
     return d.ok();
 }
 
-} // namespace
+}  // namespace
 
 bool aimDocument(const Json& document, Json& output, Diagnostics& diagnostics) {
     std::vector<Shot> shots;
@@ -188,4 +190,4 @@ int aimCommand(const std::string& file) {
     return writeJsonResult(output);
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

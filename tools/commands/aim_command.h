@@ -22,4 +22,4 @@ bool aimDocument(const Json& document, Json& output, Diagnostics& diagnostics);
 /// or 1 (standard output cannot be written).
 int aimCommand(const std::string& file);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -100,8 +100,8 @@ std::vector<Impact> predictedImpacts(const std::vector<foresight::TrajectoryPoin
         if (point.event != foresight::TrajectoryEvent::Bounce && point.event != foresight::TrajectoryEvent::Hit)
             continue;
         const auto& previous = trajectory[i - 1];
-        const glm::dvec3 before = glm::dvec3(previous.velocity) +
-                                  glm::dvec3(gravity) * (static_cast<double>(point.time) - previous.time);
+        const glm::dvec3 before =
+            glm::dvec3(previous.velocity) + glm::dvec3(gravity) * (static_cast<double>(point.time) - previous.time);
         impacts.push_back({point.time, point.position, -glm::dot(before, glm::dvec3(point.normal))});
     }
     return impacts;
@@ -151,10 +151,12 @@ Status predict(const Scenario& scenario, const Prediction& p, const foresight::P
                MethodRun& run) {
     const foresight::CollisionWorld* world = predictionWorld(scenario);
     run.trajectory.resize(foresight::trajectoryCapacity(p.time, settings));
-    Status status = foresight::predictProjectile(p.position, p.velocity, p.time, settings, world, run.trajectory, run.result);
+    Status status =
+        foresight::predictProjectile(p.position, p.velocity, p.time, settings, world, run.trajectory, run.result);
     if (status == Status::Ok && run.result.trajectoryNeeded > run.trajectory.size()) {
         run.trajectory.resize(run.result.trajectoryNeeded);
-        status = foresight::predictProjectile(p.position, p.velocity, p.time, settings, world, run.trajectory, run.result);
+        status =
+            foresight::predictProjectile(p.position, p.velocity, p.time, settings, world, run.trajectory, run.result);
     }
     if (status != Status::Ok) return status;
     run.trajectory.resize(std::min(run.result.trajectorySize, run.trajectory.size()));
@@ -183,7 +185,8 @@ std::vector<ThrowComparison> compareScenario(const Scenario& scenario, const Com
     foresight::BulletScene scene;
     const Status sceneStatus = buildBulletScene(scenario, scene);
     if (sceneStatus != Status::Ok) {
-        diagnostics.error("world", std::string("cannot build the Bullet world: ") + foresight::statusMessage(sceneStatus));
+        diagnostics.error("world",
+                          std::string("cannot build the Bullet world: ") + foresight::statusMessage(sceneStatus));
         return comparisons;
     }
     std::size_t total = 0;
@@ -214,7 +217,8 @@ std::vector<ThrowComparison> compareScenario(const Scenario& scenario, const Com
             status = foresight::simulateProjectileRigidBody(scene, p.position, p.velocity, p.time, settings,
                                                             fineSimulation, c.fine);
         if (status != Status::Ok) {
-            diagnostics.error(p.path, std::string("the Bullet simulation refused it: ") + foresight::statusMessage(status));
+            diagnostics.error(p.path,
+                              std::string("the Bullet simulation refused it: ") + foresight::statusMessage(status));
             continue;
         }
         foresight::ProjectileSettings stepped = settings;
@@ -317,32 +321,32 @@ std::string fileTable(const std::vector<ThrowComparison>& comparisons, const Com
                   "foresight compare: predictions against a Bullet rigid body at %g Hz (errors in mm and ms)\n\n",
                   static_cast<double>(options.frequency));
     text += buffer;
-    std::snprintf(buffer, sizeof buffer, "%-16s %-8s %8s %10s %10s %9s %12s %10s\n", "projectile", "method",
-                  "radius", "landing", "landing t", "at fuse", "bounces", "bounce t");
+    std::snprintf(buffer, sizeof buffer, "%-16s %-8s %8s %10s %10s %9s %12s %10s\n", "projectile", "method", "radius",
+                  "landing", "landing t", "at fuse", "bounces", "bounce t");
     text += buffer;
     for (const auto& c : comparisons) {
-        const std::string id = c.prediction->id.is_string() ? c.prediction->id.get<std::string>()
-                                                            : c.prediction->path;
+        const std::string id = c.prediction->id.is_string() ? c.prediction->id.get<std::string>() : c.prediction->path;
         const auto line = [&](const char* method, const Errors& e) {
             const std::string bounces = std::to_string(e.bounces) + " (" + std::to_string(e.referenceBounces) + ")";
             std::snprintf(buffer, sizeof buffer, "%-16s %-8s %8.3f %10s %10s %9s %12s %10s\n", id.c_str(), method,
                           static_cast<double>(c.radius), millimetres(e.landingDistance).c_str(),
-                          milliseconds(e.landingTime).c_str(), millimetres(e.finalDistance).c_str(),
-                          bounces.c_str(), milliseconds(e.bounceTimeMax).c_str());
+                          milliseconds(e.landingTime).c_str(), millimetres(e.finalDistance).c_str(), bounces.c_str(),
+                          milliseconds(e.bounceTimeMax).c_str());
             text += buffer;
         };
         line("stepped", c.steppedErrors);
         line("exact", c.exactErrors);
         line("physics", c.fineErrors);
     }
-    std::snprintf(buffer, sizeof buffer,
-                  "\nlanding: distance and time between the first impacts; at fuse: distance at the prediction's time;\n"
-                  "bounces: bounces at %.1f m/s or more (the simulation's in brackets), bounce t: largest time\n"
-                  "difference between matching bounces. The \"physics\" rows are the simulation at %g Hz against\n"
-                  "the one at %g Hz: the reference's own step error. A point projectile is compared as a sphere\n"
-                  "of %.2f m.\n",
-                  kBounceSpeed, static_cast<double>(std::min(options.frequency * kFineFactor, 100000.0f)),
-                  static_cast<double>(options.frequency), static_cast<double>(kPointRadius));
+    std::snprintf(
+        buffer, sizeof buffer,
+        "\nlanding: distance and time between the first impacts; at fuse: distance at the prediction's time;\n"
+        "bounces: bounces at %.1f m/s or more (the simulation's in brackets), bounce t: largest time\n"
+        "difference between matching bounces. The \"physics\" rows are the simulation at %g Hz against\n"
+        "the one at %g Hz: the reference's own step error. A point projectile is compared as a sphere\n"
+        "of %.2f m.\n",
+        kBounceSpeed, static_cast<double>(std::min(options.frequency * kFineFactor, 100000.0f)),
+        static_cast<double>(options.frequency), static_cast<double>(kPointRadius));
     text += buffer;
     return text;
 }
@@ -436,7 +440,8 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
         scene.scenario.world.add(floor);
         for (int i = 0; i < 10; ++i) {
             const double height = 0.2 * (i + 1);
-            scene.scenario.world.add(box(RVec3(0, height / 2, 4 + 0.3 * i + 0.15), Vec3(2, static_cast<float>(height / 2), 0.15f)));
+            scene.scenario.world.add(
+                box(RVec3(0, height / 2, 4 + 0.3 * i + 0.15), Vec3(2, static_cast<float>(height / 2), 0.15f)));
         }
         scene.scenario.world.add(box(RVec3(0, 1.0, 9), Vec3(2, 1, 2)));
         throws(scene.scenario, "stairs_", [&](const std::string& id) {
@@ -457,7 +462,10 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
         scenes.push_back(std::move(scene));
     }
     {
-        BuiltinScene scene{"demo level", "the courtyard of `foresight level` (3028 triangles: 30 m walls with a doorway, stairs to a platform, a ramp, pillars, crates); throws from its open middle", {}};
+        BuiltinScene scene{"demo level",
+                           "the courtyard of `foresight level` (3028 triangles: 30 m walls with a doorway, stairs to a "
+                           "platform, a ramp, pillars, crates); throws from its open middle",
+                           {}};
         if (!addLevelMesh(scene.scenario, foresight_level::makeDemoLevel(), error)) return false;
         throws(scene.scenario, "level_", [&](const std::string& id) {
             const RVec3 start(uniform(random, -4, 4), 1.5, uniform(random, -4, 4));
@@ -471,11 +479,11 @@ bool builtinScenes(std::vector<BuiltinScene>& scenes, std::string& error) {
 
 /// Per scene and per side (stepped, exact, and the reference at 4x its frequency: its own error).
 struct SideSummary {
-    std::vector<double> landing;      // [m] per throw that landed on both sides
-    std::vector<double> final;        // [m] per throw
-    std::vector<double> bounceTime;   // [s] per throw with matching bounces: the largest difference
-    std::size_t withinCentimetre = 0; // throws within 1 cm of the reference at the fuse
-    std::size_t sameBounces = 0;      // throws with as many bounces as the reference
+    std::vector<double> landing;       // [m] per throw that landed on both sides
+    std::vector<double> final;         // [m] per throw
+    std::vector<double> bounceTime;    // [s] per throw with matching bounces: the largest difference
+    std::size_t withinCentimetre = 0;  // throws within 1 cm of the reference at the fuse
+    std::size_t sameBounces = 0;       // throws with as many bounces as the reference
 
     void add(const Errors& errors) {
         if (errors.landingDistance) landing.push_back(*errors.landingDistance);
@@ -510,17 +518,19 @@ int builtinCommand(const CompareOptions& options) {
     Json scenesJson = Json::array();
     char buffer[600];
     std::string text;
-    text += "| Scene | Throws | Landing error [mm] | Error at 3 s [mm] | Within 1 cm at 3 s | "
-            "Bounce time error [ms] | Same bounce count |\n";
+    text +=
+        "| Scene | Throws | Landing error [mm] | Error at 3 s [mm] | Within 1 cm at 3 s | "
+        "Bounce time error [ms] | Same bounce count |\n";
     text += "|---|---:|---:|---:|---:|---:|---:|\n";
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const BuiltinScene& scene = scenes[i];
         Diagnostics diagnostics;
-        const auto comparisons = compareScenario(scene.scenario, options, diagnostics, [&](std::size_t done, std::size_t total) {
-            if (showProgress)
-                std::fprintf(stderr, "\rcompare: scene %zu/%zu (%s), throw %zu/%zu   ", i + 1, scenes.size(),
-                             scene.name.c_str(), done, total);
-        });
+        const auto comparisons =
+            compareScenario(scene.scenario, options, diagnostics, [&](std::size_t done, std::size_t total) {
+                if (showProgress)
+                    std::fprintf(stderr, "\rcompare: scene %zu/%zu (%s), throw %zu/%zu   ", i + 1, scenes.size(),
+                                 scene.name.c_str(), done, total);
+            });
         if (!diagnostics.ok()) {
             if (showProgress) std::fprintf(stderr, "\n");
             std::cerr << "foresight compare: built-in scene \"" << scene.name << "\" failed:\n";
@@ -534,13 +544,13 @@ int builtinCommand(const CompareOptions& options) {
             sides[2].add(c.fineErrors);
         }
         const auto count = [](std::size_t n) { return std::to_string(n); };
-        std::snprintf(buffer, sizeof buffer, "| %s | %zu | %s | %s | %s | %s | %s |\n", scene.name.c_str(),
-                      comparisons.size(),
-                      triple(sides, [](const SideSummary& side) { return millimetres(median(side.landing)); }).c_str(),
-                      triple(sides, [](const SideSummary& side) { return millimetres(median(side.final)); }).c_str(),
-                      triple(sides, [&](const SideSummary& side) { return count(side.withinCentimetre); }).c_str(),
-                      triple(sides, [](const SideSummary& side) { return milliseconds(median(side.bounceTime)); }).c_str(),
-                      triple(sides, [&](const SideSummary& side) { return count(side.sameBounces); }).c_str());
+        std::snprintf(
+            buffer, sizeof buffer, "| %s | %zu | %s | %s | %s | %s | %s |\n", scene.name.c_str(), comparisons.size(),
+            triple(sides, [](const SideSummary& side) { return millimetres(median(side.landing)); }).c_str(),
+            triple(sides, [](const SideSummary& side) { return millimetres(median(side.final)); }).c_str(),
+            triple(sides, [&](const SideSummary& side) { return count(side.withinCentimetre); }).c_str(),
+            triple(sides, [](const SideSummary& side) { return milliseconds(median(side.bounceTime)); }).c_str(),
+            triple(sides, [&](const SideSummary& side) { return count(side.sameBounces); }).c_str());
         text += buffer;
         if (!options.jsonFile.empty()) {
             Json throwsJson = Json::array();
@@ -553,14 +563,15 @@ int builtinCommand(const CompareOptions& options) {
         }
     }
     if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
-    std::snprintf(buffer, sizeof buffer,
-                  "\nEach cell: stepped (the article's loop) / exact / Bullet's own error (the same simulation at %g Hz\n"
-                  "against %g Hz), medians over the throws. Landing: distance between the first impacts. At 3 s:\n"
-                  "distance between the positions when the fuse ends. Bounce time: per throw, the largest time\n"
-                  "difference between matching bounces (approach speed %.1f m/s or more). Every throw: restitution\n"
-                  "0.5, no friction, step 0.02 s, a sphere of %.2f m (the predictions cast the same sphere).\n\n",
-                  static_cast<double>(std::min(options.frequency * kFineFactor, 100000.0f)),
-                  static_cast<double>(options.frequency), kBounceSpeed, static_cast<double>(kPointRadius));
+    std::snprintf(
+        buffer, sizeof buffer,
+        "\nEach cell: stepped (the article's loop) / exact / Bullet's own error (the same simulation at %g Hz\n"
+        "against %g Hz), medians over the throws. Landing: distance between the first impacts. At 3 s:\n"
+        "distance between the positions when the fuse ends. Bounce time: per throw, the largest time\n"
+        "difference between matching bounces (approach speed %.1f m/s or more). Every throw: restitution\n"
+        "0.5, no friction, step 0.02 s, a sphere of %.2f m (the predictions cast the same sphere).\n\n",
+        static_cast<double>(std::min(options.frequency * kFineFactor, 100000.0f)),
+        static_cast<double>(options.frequency), kBounceSpeed, static_cast<double>(kPointRadius));
     text += buffer;
     for (const auto& scene : scenes) text += "- " + scene.name + ": " + scene.description + "\n";
     std::string reason;
@@ -580,7 +591,7 @@ int builtinCommand(const CompareOptions& options) {
     return 0;
 }
 
-} // namespace
+}  // namespace
 
 int compareCommand(const std::string& file, const CompareOptions& options) {
     if (!(options.frequency >= 240.0f && options.frequency <= 100000.0f)) {
@@ -646,4 +657,4 @@ int compareCommand(const std::string& file, const CompareOptions& options) {
 
 #endif
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

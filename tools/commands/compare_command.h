@@ -52,4 +52,4 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
 /// usage (and when foresight was built without Bullet), 1 for an internal error.
 int compareCommand(const std::string& file, const CompareOptions& options);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

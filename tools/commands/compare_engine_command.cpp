@@ -50,10 +50,10 @@ constexpr std::uint64_t kMaxEngineSteps = 200000;
 
 /// An engine a harness drives.
 struct HarnessEngine {
-    const char* name;     ///< the harness's engine name, and --engine's
-    PhysicsEngine engine; ///< the profile that predicts it
-    const char* runtime;  ///< "node", "godot" or "native"
-    const char* what;     ///< for --help and messages
+    const char* name;      ///< the harness's engine name, and --engine's
+    PhysicsEngine engine;  ///< the profile that predicts it
+    const char* runtime;   ///< "node", "godot" or "native"
+    const char* what;      ///< for --help and messages
 };
 
 const HarnessEngine kHarnessEngines[] = {
@@ -140,8 +140,10 @@ std::vector<std::string> harnessCommand(const HarnessEngine& engine, const fs::p
     const std::string runtime = engine.runtime;
     if (runtime == "node") {
         const std::string node = findOnPath("node");
-        if (node.empty()) missing = "Node.js (node) is not on PATH";
-        else if (!fs::is_regular_file(folder / "harness.mjs", error)) missing = (folder / "harness.mjs").string() + " not found";
+        if (node.empty())
+            missing = "Node.js (node) is not on PATH";
+        else if (!fs::is_regular_file(folder / "harness.mjs", error))
+            missing = (folder / "harness.mjs").string() + " not found";
         else if (!fs::is_directory(folder / "node_modules", error))
             missing = "the engines' npm packages are not installed (npm ci in " + folder.string() + ")";
         if (!missing.empty()) return {};
@@ -151,9 +153,12 @@ std::vector<std::string> harnessCommand(const HarnessEngine& engine, const fs::p
         const std::string godot = findOnPath("godot3-server");
         const fs::path script = folder / "godot" / "run_godot.sh";
         const std::string bash = findOnPath("bash");
-        if (godot.empty()) missing = "godot3-server is not on PATH (Debian package godot3-server)";
-        else if (bash.empty()) missing = "bash is not on PATH";
-        else if (!fs::is_regular_file(script, error)) missing = script.string() + " not found";
+        if (godot.empty())
+            missing = "godot3-server is not on PATH (Debian package godot3-server)";
+        else if (bash.empty())
+            missing = "bash is not on PATH";
+        else if (!fs::is_regular_file(script, error))
+            missing = script.string() + " not found";
         if (!missing.empty()) return {};
         environment.push_back("GODOT=" + godot);
         return {bash, script.string()};
@@ -164,8 +169,9 @@ std::vector<std::string> harnessCommand(const HarnessEngine& engine, const fs::p
     if (native.empty()) native = FORESIGHT_NATIVE_HARNESS_PATH;
 #endif
     if (native.empty() || ::access(native.c_str(), X_OK) != 0)
-        missing = "foresight_engine_harness is not built (configure with FORESIGHT_BUILD_TESTS=ON, libbullet-dev and "
-                  "libbox2d-dev installed, or set FORESIGHT_NATIVE_HARNESS)";
+        missing =
+            "foresight_engine_harness is not built (configure with FORESIGHT_BUILD_TESTS=ON, libbullet-dev and "
+            "libbox2d-dev installed, or set FORESIGHT_NATIVE_HARNESS)";
     if (!missing.empty()) return {};
     return {native};
 }
@@ -183,19 +189,19 @@ glm::dquat rotationFromUp(const glm::dvec3& n) {
 /// projectile's restitution and friction (the box takes the rule's neutral value).
 void splitMaterial(foresight::CombineRule rule, double value, double& body, double& box) {
     switch (rule) {
-    case foresight::CombineRule::Max:
-    case foresight::CombineRule::SumClamped:
-        body = value;
-        box = 0.0;
-        break;
-    case foresight::CombineRule::Multiply:
-        body = value;
-        box = 1.0;
-        break;
-    default:
-        body = value;
-        box = value;
-        break;
+        case foresight::CombineRule::Max:
+        case foresight::CombineRule::SumClamped:
+            body = value;
+            box = 0.0;
+            break;
+        case foresight::CombineRule::Multiply:
+            body = value;
+            box = 1.0;
+            break;
+        default:
+            body = value;
+            box = value;
+            break;
     }
 }
 
@@ -204,11 +210,11 @@ struct EngineComparison {
     const Prediction* prediction = nullptr;
     foresight::ProjectileSettings settings;  // the engine-matched prediction's
     std::uint64_t steps = 0;
-    std::vector<glm::dvec3> engine;           // the engine's positions, start and every step
-    std::vector<glm::dvec3> predicted;        // the engine-matched prediction's
+    std::vector<glm::dvec3> engine;     // the engine's positions, start and every step
+    std::vector<glm::dvec3> predicted;  // the engine-matched prediction's
     RVec3 exactEnd{0}, steppedEnd{0};
     int engineFirstContact = -1, predictedFirstContact = -1;
-    double freeFlightWorst = 0.0;  // [m] before either side's first contact
+    double freeFlightWorst = 0.0;                              // [m] before either side's first contact
     double endEngine = 0.0, endExact = 0.0, endStepped = 0.0;  // [m] from the engine's end
 };
 
@@ -296,10 +302,12 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
     const bool planar = engine->engine == PhysicsEngine::Box2D;
     const bool rounds = engine->engine == PhysicsEngine::Jolt || engine->engine == PhysicsEngine::Rapier;
     if (!scenario.world.spheres().empty())
-        diagnostics.error("world.spheres", "compare --engine sends planes and boxes to the engine; spheres are not supported");
+        diagnostics.error("world.spheres",
+                          "compare --engine sends planes and boxes to the engine; spheres are not supported");
     if (!scenario.world.triangles().empty() || scenario.meshWorld)
-        diagnostics.error(scenario.meshWorld ? "world.meshes" : "world.triangles",
-                          "compare --engine sends planes and boxes to the engine; triangles and meshes are not supported");
+        diagnostics.error(
+            scenario.meshWorld ? "world.meshes" : "world.triangles",
+            "compare --engine sends planes and boxes to the engine; triangles and meshes are not supported");
     if (planar && scenario.gravity.z != 0.0f)
         diagnostics.error("gravity", "box2d runs in the x-y plane: the z component must be 0");
     Json boxes = Json::array();
@@ -330,8 +338,9 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         }
         if (!rounds && box.rounding > 0.0f) {
             diagnostics.error("world.boxes[" + std::to_string(i) + "].rounding",
-                              std::string(engine->name) + " builds sharp boxes here: the rounding must be 0 (jolt and "
-                              "rapier round them)");
+                              std::string(engine->name) +
+                                  " builds sharp boxes here: the rounding must be 0 (jolt and "
+                                  "rapier round them)");
             continue;
         }
         boxes.push_back(Json{{"center", {box.center.x, box.center.y, box.center.z}},
@@ -352,16 +361,15 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         EngineComparison c;
         c.prediction = &p;
         c.settings = p.projectile;
-        const bool sameEngine = p.projectile.method == foresight::ProjectileMethod::Engine &&
-                                p.projectile.engine.engine == engine->engine;
+        const bool sameEngine =
+            p.projectile.method == foresight::ProjectileMethod::Engine && p.projectile.engine.engine == engine->engine;
         if (!sameEngine) {
             c.settings.engine = foresight::engineProfile(engine->engine);
             if (p.projectile.method == foresight::ProjectileMethod::Engine) {
                 c.settings.engine.timestep = p.projectile.engine.timestep;
                 diagnostics.warning(p.path, std::string("its engine profile is ") +
                                                 foresight::engineName(p.projectile.engine.engine) +
-                                                "; compared with the " + engine->name +
-                                                " profile at its timestep");
+                                                "; compared with the " + engine->name + " profile at its timestep");
             }
         }
         // ammo.js carries a Bullet from before the restitution threshold (a project setting).
@@ -371,8 +379,10 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         c.settings.radius = p.projectile.radius > 0.0f ? p.projectile.radius : kPointRadius;
         c.settings.maxBounces = foresight::kUnlimitedBounces;
         if (planar && (p.velocity.z != 0.0f || p.position.z != 0.0))
-            diagnostics.warning(p.path, "box2d runs in the x-y plane: the z components of position and velocity are dropped");
-        const double stepCount = std::ceil(static_cast<double>(p.time) / static_cast<double>(c.settings.engine.timestep) - 1e-9);
+            diagnostics.warning(p.path,
+                                "box2d runs in the x-y plane: the z components of position and velocity are dropped");
+        const double stepCount =
+            std::ceil(static_cast<double>(p.time) / static_cast<double>(c.settings.engine.timestep) - 1e-9);
         if (!(stepCount >= 1.0) || stepCount > static_cast<double>(kMaxEngineSteps)) {
             diagnostics.error(p.path + ".time", "the engine would take " + std::to_string(stepCount) +
                                                     " steps; compare --engine runs 1 to " +
@@ -380,7 +390,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
             continue;
         }
         c.steps = static_cast<std::uint64_t>(stepCount);
-        Json body{{"radius", c.settings.radius}, {"mass", 1.0},
+        Json body{{"radius", c.settings.radius},
+                  {"mass", 1.0},
                   {"position", {p.position.x, p.position.y, planar ? 0.0 : static_cast<double>(p.position.z)}},
                   {"velocity", {p.velocity.x, p.velocity.y, planar ? 0.0f : p.velocity.z}}};
         // The body's damping as the prediction sets it; otherwise the engine's default for a new body.
@@ -395,7 +406,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         Json caseBoxes = boxes;
         for (std::size_t j = 0; j < caseBoxes.size(); ++j) {
             const foresight::SurfaceMaterial& own = boxMaterials[j];
-            caseBoxes[j]["restitution"] = own.restitution >= 0.0f ? static_cast<double>(own.restitution) : boxRestitution;
+            caseBoxes[j]["restitution"] =
+                own.restitution >= 0.0f ? static_cast<double>(own.restitution) : boxRestitution;
             caseBoxes[j]["friction"] = own.friction >= 0.0f ? static_cast<double>(own.friction) : boxFriction;
         }
         cases.push_back(Json{{"id", std::to_string(comparisons.size())},
@@ -444,8 +456,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
             std::string logText, ignored;
             readTextFile(log.string(), logText, ignored);
             if (logText.size() > 4000) logText = logText.substr(logText.size() - 4000);
-            std::cerr << "foresight compare: the " << engine->name << " harness failed (status " << status
-                      << "):\n" << logText << '\n';
+            std::cerr << "foresight compare: the " << engine->name << " harness failed (status " << status << "):\n"
+                      << logText << '\n';
             return 1;
         }
         std::string resultText;
@@ -465,7 +477,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         std::vector<glm::dvec3> velocities;
         for (const Json& r : results["results"]) {
             if (!r.is_object() || r.value("id", std::string()) != std::to_string(i)) continue;
-            if (!readVectors(r.value("positions", Json()), c.engine) || !readVectors(r.value("velocities", Json()), velocities))
+            if (!readVectors(r.value("positions", Json()), c.engine) ||
+                !readVectors(r.value("velocities", Json()), velocities))
                 c.engine.clear();
         }
         if (c.engine.size() != c.steps + 1 || velocities.size() != c.steps + 1) {
@@ -475,13 +488,15 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         // The engine-matched prediction, one point per step.
         const RVec3 start(p.position.x, p.position.y, planar ? 0.0 : p.position.z);
         const Vec3 velocity(p.velocity.x, p.velocity.y, planar ? 0.0f : p.velocity.z);
-        const float time = static_cast<float>(static_cast<double>(c.steps) * static_cast<double>(c.settings.engine.timestep));
+        const float time =
+            static_cast<float>(static_cast<double>(c.steps) * static_cast<double>(c.settings.engine.timestep));
         std::vector<foresight::TrajectoryPoint> points(foresight::trajectoryCapacity(time, c.settings, 16));
         foresight::ProjectileResult result;
         Status status = foresight::predictProjectile(start, velocity, time, c.settings, world, points, result);
         if (status == Status::Ok && result.trajectorySize != c.steps + 1) status = Status::TooManySteps;
         if (status != Status::Ok) {
-            std::cerr << p.path << ": the engine-matched prediction failed: " << foresight::statusMessage(status) << '\n';
+            std::cerr << p.path << ": the engine-matched prediction failed: " << foresight::statusMessage(status)
+                      << '\n';
             return 1;
         }
         std::vector<glm::dvec3> predictedVelocities;
@@ -491,13 +506,14 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         }
         c.engineFirstContact = firstContact(velocities, c.settings);
         c.predictedFirstContact = firstContact(predictedVelocities, c.settings);
-        const std::size_t freeSteps = static_cast<std::size_t>(std::min(
-            c.engineFirstContact < 0 ? static_cast<int>(c.steps) + 1 : c.engineFirstContact,
-            c.predictedFirstContact < 0 ? static_cast<int>(c.steps) + 1 : c.predictedFirstContact));
+        const std::size_t freeSteps = static_cast<std::size_t>(
+            std::min(c.engineFirstContact < 0 ? static_cast<int>(c.steps) + 1 : c.engineFirstContact,
+                     c.predictedFirstContact < 0 ? static_cast<int>(c.steps) + 1 : c.predictedFirstContact));
         for (std::size_t k = 0; k < freeSteps && k < c.engine.size(); ++k)
             c.freeFlightWorst = std::max(c.freeFlightWorst, glm::length(c.predicted[k] - c.engine[k]));
         // The exact and stepped methods at the same time, with the same sphere.
-        for (const foresight::ProjectileMethod method : {foresight::ProjectileMethod::Exact, foresight::ProjectileMethod::Stepped}) {
+        for (const foresight::ProjectileMethod method :
+             {foresight::ProjectileMethod::Exact, foresight::ProjectileMethod::Stepped}) {
             foresight::ProjectileSettings s = p.projectile;
             s.method = method;
             s.radius = c.settings.radius;
@@ -527,7 +543,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
             entry["steps"] = c.steps;
             entry["radius"] = jsonFloat(c.settings.radius);
             Json enginePath = Json::array(), predictedPath = Json::array();
-            for (const glm::dvec3& v : c.engine) enginePath.push_back(Json::array({jsonDouble(v.x), jsonDouble(v.y), jsonDouble(v.z)}));
+            for (const glm::dvec3& v : c.engine)
+                enginePath.push_back(Json::array({jsonDouble(v.x), jsonDouble(v.y), jsonDouble(v.z)}));
             for (const glm::dvec3& v : c.predicted)
                 predictedPath.push_back(Json::array({jsonDouble(v.x), jsonDouble(v.y), jsonDouble(v.z)}));
             entry["engine_positions"] = std::move(enginePath);
@@ -551,8 +568,8 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
     if (options.jsonFile == "-") return 0;
     std::string table = "foresight compare: predictions against " + std::string(engine->what) + "\n\n";
     char buffer[400];
-    std::snprintf(buffer, sizeof buffer, "%-20s %6s %15s %14s %12s %12s %12s\n", "projectile", "steps",
-                  "first contact", "free flight", "end: engine", "exact", "stepped");
+    std::snprintf(buffer, sizeof buffer, "%-20s %6s %15s %14s %12s %12s %12s\n", "projectile", "steps", "first contact",
+                  "free flight", "end: engine", "exact", "stepped");
     table += buffer;
     for (const EngineComparison& c : comparisons) {
         const std::string id = c.prediction->id.is_string() ? c.prediction->id.get<std::string>() : c.prediction->path;
@@ -564,10 +581,11 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
                       millimetres(c.endExact).c_str(), millimetres(c.endStepped).c_str());
         table += buffer;
     }
-    table += "\nfirst contact: the engine's step / the engine-matched prediction's (the first step whose velocity\n"
-             "is not free flight's); free flight: the largest distance [mm] before it; end: the distance [mm]\n"
-             "from the engine's last position to the engine-matched, exact and stepped predictions' (a point\n"
-             "projectile is a sphere of 0.02 m on every side; planes are boxes 2 m thick, 2 km wide).\n";
+    table +=
+        "\nfirst contact: the engine's step / the engine-matched prediction's (the first step whose velocity\n"
+        "is not free flight's); free flight: the largest distance [mm] before it; end: the distance [mm]\n"
+        "from the engine's last position to the engine-matched, exact and stepped predictions' (a point\n"
+        "projectile is a sphere of 0.02 m on every side; planes are boxes 2 m thick, 2 km wide).\n";
     if (!writeTextFile("-", table, reason)) {
         std::cerr << "foresight compare: cannot write the table: " << reason << '\n';
         return 1;

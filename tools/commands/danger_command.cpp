@@ -70,7 +70,8 @@ void readDangerKeys(Json& prediction, const std::string& path, DangerQuery& quer
     if (name != "projectile" && name != "vehicle") {
         // The scenario's validation names a missing or unknown model.
         if (name == "linear" || name == "accelerated" || name == "orientation")
-            d.error(member(path, "model"), "foresight danger takes projectile and vehicle predictions (got \"" + name + "\")");
+            d.error(member(path, "model"),
+                    "foresight danger takes projectile and vehicle predictions (got \"" + name + "\")");
         return;
     }
     const bool projectile = name == "projectile";
@@ -91,8 +92,8 @@ void readDangerKeys(Json& prediction, const std::string& path, DangerQuery& quer
     }
     if (keys.vector("half_extents", false, query.halfExtents) &&
         !(query.halfExtents.x > 0.0f && query.halfExtents.y > 0.0f && query.halfExtents.z > 0.0f)) {
-        d.error(keys.at("half_extents"), std::string(foresight::statusMessage(Status::DegenerateShape)) +
-                                             ": each half extent must be > 0");
+        d.error(keys.at("half_extents"),
+                std::string(foresight::statusMessage(Status::DegenerateShape)) + ": each half extent must be > 0");
     }
     keys.vector("box_center", false, query.boxCenter);
     if (const Json* characters = keys.get("characters", false))
@@ -125,7 +126,7 @@ foresight::ProjectileDanger projectileDanger(const Prediction& p, const DangerQu
     return danger;
 }
 
-} // namespace
+}  // namespace
 
 bool buildDangerInput(const Json& document, const std::filesystem::path& baseDirectory, DangerInput& input,
                       Diagnostics& diagnostics) {
@@ -137,8 +138,10 @@ bool buildDangerInput(const Json& document, const std::filesystem::path& baseDir
     if (const auto tolerance = scenarioDocument.find("tolerance"); tolerance != scenarioDocument.end()) {
         float value = 0;
         if (toFloat(*tolerance, "tolerance", diagnostics, value)) {
-            if (value > 0.0f) input.approach.tolerance = value;
-            else diagnostics.error("tolerance", "expected a number > 0 [m]");
+            if (value > 0.0f)
+                input.approach.tolerance = value;
+            else
+                diagnostics.error("tolerance", "expected a number > 0 [m]");
         }
         scenarioDocument.erase("tolerance");
     }
@@ -149,7 +152,8 @@ bool buildDangerInput(const Json& document, const std::filesystem::path& baseDir
             Json& prediction = (*predictions)[i];
             DangerQuery query;
             query.prediction = i;
-            if (prediction.is_object()) readDangerKeys(prediction, "predictions[" + std::to_string(i) + "]", query, diagnostics);
+            if (prediction.is_object())
+                readDangerKeys(prediction, "predictions[" + std::to_string(i) + "]", query, diagnostics);
             queries.push_back(std::move(query));
         }
     }
@@ -159,8 +163,7 @@ bool buildDangerInput(const Json& document, const std::filesystem::path& baseDir
     return scenarioOk && diagnostics.ok();
 }
 
-bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
-               std::vector<PredictionResult>* kept) {
+bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics, std::vector<PredictionResult>* kept) {
     std::vector<PredictionResult> own;
     std::vector<PredictionResult>& results = kept ? *kept : own;
     if (!runScenario(input.scenario, results, diagnostics)) return false;
@@ -228,7 +231,8 @@ bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
                 const std::string path = p.path + ".characters[" + std::to_string(k) + "]";
                 foresight::VehicleContact contact;
                 foresight::ClosestApproach closest;
-                Status status = foresight::findVehicleContact(vehicle, query.characters[k], p.time, input.approach, contact);
+                Status status =
+                    foresight::findVehicleContact(vehicle, query.characters[k], p.time, input.approach, contact);
                 if (status == Status::Ok)
                     status = foresight::findClosestVehicleApproach(vehicle, query.characters[k], p.time, input.approach,
                                                                    closest);
@@ -270,7 +274,8 @@ bool runDanger(const DangerInput& input, Json& output, Diagnostics& diagnostics,
 
 Json dangerZonesJson(const DangerInput& input, const std::vector<PredictionResult>& results) {
     Json zones = Json::array();
-    for (std::size_t i = 0; i < input.scenario.predictions.size() && i < results.size() && i < input.queries.size(); ++i) {
+    for (std::size_t i = 0; i < input.scenario.predictions.size() && i < results.size() && i < input.queries.size();
+         ++i) {
         const Prediction& p = input.scenario.predictions[i];
         if (p.model != Model::Projectile || results[i].trajectory.empty()) continue;
         foresight::DangerZone zone;
@@ -315,4 +320,4 @@ int dangerCommand(const std::string& file, const PictureOptions& pictures) {
     return writeJsonResult(output);
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -22,28 +22,28 @@ namespace foresight_cli {
 
 /// A query point of a projectile.
 struct DangerPoint {
-    foresight::RVec3 position{0}; ///< [Units: m]
-    bool hasTime = false;         ///< "time" given: the output says whether it is safe then.
-    float time = 0;               ///< [Units: s]
+    foresight::RVec3 position{0};  ///< [Units: m]
+    bool hasTime = false;          ///< "time" given: the output says whether it is safe then.
+    float time = 0;                ///< [Units: s]
 };
 
 /// The danger keys of one prediction (by index into Scenario::predictions).
 struct DangerQuery {
-    std::size_t prediction = 0;                   ///< index into Scenario::predictions.
-    float blastRadius = 0;                        ///< projectile [Units: m].
-    float contactRadius = 0;                      ///< projectile [Units: m].
-    std::vector<DangerPoint> points;              ///< projectile.
-    foresight::Vec3 halfExtents{0.9f, 0.7f, 2.2f}; ///< vehicle [Units: m].
-    foresight::Vec3 boxCenter{0};                 ///< vehicle, local axes [Units: m].
-    std::vector<foresight::CharacterBody> characters; ///< vehicle.
-    std::vector<Json> characterIds;               ///< echoed; null when absent.
+    std::size_t prediction = 0;                        ///< index into Scenario::predictions.
+    float blastRadius = 0;                             ///< projectile [Units: m].
+    float contactRadius = 0;                           ///< projectile [Units: m].
+    std::vector<DangerPoint> points;                   ///< projectile.
+    foresight::Vec3 halfExtents{0.9f, 0.7f, 2.2f};     ///< vehicle [Units: m].
+    foresight::Vec3 boxCenter{0};                      ///< vehicle, local axes [Units: m].
+    std::vector<foresight::CharacterBody> characters;  ///< vehicle.
+    std::vector<Json> characterIds;                    ///< echoed; null when absent.
 };
 
 /// A validated danger file.
 struct DangerInput {
-    Scenario scenario;                  ///< predictions with the danger keys removed.
-    std::vector<DangerQuery> queries;   ///< one per prediction, same order.
-    foresight::ApproachSettings approach; ///< `tolerance` from the root.
+    Scenario scenario;                     ///< predictions with the danger keys removed.
+    std::vector<DangerQuery> queries;      ///< one per prediction, same order.
+    foresight::ApproachSettings approach;  ///< `tolerance` from the root.
 };
 
 /// Validates a parsed danger document (the scenario's rules plus the danger keys).
@@ -67,4 +67,4 @@ Json dangerZonesJson(const DangerInput& input, const std::vector<PredictionResul
 /// writes the viewer page and/or the SVG of the predictions with their danger zones.
 int dangerCommand(const std::string& file, const PictureOptions& pictures = {});
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

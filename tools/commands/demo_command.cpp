@@ -103,23 +103,25 @@ std::string table(const Scenario& scenario, const std::vector<PredictionResult>&
     text += row("runner, 0.5 s", "linear", runnerLinear->position, "accelerated", runnerAccelerated->position);
     const auto grenadeRows = [&](const char* label, const PredictionResult& stepped, const PredictionResult& exact) {
         text += row(label, "stepped", stepped.position, "exact", exact.position);
-        std::snprintf(buffer, sizeof buffer, "%-20s %-40s  %s\n", "  bounces, at rest",
-                      (std::to_string(stepped.projectile.bounces) + ", " + (stepped.projectile.atRest ? "yes" : "no")).c_str(),
-                      (std::to_string(exact.projectile.bounces) + ", " + (exact.projectile.atRest ? "yes" : "no")).c_str());
+        std::snprintf(
+            buffer, sizeof buffer, "%-20s %-40s  %s\n", "  bounces, at rest",
+            (std::to_string(stepped.projectile.bounces) + ", " + (stepped.projectile.atRest ? "yes" : "no")).c_str(),
+            (std::to_string(exact.projectile.bounces) + ", " + (exact.projectile.atRest ? "yes" : "no")).c_str());
         text += buffer;
     };
     grenadeRows("grenade, 3 s fuse", *grenadeStepped, *grenadeExact);
     grenadeRows("courtyard, 3 s fuse", *courtyardStepped, *courtyardExact);
     text += row("  as Jolt steps it", "exact", courtyardExact->position, "engine", courtyardJolt->position);
     text += row("car turning, 2 s", "4 iterations", carIterative->position, "exact arc", carExact->position);
-    text += "\n"
-            "runner:  3 m/s sideways, 4 m/s forward, accelerating at 2 m/s^2 forward (linear ignores it)\n"
-            "grenade: thrown at 12 m/s from 1.5 m towards a wall at z = 8 m; floor y = 0; restitution 0.5,\n"
-            "         step 0.02 s; stepped (the article) loses the rest of every step that hits something\n"
-            "courtyard: a grenade thrown at 13.7 m/s from the doorway of the demo level (`foresight level`)\n"
-            "         across the courtyard; it bounces off a riser of the stairs, the floor and the west wall;\n"
-            "         \"engine\": the same throw as Jolt (Godot 4) steps a 5 cm ball at 60 Hz (docs/engines.md)\n"
-            "car:     10 m/s, turning at 0.5 rad/s; the article's loop with 4 iterations vs the closed-form arc\n";
+    text +=
+        "\n"
+        "runner:  3 m/s sideways, 4 m/s forward, accelerating at 2 m/s^2 forward (linear ignores it)\n"
+        "grenade: thrown at 12 m/s from 1.5 m towards a wall at z = 8 m; floor y = 0; restitution 0.5,\n"
+        "         step 0.02 s; stepped (the article) loses the rest of every step that hits something\n"
+        "courtyard: a grenade thrown at 13.7 m/s from the doorway of the demo level (`foresight level`)\n"
+        "         across the courtyard; it bounces off a riser of the stairs, the floor and the west wall;\n"
+        "         \"engine\": the same throw as Jolt (Godot 4) steps a 5 cm ball at 60 Hz (docs/engines.md)\n"
+        "car:     10 m/s, turning at 0.5 rad/s; the article's loop with 4 iterations vs the closed-form arc\n";
     return text;
 }
 
@@ -128,7 +130,6 @@ std::string table(const Scenario& scenario, const std::vector<PredictionResult>&
 bool addDemoLevel(Scenario& scenario, std::string& error) {
     return addLevelMesh(scenario, foresight_level::makeDemoLevel(), error);
 }
-
 
 // --- The AI uses: one firing solution, one planned throw, one danger answer of each
 // kind. They are computed when the demo runs (aim.h, throw_planner.h, danger.h), and the
@@ -148,7 +149,7 @@ constexpr float kRunnerAcceleration[3] = {0.0f, 0.0f, 2.0f};
 /// The planned throw: from the doorway into the far corner of the platform in the north-west,
 /// 31 m away (a lob that lands on the platform and bounces into the corner).
 constexpr double kThrowStart[3] = {0.0, 1.5, -13.0};
-constexpr double kThrowTarget[3] = {-14.4, 1.875, 14.4}; // on the platform's top
+constexpr double kThrowTarget[3] = {-14.4, 1.875, 14.4};  // on the platform's top
 constexpr float kThrowFuse = 4.0f;
 constexpr float kThrowMaxSpeed = 20.0f;
 constexpr float kThrowAcceptance = 1.0f;
@@ -162,7 +163,9 @@ constexpr double kPedestrian[3] = {5.0, 0.9, 9.0};
 constexpr float kPedestrianVelocity[3] = {-1.5f, 0.0f, 0.0f};
 constexpr float kPedestrianTime = 2.0f;
 
-foresight::RVec3 demoPoint(const double (&p)[3]) { return foresight::RVec3(foresight::Real(p[0]), foresight::Real(p[1]), foresight::Real(p[2])); }
+foresight::RVec3 demoPoint(const double (&p)[3]) {
+    return foresight::RVec3(foresight::Real(p[0]), foresight::Real(p[1]), foresight::Real(p[2]));
+}
 foresight::Vec3 demoVector(const float (&v)[3]) { return foresight::Vec3(v[0], v[1], v[2]); }
 
 /// What the AI part of the demo computed.
@@ -193,7 +196,8 @@ bool computeDemoAi(const Scenario& scenario, DemoAi& ai, std::string& error) {
     ai.target.acceleration = demoVector(kRunnerAcceleration);
     foresight::Status status = foresight::aimProjectile(ai.shot, ai.target, ai.solutions, ai.solutionCount);
     if (status != foresight::Status::Ok || ai.solutionCount == 0) {
-        error = std::string("aim: ") + (status == foresight::Status::Ok ? "no solution" : foresight::statusMessage(status));
+        error =
+            std::string("aim: ") + (status == foresight::Status::Ok ? "no solution" : foresight::statusMessage(status));
         return false;
     }
 
@@ -210,7 +214,8 @@ bool computeDemoAi(const Scenario& scenario, DemoAi& ai, std::string& error) {
     std::vector<foresight::TrajectoryPoint> scratch(foresight::throwPlanScratchSize(ai.request));
     status = foresight::planThrow(ai.request, &worldOf(scenario), ai.plans, scratch, ai.planned);
     if (status != foresight::Status::Ok || ai.planned.planCount == 0) {
-        error = std::string("plan: ") + (status == foresight::Status::Ok ? "no plan found" : foresight::statusMessage(status));
+        error = std::string("plan: ") +
+                (status == foresight::Status::Ok ? "no plan found" : foresight::statusMessage(status));
         return false;
     }
     return true;
@@ -222,21 +227,36 @@ Json jsonArray3(const double (&p)[3]) { return Json::array({jsonDouble(p[0]), js
 void appendAiPredictions(const DemoAi& ai, Json& scenario) {
     const foresight::FiringSolution& shot = ai.solutions[0];
     Json& predictions = scenario["predictions"];
-    predictions.push_back(Json{{"id", "aim_target"}, {"model", "accelerated"}, {"position", jsonArray3(kRunnerChest)},
+    predictions.push_back(Json{{"id", "aim_target"},
+                               {"model", "accelerated"},
+                               {"position", jsonArray3(kRunnerChest)},
                                {"velocity", jsonVector(demoVector(kRunnerVelocity))},
                                {"acceleration", jsonVector(demoVector(kRunnerAcceleration))},
                                {"time", jsonFloat(shot.time)}});
-    predictions.push_back(Json{{"id", "aim_shot"}, {"model", "projectile"}, {"method", "exact"},
-                               {"position", jsonArray3(kTurret)}, {"velocity", jsonVector(shot.velocity)},
-                               {"time", jsonFloat(shot.time)}, {"step", 0.02}, {"restitution", 0.5}});
-    predictions.push_back(Json{{"id", "planned_throw"}, {"model", "projectile"}, {"method", "exact"},
-                               {"position", jsonArray3(kThrowStart)}, {"velocity", jsonVector(ai.plans[0].launchVelocity)},
-                               {"time", jsonFloat(kThrowFuse)}, {"step", 0.02}, {"restitution", 0.5}});
+    predictions.push_back(Json{{"id", "aim_shot"},
+                               {"model", "projectile"},
+                               {"method", "exact"},
+                               {"position", jsonArray3(kTurret)},
+                               {"velocity", jsonVector(shot.velocity)},
+                               {"time", jsonFloat(shot.time)},
+                               {"step", 0.02},
+                               {"restitution", 0.5}});
+    predictions.push_back(Json{{"id", "planned_throw"},
+                               {"model", "projectile"},
+                               {"method", "exact"},
+                               {"position", jsonArray3(kThrowStart)},
+                               {"velocity", jsonVector(ai.plans[0].launchVelocity)},
+                               {"time", jsonFloat(kThrowFuse)},
+                               {"step", 0.02},
+                               {"restitution", 0.5}});
     // "accelerated" with no acceleration: the same path as "linear", which the pictures would
     // label as the article's method (a comparison this is not).
-    predictions.push_back(Json{{"id", "pedestrian"}, {"model", "accelerated"}, {"position", jsonArray3(kPedestrian)},
+    predictions.push_back(Json{{"id", "pedestrian"},
+                               {"model", "accelerated"},
+                               {"position", jsonArray3(kPedestrian)},
                                {"velocity", jsonVector(demoVector(kPedestrianVelocity))},
-                               {"acceleration", Json::array({0, 0, 0})}, {"time", jsonFloat(kPedestrianTime)}});
+                               {"acceleration", Json::array({0, 0, 0})},
+                               {"time", jsonFloat(kPedestrianTime)}});
 }
 
 /// The base scenario (the literal above) built with the demo level in memory.
@@ -245,7 +265,8 @@ bool buildBase(const Json& input, bool recordTrajectories, Scenario& scenario, D
     Json withoutMeshes = input;
     withoutMeshes["world"].erase("meshes");
     scenario.recordTrajectories = recordTrajectories;
-    return buildScenario(withoutMeshes, std::filesystem::path(), scenario, diagnostics) && addDemoLevel(scenario, reason);
+    return buildScenario(withoutMeshes, std::filesystem::path(), scenario, diagnostics) &&
+           addDemoLevel(scenario, reason);
 }
 
 std::string text3(const foresight::RVec3& v) { return vectorText(v); }
@@ -300,8 +321,10 @@ std::string aiTable(const DemoAi& ai, const Scenario& scenario, const std::vecto
     danger.blastRadius = kBlastRadius;
     foresight::DangerZone zone;
     if (foresight::computeDangerZone(danger, zone) != foresight::Status::Ok) return text + "danger: no zone\n";
-    dangerZones.push_back(Json{{"id", "planned_throw"}, {"center", jsonPosition(zone.center)},
-                               {"radius", jsonFloat(zone.radius)}, {"time", jsonFloat(zone.time)}});
+    dangerZones.push_back(Json{{"id", "planned_throw"},
+                               {"center", jsonPosition(zone.center)},
+                               {"radius", jsonFloat(zone.radius)},
+                               {"time", jsonFloat(zone.time)}});
     std::snprintf(buffer, sizeof buffer, "danger   the planned grenade explodes at %.1f s at %s (blast %.0f m):\n",
                   static_cast<double>(zone.time), text3(zone.center).c_str(), static_cast<double>(zone.radius));
     text += buffer;
@@ -310,16 +333,17 @@ std::string aiTable(const DemoAi& ai, const Scenario& scenario, const std::vecto
         foresight::DangerStart start;
         foresight::ClosestApproach closest;
         if (foresight::findDangerStart(danger, guard, start) != foresight::Status::Ok ||
-            foresight::findClosestPathApproach(danger.trajectory, guard, 0.0f, kThrowFuse, closest) != foresight::Status::Ok)
+            foresight::findClosestPathApproach(danger.trajectory, guard, 0.0f, kThrowFuse, closest) !=
+                foresight::Status::Ok)
             continue;
         const double away = glm::length(glm::dvec3(guard) - glm::dvec3(zone.center));
         if (start.ever)
             std::snprintf(buffer, sizeof buffer, "         %s, %.2f m away: unsafe from %.2f s, must leave\n",
                           kGuardNames[g], away, static_cast<double>(start.time));
         else
-            std::snprintf(buffer, sizeof buffer, "         %s, %.2f m away: safe (the grenade passes %.2f m off at %.2f s)\n",
-                          kGuardNames[g], away, static_cast<double>(closest.distance),
-                          static_cast<double>(closest.time));
+            std::snprintf(buffer, sizeof buffer,
+                          "         %s, %.2f m away: safe (the grenade passes %.2f m off at %.2f s)\n", kGuardNames[g],
+                          away, static_cast<double>(closest.distance), static_cast<double>(closest.time));
         text += buffer;
     }
 
@@ -342,7 +366,8 @@ std::string aiTable(const DemoAi& ai, const Scenario& scenario, const std::vecto
     foresight::VehicleContact contact;
     foresight::ClosestApproach closest;
     if (foresight::findVehicleContact(vehicle, pedestrian, carPrediction->time, {}, contact) != foresight::Status::Ok ||
-        foresight::findClosestVehicleApproach(vehicle, pedestrian, carPrediction->time, {}, closest) != foresight::Status::Ok)
+        foresight::findClosestVehicleApproach(vehicle, pedestrian, carPrediction->time, {}, closest) !=
+            foresight::Status::Ok)
         return text;
     if (contact.contact)
         std::snprintf(buffer, sizeof buffer,
@@ -357,7 +382,7 @@ std::string aiTable(const DemoAi& ai, const Scenario& scenario, const std::vecto
     return text;
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -378,7 +403,7 @@ bool demoInput(Json& input, DemoAi& ai, std::string& error) {
     return true;
 }
 
-} // namespace
+}  // namespace
 
 Json demoScenario() {
     Json input;
@@ -422,8 +447,8 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, co
     }
     if (scenarioFile == "-") {
         std::cerr << "foresight demo: the scenario's world.meshes[0] is " << kDemoLevelFile
-                  << ", relative to the scenario file: write it there with `foresight level --obj "
-                  << kDemoLevelFile << "`\n";
+                  << ", relative to the scenario file: write it there with `foresight level --obj " << kDemoLevelFile
+                  << "`\n";
     } else if (!scenarioFile.empty()) {
         const std::filesystem::path mesh = std::filesystem::path(scenarioFile).parent_path() / kDemoLevelFile;
         if (!foresight_level::writeObj(foresight_level::makeDemoLevel(), mesh, reason)) {
@@ -460,4 +485,4 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, co
     return 0;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -36,4 +36,4 @@ int demoCommand(const std::string& jsonFile, const std::string& scenarioFile, co
 /// Where `foresight demo` writes its viewer page unless told otherwise.
 inline constexpr const char* kDemoHtmlFile = "foresight-demo.html";
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -30,7 +30,8 @@ int levelCommand(const LevelOptions& options) {
             size[axis] = value;
         }
     }
-    const foresight_level::LevelMesh mesh = room ? foresight_level::makeClosedRoom(size) : foresight_level::makeDemoLevel();
+    const foresight_level::LevelMesh mesh =
+        room ? foresight_level::makeClosedRoom(size) : foresight_level::makeDemoLevel();
     const auto extensionIs = [](const std::string& file, const char* wanted) {
         std::string extension = std::filesystem::path(file).extension().string();
         for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -74,4 +75,4 @@ int levelCommand(const LevelOptions& options) {
     return 0;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -9,11 +9,11 @@ namespace foresight_cli {
 
 /// Options of `foresight level`.
 struct LevelOptions {
-    std::string objFile;          ///< Wavefront OBJ output, or empty.
-    std::string gltfFile;         ///< glTF (.gltf, JSON with the buffer embedded) output, or empty.
-    std::string glbFile;          ///< binary glTF (.glb) output, or empty.
-    bool room = false;            ///< the closed room instead of the courtyard.
-    std::vector<double> roomSize; ///< the room's size (3 numbers, implies `room`) [Units: m].
+    std::string objFile;           ///< Wavefront OBJ output, or empty.
+    std::string gltfFile;          ///< glTF (.gltf, JSON with the buffer embedded) output, or empty.
+    std::string glbFile;           ///< binary glTF (.glb) output, or empty.
+    bool room = false;             ///< the closed room instead of the courtyard.
+    std::vector<double> roomSize;  ///< the room's size (3 numbers, implies `room`) [Units: m].
 };
 
 /// `foresight level`: writes the demo level (or the closed room) to every file given, then
@@ -22,4 +22,4 @@ struct LevelOptions {
 /// with a message naming the file.
 int levelCommand(const LevelOptions& options);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -29,9 +29,9 @@ namespace ns = netsim;
 
 /// The models run when --models is not given: no dead reckoning (STATIC: every move beyond the
 /// threshold is an update), then the DIS models a game would pick.
-const std::vector<DeadReckoningAlgorithm> kDefaultModels = {
-    DeadReckoningAlgorithm::Static, DeadReckoningAlgorithm::Fpw, DeadReckoningAlgorithm::Rvw,
-    DeadReckoningAlgorithm::Rpb, DeadReckoningAlgorithm::Rvb};
+const std::vector<DeadReckoningAlgorithm> kDefaultModels = {DeadReckoningAlgorithm::Static, DeadReckoningAlgorithm::Fpw,
+                                                            DeadReckoningAlgorithm::Rvw, DeadReckoningAlgorithm::Rpb,
+                                                            DeadReckoningAlgorithm::Rvb};
 
 bool fail(const std::string& message) {
     std::cerr << "foresight netsim: " << message << '\n';
@@ -42,9 +42,9 @@ bool fail(const std::string& message) {
 bool inRange(const char* option, double value, double low, double high, bool lowOpen, const char* unit) {
     const bool ok = std::isfinite(value) && (lowOpen ? value > low : value >= low) && value <= high;
     if (ok) return true;
-    return fail(std::string(option) + " must be " + (lowOpen ? "> " : ">= ") + shortNumber(low) + " and <= " +
-                shortNumber(high) + (unit[0] ? std::string(" ") + unit : std::string()) + " (got " + shortNumber(value) +
-                ")");
+    return fail(std::string(option) + " must be " + (lowOpen ? "> " : ">= ") + shortNumber(low) +
+                " and <= " + shortNumber(high) + (unit[0] ? std::string(" ") + unit : std::string()) + " (got " +
+                shortNumber(value) + ")");
 }
 
 bool parseLoss(const std::string& text, double& loss) {
@@ -78,11 +78,12 @@ std::vector<std::string> splitList(const std::vector<std::string>& items) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& settings) {
     if (!inRange("--duration", o.duration, 0, ns::kMaxDuration, true, "s") ||
-        !inRange("--latency", o.latency, 0, 10000, false, "ms") || !inRange("--jitter", o.jitter, 0, 10000, false, "ms") ||
+        !inRange("--latency", o.latency, 0, 10000, false, "ms") ||
+        !inRange("--jitter", o.jitter, 0, 10000, false, "ms") ||
         !inRange("--send-rate", o.sendRate, 1, 1000, false, "Hz") ||
         !inRange("--render-rate", o.renderRate, 1, 1000, false, "Hz") ||
         !inRange("--position-threshold", o.positionThreshold, 0, 1e6, true, "m") ||
@@ -97,8 +98,10 @@ bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& setting
         return false;
     if (o.csvGiven && o.csvFile.empty()) return fail("--csv: expected a file name, got \"\"");
     // An option given with nothing in it (--models '') is a mistake, not a request for the default.
-    for (const auto& [option, items] : {std::pair<const char*, const std::vector<std::string>*>{"--trajectory", &o.trajectories},
-                                        {"--models", &o.models}, {"--smoothing", &o.smoothings}})
+    for (const auto& [option, items] :
+         {std::pair<const char*, const std::vector<std::string>*>{"--trajectory", &o.trajectories},
+          {"--models", &o.models},
+          {"--smoothing", &o.smoothings}})
         if (!items->empty() && splitList(*items).empty())
             return fail(std::string(option) + ": expected a name or a comma-separated list, got \"\"");
     {
@@ -108,13 +111,14 @@ bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& setting
         const auto result = std::from_chars(text.data(), text.data() + text.size(), seed);
         if (text.empty() || text.front() == '-' || text.front() == '+' || result.ec != std::errc() ||
             result.ptr != text.data() + text.size())
-            return fail("--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"" + text + "\"");
+            return fail("--seed: expected an unsigned 64-bit integer (0 to 18446744073709551615), got \"" + text +
+                        "\"");
         settings.link.seed = seed;
     }
     // The sender sends when the receivers' extrapolation drifts, seconds apart on a smooth
     // path: a receiver that stops extrapolating after Source's 0.25 s would stand still.
     settings.receiver.extrapolationLimit = !o.extrapolationLimitGiven ? std::numeric_limits<float>::infinity()
-                                                                       : static_cast<float>(o.extrapolationLimit / 1000);
+                                                                      : static_cast<float>(o.extrapolationLimit / 1000);
     settings.receiver.teleportDistance = static_cast<float>(o.teleportDistance);
     settings.duration = o.duration;
     settings.sendRate = o.sendRate;
@@ -141,7 +145,8 @@ bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& setting
     if (models.empty()) settings.models = kDefaultModels;
     for (const auto& name : models) {
         std::string upper = name;
-        std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        std::transform(upper.begin(), upper.end(), upper.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
         if (upper == "ALL") {
             for (int a = 1; a <= foresight::kDeadReckoningAlgorithmCount; ++a)
                 settings.models.push_back(static_cast<DeadReckoningAlgorithm>(a));
@@ -149,7 +154,8 @@ bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& setting
         }
         DeadReckoningAlgorithm algorithm;
         if (!foresight::findDeadReckoningAlgorithm(upper, algorithm))
-            return fail("--models: unknown model \"" + name + "\" (expected STATIC, FPW, RPW, RVW, FVW, FPB, RPB, RVB, FVB or all)");
+            return fail("--models: unknown model \"" + name +
+                        "\" (expected STATIC, FPW, RPW, RVW, FVW, FPB, RPB, RVB, FVB or all)");
         if (std::find(settings.models.begin(), settings.models.end(), algorithm) == settings.models.end())
             settings.models.push_back(algorithm);
     }
@@ -164,7 +170,8 @@ bool buildNetsimSettings(const NetsimOptions& o, ns::SimulationSettings& setting
         }
         ns::Display display;
         if (!ns::findDisplay(name, display))
-            return fail("--smoothing: unknown smoothing \"" + name + "\" (expected snap, linear, pvb, decay, interpolate or all)");
+            return fail("--smoothing: unknown smoothing \"" + name +
+                        "\" (expected snap, linear, pvb, decay, interpolate or all)");
         if (std::find(settings.displays.begin(), settings.displays.end(), display) == settings.displays.end())
             settings.displays.push_back(display);
     }
@@ -199,14 +206,15 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
     settings["loss"] = jsonDouble(s.link.loss);
     settings["seed"] = s.link.seed;
     settings["position_threshold"] = jsonFloat(s.sender.positionThreshold);
-    settings["orientation_threshold"] = rounded(static_cast<double>(s.sender.orientationThreshold) * 180 / 3.14159265358979323846);
+    settings["orientation_threshold"] =
+        rounded(static_cast<double>(s.sender.orientationThreshold) * 180 / 3.14159265358979323846);
     settings["heartbeat"] = jsonFloat(s.sender.heartbeat);
     settings["blend_time"] = jsonFloat(s.receiver.blendTime);
     settings["decay_half_life"] = jsonFloat(s.receiver.decayHalfLife);
     settings["interpolation_delay"] = jsonFloat(s.receiver.interpolationDelay);
     // null: no limit (JSON has no infinity).
-    settings["extrapolation_limit"] = std::isinf(s.receiver.extrapolationLimit) ? Json(nullptr)
-                                                                                : jsonFloat(s.receiver.extrapolationLimit);
+    settings["extrapolation_limit"] =
+        std::isinf(s.receiver.extrapolationLimit) ? Json(nullptr) : jsonFloat(s.receiver.extrapolationLimit);
     settings["teleport_distance"] = jsonFloat(s.receiver.teleportDistance);
     settings["jump_threshold"] = jsonDouble(s.jumpThreshold);
     Json trajectories = Json::array();
@@ -257,70 +265,83 @@ std::string reportJson(const std::vector<ns::TrajectoryResult>& results, const n
     return formatJson(document);
 }
 
-} // namespace
+}  // namespace
 
 CLI::App* addNetsimCommand(CLI::App& app, NetsimOptions& o) {
-    CLI::App* netsim = app.add_subcommand(
-        "netsim", "Send trajectories through a simulated link (latency, jitter, loss) with dead reckoning and "
-                  "measure what receivers show");
-    netsim->add_option("--trajectory", o.trajectories,
-                       "built-in trajectories: run-strafe, slalom, circuit, aircraft-turn or all (default: all; "
-                       "comma-separated or repeated)")
+    CLI::App* netsim =
+        app.add_subcommand("netsim",
+                           "Send trajectories through a simulated link (latency, jitter, loss) with dead reckoning and "
+                           "measure what receivers show");
+    netsim
+        ->add_option("--trajectory", o.trajectories,
+                     "built-in trajectories: run-strafe, slalom, circuit, aircraft-turn or all (default: all; "
+                     "comma-separated or repeated)")
         ->type_name("NAME");
     netsim->add_option("--csv", o.csvFile, "a trajectory from CSV: t,x,y,z[,qw,qx,qy,qz][,vx,vy,vz][,wx,wy,wz]")
         ->type_name("FILE");
-    CLI::Option* duration = netsim->add_option("--duration", o.duration, "simulated seconds (default 60, at most 3600)")
-                                ->type_name("S");
+    CLI::Option* duration =
+        netsim->add_option("--duration", o.duration, "simulated seconds (default 60, at most 3600)")->type_name("S");
     netsim->add_option("--latency", o.latency, "one-way delay in ms (default 100)")->type_name("MS");
-    netsim->add_option("--jitter", o.jitter, "delay varies uniformly by +/- this many ms (default 20)")->type_name("MS");
+    netsim->add_option("--jitter", o.jitter, "delay varies uniformly by +/- this many ms (default 20)")
+        ->type_name("MS");
     netsim->add_option("--loss", o.loss, "fraction of packets lost, 0.02 or 2% (default 2%)")->type_name("P");
     netsim->add_option("--seed", o.seed, "the link's random seed (default 1)")->type_name("N");
     netsim->add_option("--send-rate", o.sendRate, "sender ticks per second (default 30)")->type_name("HZ");
     netsim->add_option("--render-rate", o.renderRate, "receiver frames per second (default 60)")->type_name("HZ");
-    netsim->add_option("--sender", o.sender,
-                       "thresholds: dead reckoning, send when the error crosses a threshold (default); snapshots: "
-                       "send every tick (with --send-rate 20: Source's snapshots)")
+    netsim
+        ->add_option("--sender", o.sender,
+                     "thresholds: dead reckoning, send when the error crosses a threshold (default); snapshots: "
+                     "send every tick (with --send-rate 20: Source's snapshots)")
         ->type_name("KIND");
-    netsim->add_option("--models", o.models,
-                       "DIS models, comma-separated, or all (default STATIC,FPW,RVW,RPB,RVB)")
+    netsim->add_option("--models", o.models, "DIS models, comma-separated, or all (default STATIC,FPW,RVW,RPB,RVB)")
         ->type_name("LIST");
-    netsim->add_option("--smoothing", o.smoothings,
-                       "receivers: snap, linear, pvb, decay, interpolate, comma-separated, or all (default all)")
+    netsim
+        ->add_option("--smoothing", o.smoothings,
+                     "receivers: snap, linear, pvb, decay, interpolate, comma-separated, or all (default all)")
         ->type_name("LIST");
     netsim->add_option("--position-threshold", o.positionThreshold, "the sender's position threshold in m (default 1)")
         ->type_name("M");
-    netsim->add_option("--orientation-threshold", o.orientationThreshold,
-                       "the sender's orientation threshold in degrees (default 3)")
+    netsim
+        ->add_option("--orientation-threshold", o.orientationThreshold,
+                     "the sender's orientation threshold in degrees (default 3)")
         ->type_name("DEG");
     netsim->add_option("--heartbeat", o.heartbeat, "send at least this often, in s (default 5)")->type_name("S");
-    netsim->add_option("--jump-threshold", o.jumpThreshold,
-                       "a frame whose shown motion differs from the true motion by more than this many m is a "
-                       "visible jump (default 0.25)")
+    netsim
+        ->add_option("--jump-threshold", o.jumpThreshold,
+                     "a frame whose shown motion differs from the true motion by more than this many m is a "
+                     "visible jump (default 0.25)")
         ->type_name("M");
-    netsim->add_option("--blend-time", o.blendTime, "linear and pvb blend duration in ms (default 200)")->type_name("MS");
+    netsim->add_option("--blend-time", o.blendTime, "linear and pvb blend duration in ms (default 200)")
+        ->type_name("MS");
     netsim->add_option("--decay-half-life", o.decayHalfLife, "decay's half-life in ms (default 100)")->type_name("MS");
     CLI::Option* interpolationDelay =
-        netsim->add_option("--interpolation-delay", o.interpolationDelay,
-                           "how far in the past interpolate renders, in ms (default latency + jitter + 100)")
+        netsim
+            ->add_option("--interpolation-delay", o.interpolationDelay,
+                         "how far in the past interpolate renders, in ms (default latency + jitter + 100)")
             ->type_name("MS");
     CLI::Option* extrapolationLimit =
-        netsim->add_option("--extrapolation-limit", o.extrapolationLimit,
-                           "receivers hold after extrapolating this many ms past the newest update (default: never)")
+        netsim
+            ->add_option("--extrapolation-limit", o.extrapolationLimit,
+                         "receivers hold after extrapolating this many ms past the newest update (default: never)")
             ->type_name("MS");
-    netsim->add_option("--teleport-distance", o.teleportDistance,
-                       "receivers snap instead of blending a correction (interpolate: an update off the previous "
-                       "one's prediction) longer than this many m (default 10)")
+    netsim
+        ->add_option("--teleport-distance", o.teleportDistance,
+                     "receivers snap instead of blending a correction (interpolate: an update off the previous "
+                     "one's prediction) longer than this many m (default 10)")
         ->type_name("M");
     netsim->add_flag("--json", o.json, "write every result as JSON instead of the table");
     netsim->add_flag("--markdown", o.markdown, "write the summary table of docs/results.md (Markdown) instead");
-    netsim->add_option("--svg", o.svgFile, "also write position error over time (first trajectory, first model other than STATIC) to FILE")
+    netsim
+        ->add_option("--svg", o.svgFile,
+                     "also write position error over time (first trajectory, first model other than STATIC) to FILE")
         ->type_name("FILE");
     // CLI11 reads an empty number ("--latency ''") as 0: the numeric options refuse it (the
     // others say so in their own parsers).
     const CLI::Validator number(
         [](std::string& value) {
-            return value.find_first_not_of(" \t") == std::string::npos ? std::string("expected a number, got \"") + value + "\""
-                                                                       : std::string();
+            return value.find_first_not_of(" \t") == std::string::npos
+                       ? std::string("expected a number, got \"") + value + "\""
+                       : std::string();
         },
         "", "number");
     for (CLI::Option* option : netsim->get_options()) {
@@ -348,7 +369,8 @@ int netsimCommand(NetsimOptions options) {
     // "all" expanded, each trajectory once (as --models does for models), in the order given.
     std::vector<std::string> wanted;
     for (const auto& name : names) {
-        std::vector<std::string> expanded = name == "all" ? ns::builtinTrajectoryNames() : std::vector<std::string>{name};
+        std::vector<std::string> expanded =
+            name == "all" ? ns::builtinTrajectoryNames() : std::vector<std::string>{name};
         for (auto& n : expanded)
             if (std::find(wanted.begin(), wanted.end(), n) == wanted.end()) wanted.push_back(std::move(n));
     }
@@ -356,7 +378,8 @@ int netsimCommand(NetsimOptions options) {
     for (const auto& name : wanted) {
         ns::Trajectory t;
         if (!ns::makeBuiltinTrajectory(name, settings.duration, t)) {
-            fail("--trajectory: unknown trajectory \"" + name + "\" (expected run-strafe, slalom, circuit, aircraft-turn or all)");
+            fail("--trajectory: unknown trajectory \"" + name +
+                 "\" (expected run-strafe, slalom, circuit, aircraft-turn or all)");
             return 2;
         }
         trajectories.push_back(std::move(t));
@@ -374,8 +397,8 @@ int netsimCommand(NetsimOptions options) {
             return 2;
         }
         if (options.durationGiven && t.end - t.start < settings.duration)
-            std::cerr << "warning: " << name << " covers " << shortNumber(t.end - t.start) << " s; simulating that, not "
-                      << shortNumber(settings.duration) << " s\n";
+            std::cerr << "warning: " << name << " covers " << shortNumber(t.end - t.start)
+                      << " s; simulating that, not " << shortNumber(settings.duration) << " s\n";
         trajectories.push_back(std::move(t));
     }
 
@@ -384,13 +407,13 @@ int netsimCommand(NetsimOptions options) {
     for (std::size_t i = 0; i < trajectories.size(); ++i) {
         ns::TrajectoryResult result;
         std::string error;
-        const bool ok = ns::simulateTrajectory(
-            trajectories[i], settings, i == 0 && !options.svgFile.empty(), result, error,
-            [&](std::size_t done, std::size_t total) {
-                if (showProgress)
-                    std::fprintf(stderr, "\rnetsim: %s (%zu/%zu), model %zu/%zu   ", trajectories[i].name.c_str(), i + 1,
-                                 trajectories.size(), done, total);
-            });
+        const bool ok = ns::simulateTrajectory(trajectories[i], settings, i == 0 && !options.svgFile.empty(), result,
+                                               error, [&](std::size_t done, std::size_t total) {
+                                                   if (showProgress)
+                                                       std::fprintf(stderr, "\rnetsim: %s (%zu/%zu), model %zu/%zu   ",
+                                                                    trajectories[i].name.c_str(), i + 1,
+                                                                    trajectories.size(), done, total);
+                                               });
         if (!ok) {
             if (showProgress) std::fprintf(stderr, "\n");
             std::cerr << "foresight netsim: " << trajectories[i].name << ": " << error << '\n';
@@ -423,4 +446,4 @@ int netsimCommand(NetsimOptions options) {
     return 0;
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

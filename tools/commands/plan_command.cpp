@@ -25,7 +25,8 @@ void checkSetting(Fields& m, const char* key, Set&& set) {
 void readThrow(const Json& item, const std::string& path, const foresight::Vec3& gravity,
                std::vector<ThrowRequest>& throws, Diagnostics& d) {
     if (!item.is_object()) {
-        d.error(path, "expected an object {\"start\", \"target\", \"fuse\", \"max_speed\", ...}, got " + typeName(item));
+        d.error(path,
+                "expected an object {\"start\", \"target\", \"fuse\", \"max_speed\", ...}, got " + typeName(item));
         return;
     }
     const std::size_t errorsBefore = d.errors.size();
@@ -41,8 +42,8 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
     m.positive("max_speed", true, true, r.maxSpeed);
     const bool okMin = m.positive("min_speed", false, false, r.minSpeed);
     if (okMin && r.maxSpeed > 0.0f && r.minSpeed > r.maxSpeed) {
-        d.error(m.at("min_speed"), "must be <= max_speed (got " + shortNumber(static_cast<double>(r.minSpeed)) +
-                                       " > " + shortNumber(static_cast<double>(r.maxSpeed)) + ")");
+        d.error(m.at("min_speed"), "must be <= max_speed (got " + shortNumber(static_cast<double>(r.minSpeed)) + " > " +
+                                       shortNumber(static_cast<double>(r.maxSpeed)) + ")");
     }
     m.positive("acceptance_radius", false, true, r.acceptanceRadius);
     m.integer("plans", false, 1u, 32u, r.maxPlans);
@@ -61,7 +62,8 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
     if (m.floatNumber("step", false, s.step)) checkSetting(m, "step", [&](auto& p) { p.step = s.step; });
     if (m.floatNumber("restitution", false, s.restitution))
         checkSetting(m, "restitution", [&](auto& p) { p.restitution = s.restitution; });
-    if (m.floatNumber("friction", false, s.friction)) checkSetting(m, "friction", [&](auto& p) { p.friction = s.friction; });
+    if (m.floatNumber("friction", false, s.friction))
+        checkSetting(m, "friction", [&](auto& p) { p.friction = s.friction; });
     if (m.floatNumber("radius", false, s.radius)) checkSetting(m, "radius", [&](auto& p) { p.radius = s.radius; });
     m.integer("max_predictions", false, 1u, 100000u, r.budget.maxPredictions);
     m.boolean("trajectory", false, t.trajectory);
@@ -84,8 +86,7 @@ void readThrow(const Json& item, const std::string& path, const foresight::Vec3&
     if (status != Status::Ok) {
         std::string message = foresight::statusMessage(status);
         if (status == Status::TooManySteps)
-            message += ": fuse / step = " +
-                       shortNumber(static_cast<double>(r.fuseTime) / static_cast<double>(s.step)) +
+            message += ": fuse / step = " + shortNumber(static_cast<double>(r.fuseTime) / static_cast<double>(s.step)) +
                        " steps, the cap is " + std::to_string(s.maxSteps);
         d.error(path, message);
         return;
@@ -98,7 +99,7 @@ const foresight::CollisionWorld* collisionWorld(const Scenario& world) {
     return world.world.shapeCount() > 0 ? &world.world : nullptr;
 }
 
-} // namespace
+}  // namespace
 
 bool buildPlanDocument(const Json& document, const std::filesystem::path& baseDirectory, Scenario& world,
                        std::vector<ThrowRequest>& throws, Diagnostics& diagnostics) {
@@ -234,4 +235,4 @@ int planCommand(const std::string& file) {
     return writeJsonResult(planResultDocument(throws, outcomes));
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

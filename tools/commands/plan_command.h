@@ -16,17 +16,17 @@ namespace foresight_cli {
 
 /// One validated entry of `throws`.
 struct ThrowRequest {
-    std::string path;                  ///< "throws[i]", for messages.
-    Json id;                           ///< echoed back; null when absent.
+    std::string path;  ///< "throws[i]", for messages.
+    Json id;           ///< echoed back; null when absent.
     foresight::ThrowPlanRequest request;
-    bool trajectory = false;           ///< print each plan's trajectory.
+    bool trajectory = false;  ///< print each plan's trajectory.
 };
 
 /// What one throw produced.
 struct ThrowOutcome {
     foresight::ThrowPlanResult result;
-    std::vector<foresight::ThrowPlan> plans;                          ///< result.planCount
-    std::vector<std::vector<foresight::TrajectoryPoint>> trajectories; ///< per plan, if asked
+    std::vector<foresight::ThrowPlan> plans;                            ///< result.planCount
+    std::vector<std::vector<foresight::TrajectoryPoint>> trajectories;  ///< per plan, if asked
 };
 
 /// Reads a plan document: the scenario's world (built with buildScenario) and the throws.
@@ -35,8 +35,8 @@ bool buildPlanDocument(const Json& document, const std::filesystem::path& baseDi
                        std::vector<ThrowRequest>& throws, Diagnostics& diagnostics);
 
 /// Plans every throw; refusals of the library become errors. Returns diagnostics.ok().
-bool runPlans(const Scenario& world, const std::vector<ThrowRequest>& throws,
-              std::vector<ThrowOutcome>& outcomes, Diagnostics& diagnostics);
+bool runPlans(const Scenario& world, const std::vector<ThrowRequest>& throws, std::vector<ThrowOutcome>& outcomes,
+              Diagnostics& diagnostics);
 
 /// The output document {"throws": [...]}, in input order.
 Json planResultDocument(const std::vector<ThrowRequest>& throws, const std::vector<ThrowOutcome>& outcomes);
@@ -45,4 +45,4 @@ Json planResultDocument(const std::vector<ThrowRequest>& throws, const std::vect
 /// on standard output (invalid input, unreadable file or mesh).
 int planCommand(const std::string& file);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

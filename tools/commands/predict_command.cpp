@@ -29,12 +29,12 @@ int predictCommand(const std::string& file, const PictureOptions& pictures) {
     printDiagnostics(diagnostics, std::cerr);
     if (!ok) return 2;
     std::string error;
-    if (pictures.wanted() &&
-        !writePictures(pictures, pictureDocument(scenario, results, "foresight: " + name), "foresight: " + name, error)) {
+    if (pictures.wanted() && !writePictures(pictures, pictureDocument(scenario, results, "foresight: " + name),
+                                            "foresight: " + name, error)) {
         std::cerr << error << '\n';
         return 2;
     }
     return writeJsonResult(resultDocument(scenario, results));
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

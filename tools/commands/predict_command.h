@@ -15,4 +15,4 @@ namespace foresight_cli {
 /// results (picture.h); a picture that cannot be written is an error (status 2).
 int predictCommand(const std::string& file, const PictureOptions& pictures);
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

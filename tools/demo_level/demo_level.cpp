@@ -32,9 +32,7 @@ public:
     /// `snapToGrid`: round every vertex to a multiple of 1/256 m (exact in float; see the header).
     MeshBuilder(LevelMesh& mesh, bool snapToGrid) : mMesh(mesh), mSnap(snapToGrid) {}
 
-    void beginPart(std::string name) {
-        mPart = LevelMesh::Part{std::move(name), triangleCount(), 0};
-    }
+    void beginPart(std::string name) { mPart = LevelMesh::Part{std::move(name), triangleCount(), 0}; }
     void endPart() {
         mPart.triangleCount = triangleCount() - mPart.firstTriangle;
         mMesh.parts.push_back(std::move(mPart));
@@ -129,8 +127,8 @@ private:
     std::uint32_t triangleCount() const { return static_cast<std::uint32_t>(mMesh.indices.size() / 3); }
 
     // Corner i of a box is -/+ along x, y, z by its bits 0, 1, 2; each face is a loop.
-    static inline const std::vector<std::vector<int>> kBoxFaces = {
-        {0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    static inline const std::vector<std::vector<int>> kBoxFaces = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                                                   {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
 
     LevelMesh& mMesh;
     bool mSnap;
@@ -212,7 +210,7 @@ std::string lowerExtension(const std::filesystem::path& path) {
     for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<unsigned char>((value >> shift) & 0xffu));
 }
 
-} // namespace
+}  // namespace
 
 LevelMesh makeDemoLevel() {
     LevelMesh mesh;
@@ -295,7 +293,8 @@ LevelMesh makeClosedRoom(const glm::dvec3& size) {
     MeshBuilder builder(mesh, false);
     const dvec3 lo(-0.5 * size.x, 0.0, -0.5 * size.z);
     const dvec3 hi(0.5 * size.x, size.y, 0.5 * size.z);
-    for (int i = 0; i < 8; ++i) builder.vertex(dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z));
+    for (int i = 0; i < 8; ++i)
+        builder.vertex(dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z));
     // Each face with the direction its normal must take (into the room).
     const std::array<std::pair<const char*, std::pair<std::vector<std::uint32_t>, dvec3>>, 6> faces{{
         {"floor", {{0, 1, 5, 4}, dvec3(0, 1, 0)}},
@@ -446,4 +445,4 @@ bool writeGltf(const LevelMesh& mesh, const std::filesystem::path& path, std::st
 #endif
 }
 
-} // namespace foresight_level
+}  // namespace foresight_level

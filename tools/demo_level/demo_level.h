@@ -21,13 +21,13 @@ namespace foresight_level {
 struct LevelMesh {
     /// A named piece of the mesh: the triangles [firstTriangle, firstTriangle + triangleCount).
     struct Part {
-        std::string name;                ///< e.g. "floor", "wall_north", "stairs".
-        std::uint32_t firstTriangle = 0; ///< index of the part's first triangle.
-        std::uint32_t triangleCount = 0; ///< number of triangles of the part.
+        std::string name;                 ///< e.g. "floor", "wall_north", "stairs".
+        std::uint32_t firstTriangle = 0;  ///< index of the part's first triangle.
+        std::uint32_t triangleCount = 0;  ///< number of triangles of the part.
     };
-    std::vector<glm::dvec3> vertices;   ///< [Units: m]
-    std::vector<std::uint32_t> indices; ///< 3 per triangle
-    std::vector<Part> parts;            ///< named pieces ("floor", "wall_north", "stairs", ...), in order
+    std::vector<glm::dvec3> vertices;    ///< [Units: m]
+    std::vector<std::uint32_t> indices;  ///< 3 per triangle
+    std::vector<Part> parts;             ///< named pieces ("floor", "wall_north", "stairs", ...), in order
     /// Number of triangles (indices / 3).
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
@@ -81,4 +81,4 @@ bool writeObj(const LevelMesh& mesh, const std::filesystem::path& path, std::str
 /// Errors as writeObj.
 bool writeGltf(const LevelMesh& mesh, const std::filesystem::path& path, std::string& error);
 
-} // namespace foresight_level
+}  // namespace foresight_level

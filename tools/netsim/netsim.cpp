@@ -136,8 +136,8 @@ struct CharacterMotion {
 };
 
 std::shared_ptr<CharacterMotion> makeRunStrafe(double duration) {
-    constexpr double kSpeed = 6.0;      // m/s
-    constexpr double kRamp = 0.25;      // s: from one direction to the next
+    constexpr double kSpeed = 6.0;  // m/s
+    constexpr double kRamp = 0.25;  // s: from one direction to the next
     // Directions relative to the facing: forward, the diagonals, the strafes, back.
     constexpr std::array<double, 8> kDirections = {0, 45, -45, 90, -90, 135, -135, 180};
     auto motion = std::make_shared<CharacterMotion>();
@@ -162,14 +162,14 @@ std::shared_ptr<CharacterMotion> makeRunStrafe(double duration) {
 // acceleration and angular velocity; the position integrated from the velocity.
 
 struct HeadingMotion {
-    double speed = 20;                 // m/s
-    Profile yawRate;                   // rad/s
-    double slalomAmplitude = 0;        // rad, heading += A sin(W t)
-    double slalomFrequency = 0;        // rad/s (W)
-    Profile climb;                     // rad
+    double speed = 20;           // m/s
+    Profile yawRate;             // rad/s
+    double slalomAmplitude = 0;  // rad, heading += A sin(W t)
+    double slalomFrequency = 0;  // rad/s (W)
+    Profile climb;               // rad
     bool bank = false;
     glm::dvec3 origin{0};
-    std::vector<glm::dvec3> positions; // at k * kQuadratureStep
+    std::vector<glm::dvec3> positions;  // at k * kQuadratureStep
 
     struct Angles {
         double heading, headingRate, climb, climbRate, bank, bankRate;
@@ -187,8 +187,9 @@ struct HeadingMotion {
             // tan(bank) = lateral acceleration / g; a left turn (heading rate > 0 turns +Z
             // towards +X) banks towards +X, which is a negative roll about +Z.
             const double u = speed * std::cos(a.climb) * a.headingRate / kStandardGravity;
-            const double uRate = speed / kStandardGravity *
-                                 (-std::sin(a.climb) * a.climbRate * a.headingRate + std::cos(a.climb) * headingAcceleration);
+            const double uRate =
+                speed / kStandardGravity *
+                (-std::sin(a.climb) * a.climbRate * a.headingRate + std::cos(a.climb) * headingAcceleration);
             a.bank = -std::atan(u);
             a.bankRate = -uRate / (1 + u * u);
         }
@@ -215,12 +216,13 @@ struct HeadingMotion {
         positions[0] = origin;
         for (std::size_t k = 0; k < steps; ++k)
             positions[k + 1] = positions[k] + gauss(static_cast<double>(k) * kQuadratureStep,
-                                                     static_cast<double>(k + 1) * kQuadratureStep);
+                                                    static_cast<double>(k + 1) * kQuadratureStep);
     }
 
     TruthState sample(double t) const {
         TruthState s;
-        const std::size_t k = std::min(static_cast<std::size_t>(std::max(t, 0.0) / kQuadratureStep), positions.size() - 1);
+        const std::size_t k =
+            std::min(static_cast<std::size_t>(std::max(t, 0.0) / kQuadratureStep), positions.size() - 1);
         s.position = positions[k] + gauss(static_cast<double>(k) * kQuadratureStep, t);
         const Angles a = angles(t);
         const double sh = std::sin(a.heading), ch = std::cos(a.heading);
@@ -244,8 +246,8 @@ struct HeadingMotion {
 std::shared_ptr<HeadingMotion> makeSlalom(double duration) {
     auto motion = std::make_shared<HeadingMotion>();
     motion->speed = 20;
-    motion->slalomAmplitude = 0.25;               // rad: about 14 degrees either side
-    motion->slalomFrequency = 2 * kPi / 3.0;      // a left-right cycle every 3 s (cones 30 m apart)
+    motion->slalomAmplitude = 0.25;           // rad: about 14 degrees either side
+    motion->slalomFrequency = 2 * kPi / 3.0;  // a left-right cycle every 3 s (cones 30 m apart)
     motion->integrate(duration);
     return motion;
 }
@@ -307,7 +309,8 @@ struct TableMotion {
     bool hasAngularVelocity = false;
 
     TruthState sample(double t) const {
-        const auto after = std::upper_bound(rows.begin(), rows.end(), t, [](double time, const CsvRow& r) { return time < r.t; });
+        const auto after =
+            std::upper_bound(rows.begin(), rows.end(), t, [](double time, const CsvRow& r) { return time < r.t; });
         std::size_t i = after == rows.begin() ? 0 : static_cast<std::size_t>(after - rows.begin()) - 1;
         i = std::min(i, rows.size() - 2);
         const CsvRow& a = rows[i];
@@ -319,12 +322,14 @@ struct TableMotion {
         out.position = (2 * s3 - 3 * s2 + 1) * a.position + (s3 - 2 * s2 + s) * h * a.velocity +
                        (-2 * s3 + 3 * s2) * b.position + (s3 - s2) * h * b.velocity;
         out.velocity = ((6 * s2 - 6 * s) * a.position + (3 * s2 - 4 * s + 1) * h * a.velocity +
-                        (-6 * s2 + 6 * s) * b.position + (3 * s2 - 2 * s) * h * b.velocity) / h;
+                        (-6 * s2 + 6 * s) * b.position + (3 * s2 - 2 * s) * h * b.velocity) /
+                       h;
         out.acceleration = ((12 * s - 6) * a.position + (6 * s - 4) * h * a.velocity + (-12 * s + 6) * b.position +
-                            (6 * s - 2) * h * b.velocity) / (h * h);
+                            (6 * s - 2) * h * b.velocity) /
+                           (h * h);
         out.orientation = glm::normalize(a.orientation * rotationExp(segmentRotation[i], s * h));
-        out.angularVelocity = hasAngularVelocity ? a.angularVelocity + s * (b.angularVelocity - a.angularVelocity)
-                                                 : segmentRotation[i];
+        out.angularVelocity =
+            hasAngularVelocity ? a.angularVelocity + s * (b.angularVelocity - a.angularVelocity) : segmentRotation[i];
         return out;
     }
 };
@@ -340,7 +345,8 @@ std::vector<std::string_view> splitFields(std::string_view line) {
     std::size_t begin = 0;
     for (;;) {
         const std::size_t comma = line.find(',', begin);
-        fields.push_back(trim(line.substr(begin, comma == std::string_view::npos ? std::string_view::npos : comma - begin)));
+        fields.push_back(
+            trim(line.substr(begin, comma == std::string_view::npos ? std::string_view::npos : comma - begin)));
         if (comma == std::string_view::npos) return fields;
         begin = comma + 1;
     }
@@ -352,10 +358,10 @@ std::string shortValue(double value) {
     return buffer;
 }
 
-constexpr std::array<const char*, 14> kCsvColumns = {"t", "x", "y", "z", "qw", "qx", "qy", "qz",
-                                                      "vx", "vy", "vz", "wx", "wy", "wz"};
+constexpr std::array<const char*, 14> kCsvColumns = {"t",  "x",  "y",  "z",  "qw", "qx", "qy",
+                                                     "qz", "vx", "vy", "vz", "wx", "wy", "wz"};
 
-} // namespace
+}  // namespace
 
 // --------------------------------------------------------------------------------------------
 // Trajectories
@@ -372,8 +378,9 @@ bool makeBuiltinTrajectory(std::string_view name, double duration, Trajectory& o
     t.end = duration;
     if (name == "run-strafe") {
         auto motion = makeRunStrafe(duration);
-        t.description = "a character at 6 m/s changing direction every 0.5 to 1.5 s (0.25 s "
-                        "ramps), strafing and back-pedalling while it looks around";
+        t.description =
+            "a character at 6 m/s changing direction every 0.5 to 1.5 s (0.25 s "
+            "ramps), strafing and back-pedalling while it looks around";
         t.sample = [motion](double time) { return motion->sample(time); };
     } else if (name == "slalom") {
         auto motion = makeSlalom(duration);
@@ -381,13 +388,15 @@ bool makeBuiltinTrajectory(std::string_view name, double duration, Trajectory& o
         t.sample = [motion](double time) { return motion->sample(time); };
     } else if (name == "circuit") {
         auto motion = makeCircuit(duration);
-        t.description = "a car at 20 m/s round a rectangle of 160 m and 80 m straights and 40 m "
-                        "corners (10 m/s^2 sideways)";
+        t.description =
+            "a car at 20 m/s round a rectangle of 160 m and 80 m straights and 40 m "
+            "corners (10 m/s^2 sideways)";
         t.sample = [motion](double time) { return motion->sample(time); };
     } else if (name == "aircraft-turn") {
         auto motion = makeAircraftTurn(duration);
-        t.description = "an aircraft at 120 m/s: straight, a banked 120 degree turn at 5 "
-                        "degrees/s, straight, a 10 degree climb, every minute";
+        t.description =
+            "an aircraft at 120 m/s: straight, a banked 120 degree turn at 5 "
+            "degrees/s, straight, a 10 degree climb, every minute";
         t.sample = [motion](double time) { return motion->sample(time); };
     } else {
         return false;
@@ -429,11 +438,14 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
                                 "\" (expected t, x, y, z and optionally qw, qx, qy, qz, vx, vy, vz, wx, wy, wz)");
                 const std::size_t index = static_cast<std::size_t>(known - kCsvColumns.begin());
                 if (columnOf[index] >= 0)
-                    return fail("column " + std::to_string(i + 1) + ": \"" + std::string(fields[i]) + "\" appears twice");
+                    return fail("column " + std::to_string(i + 1) + ": \"" + std::string(fields[i]) +
+                                "\" appears twice");
                 columnOf[index] = static_cast<int>(i);
             }
             for (std::size_t c = 0; c < 4; ++c)
-                if (columnOf[c] < 0) return fail(std::string("missing required column \"") + kCsvColumns[c] + "\" (the header needs t, x, y, z)");
+                if (columnOf[c] < 0)
+                    return fail(std::string("missing required column \"") + kCsvColumns[c] +
+                                "\" (the header needs t, x, y, z)");
             for (const std::size_t group : {std::size_t{4}, std::size_t{8}, std::size_t{11}}) {
                 const std::size_t size = group == 4 ? 4 : 3;
                 std::size_t present = 0;
@@ -452,7 +464,8 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
         if (motion->rows.size() == kMaxCsvRows)
             return fail("too many rows (the limit is " + std::to_string(kMaxCsvRows) + ")");
         if (fields.size() != columnCount)
-            return fail("expected " + std::to_string(columnCount) + " fields (as the header), got " + std::to_string(fields.size()));
+            return fail("expected " + std::to_string(columnCount) + " fields (as the header), got " +
+                        std::to_string(fields.size()));
         std::array<double, kCsvColumns.size()> values{};
         for (std::size_t c = 0; c < kCsvColumns.size(); ++c) {
             if (columnOf[c] < 0) continue;
@@ -461,7 +474,8 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
             if (field.size() > 1 && field.front() == '+' && field[1] != '-' && field[1] != '+') field.remove_prefix(1);
             double value = 0;
             const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
-            if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() || !std::isfinite(value))
+            if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() ||
+                !std::isfinite(value))
                 return fail("column " + std::to_string(columnOf[c] + 1) + " (\"" + kCsvColumns[c] +
                             "\"): expected a finite number, got \"" + std::string(field) + "\"");
             values[c] = value;
@@ -482,7 +496,8 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
             q.z = values[7];
             const double length = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
             if (!(length > 1e-9) || !std::isfinite(length))
-                return fail("column " + std::to_string(columnOf[4] + 1) + " (\"qw\"): the quaternion qw, qx, qy, qz is zero");
+                return fail("column " + std::to_string(columnOf[4] + 1) +
+                            " (\"qw\"): the quaternion qw, qx, qy, qz is zero");
             q = q / length;
             // The same hemisphere as the previous row: the interpolation takes the short way.
             if (!motion->rows.empty() && glm::dot(q, motion->rows.back().orientation) < 0) q = -q;
@@ -510,7 +525,8 @@ bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Traj
         rows[i].t -= t0;
         if (i > 0 && !(rows[i].t > rows[i - 1].t)) {
             error = fileName + ":" + std::to_string(rows[i].line) + ": times " + shortValue(rows[i - 1].t + t0) +
-                    " and " + shortValue(rows[i].t + t0) + " are too close for their size (less than a double's "
+                    " and " + shortValue(rows[i].t + t0) +
+                    " are too close for their size (less than a double's "
                     "resolution apart once taken from the first row's time)";
             return false;
         }
@@ -608,11 +624,16 @@ const std::vector<Display>& allDisplays() {
 
 const char* displayName(Display display) {
     switch (display) {
-    case Display::Snap: return "snap";
-    case Display::Linear: return "linear";
-    case Display::Projective: return "pvb";
-    case Display::Decay: return "decay";
-    case Display::Interpolate: return "interpolate";
+        case Display::Snap:
+            return "snap";
+        case Display::Linear:
+            return "linear";
+        case Display::Projective:
+            return "pvb";
+        case Display::Decay:
+            return "decay";
+        case Display::Interpolate:
+            return "interpolate";
     }
     return "?";
 }
@@ -669,7 +690,8 @@ foresight::DeadReckoningState stateFor(DeadReckoningAlgorithm model, const Truth
         const glm::dquat inverse = glm::conjugate(truth.orientation);
         const glm::dvec3 bodyVelocity = inverse * truth.velocity;
         state.velocity = foresight::Vec3(bodyVelocity);
-        state.acceleration = foresight::Vec3(inverse * truth.acceleration - glm::cross(truth.angularVelocity, bodyVelocity));
+        state.acceleration =
+            foresight::Vec3(inverse * truth.acceleration - glm::cross(truth.angularVelocity, bodyVelocity));
     } else {
         state.velocity = foresight::Vec3(truth.velocity);
         state.acceleration = foresight::Vec3(truth.acceleration);
@@ -688,11 +710,21 @@ foresight::ReceiverSettings receiverSettingsFor(const foresight::ReceiverSetting
     foresight::ReceiverSettings settings = base;
     settings.mode = foresight::ReceiverMode::Extrapolate;
     switch (display) {
-    case Display::Snap: settings.smoothing = foresight::Smoothing::Snap; break;
-    case Display::Linear: settings.smoothing = foresight::Smoothing::LinearBlend; break;
-    case Display::Projective: settings.smoothing = foresight::Smoothing::ProjectiveVelocityBlending; break;
-    case Display::Decay: settings.smoothing = foresight::Smoothing::ExponentialDecay; break;
-    case Display::Interpolate: settings.mode = foresight::ReceiverMode::Interpolate; break;
+        case Display::Snap:
+            settings.smoothing = foresight::Smoothing::Snap;
+            break;
+        case Display::Linear:
+            settings.smoothing = foresight::Smoothing::LinearBlend;
+            break;
+        case Display::Projective:
+            settings.smoothing = foresight::Smoothing::ProjectiveVelocityBlending;
+            break;
+        case Display::Decay:
+            settings.smoothing = foresight::Smoothing::ExponentialDecay;
+            break;
+        case Display::Interpolate:
+            settings.mode = foresight::ReceiverMode::Interpolate;
+            break;
     }
     return settings;
 }
@@ -703,7 +735,7 @@ std::size_t instantCount(double duration, double rate) {
     return static_cast<std::size_t>(std::floor(duration * rate + 1e-9)) + 1;
 }
 
-} // namespace
+}  // namespace
 
 bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& settings, bool keepSeries,
                         TrajectoryResult& out, std::string& error,
@@ -740,8 +772,8 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
             foresight::SendDecision decision;
             const Status status = sender.update(time, state, decision);
             if (status != Status::Ok) {
-                error = std::string("the sender refused an update at t = ") + shortValue(time) + " s: " +
-                        foresight::statusMessage(status);
+                error = std::string("the sender refused an update at t = ") + shortValue(time) +
+                        " s: " + foresight::statusMessage(status);
                 return false;
             }
             if (settings.snapshots) {
@@ -769,7 +801,8 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
             packets.push_back({k, time, time + delay, state});
         }
         modelResult.updatesPerSecond = static_cast<double>(modelResult.updates) / result.duration;
-        std::stable_sort(packets.begin(), packets.end(), [](const Packet& a, const Packet& b) { return a.arrival < b.arrival; });
+        std::stable_sort(packets.begin(), packets.end(),
+                         [](const Packet& a, const Packet& b) { return a.arrival < b.arrival; });
         std::size_t newestSent = 0;
         for (std::size_t p = 0; p < packets.size(); ++p) {
             if (p > 0 && packets[p].sendIndex < newestSent) ++modelResult.reordered;
@@ -787,8 +820,12 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
         std::vector<Track> tracks;
         tracks.reserve(settings.displays.size());
         for (const Display display : settings.displays) {
-            tracks.push_back(Track{foresight::DeadReckoningReceiver(receiverSettingsFor(settings.receiver, display)), {}, {},
-                                   glm::dvec3(0), false, DisplayResult{}});
+            tracks.push_back(Track{foresight::DeadReckoningReceiver(receiverSettingsFor(settings.receiver, display)),
+                                   {},
+                                   {},
+                                   glm::dvec3(0),
+                                   false,
+                                   DisplayResult{}});
             tracks.back().result.display = display;
             tracks.back().positionErrors.reserve(frameCount);
             tracks.back().orientationErrors.reserve(frameCount);
@@ -797,21 +834,23 @@ bool simulateTrajectory(const Trajectory& trajectory, const SimulationSettings& 
         for (std::size_t j = 0; j < frameCount; ++j) {
             const double time = frameTimes[j];
             for (; next < packets.size() && packets[next].arrival <= time; ++next)
-                for (Track& track : tracks) track.receiver.receive(packets[next].timestamp, packets[next].state, packets[next].arrival);
+                for (Track& track : tracks)
+                    track.receiver.receive(packets[next].timestamp, packets[next].state, packets[next].arrival);
             const TruthState& truth = frameTruth[j];
             for (Track& track : tracks) {
                 foresight::ReceivedPose pose;
                 const Status status = track.receiver.sample(time, pose);
                 if (status == Status::NoUpdate) continue;
                 if (status != Status::Ok) {
-                    error = std::string("the receiver refused a frame at t = ") + shortValue(time) + " s: " +
-                            foresight::statusMessage(status);
+                    error = std::string("the receiver refused a frame at t = ") + shortValue(time) +
+                            " s: " + foresight::statusMessage(status);
                     return false;
                 }
                 const glm::dvec3 shown(pose.position);
                 const double positionError = glm::length(shown - truth.position);
                 track.positionErrors.push_back(positionError);
-                track.orientationErrors.push_back(rotationAngleDegrees(glm::dquat(pose.orientation), truth.orientation));
+                track.orientationErrors.push_back(
+                    rotationAngleDegrees(glm::dquat(pose.orientation), truth.orientation));
                 if (track.hasPrevious) {
                     // A pop, not a stall: the shown entity moved further than the true one did.
                     const double shownStep = glm::length(shown - track.previousShown);
@@ -856,28 +895,29 @@ std::string format(const char* pattern, double value) {
 
 std::string milliseconds(double seconds) { return format("%g", std::round(seconds * 1e6) / 1e3); }
 
-} // namespace
+}  // namespace
 
 std::string settingsLine(const SimulationSettings& settings) {
-    std::string line = "latency " + milliseconds(settings.link.latency) + " ms, jitter +/-" +
-                       milliseconds(settings.link.jitter) + " ms (uniform), loss " +
-                       format("%g", settings.link.loss * 100) + "%, seed " + std::to_string(settings.link.seed) +
-                       "; send " + format("%g", settings.sendRate) + " Hz, render " + format("%g", settings.renderRate) +
-                       (settings.snapshots
-                            ? std::string(" Hz; sender: a snapshot every tick")
-                            : " Hz; sender thresholds " + format("%g", static_cast<double>(settings.sender.positionThreshold)) +
-                                  " m, " +
-                                  format("%g", std::round(static_cast<double>(settings.sender.orientationThreshold) * 180 / kPi * 1e4) / 1e4) +
-                                  " deg, heartbeat " + format("%g", static_cast<double>(settings.sender.heartbeat)) + " s") +
-                       "; blend " + milliseconds(static_cast<double>(settings.receiver.blendTime)) +
-                       " ms, decay half-life " + milliseconds(static_cast<double>(settings.receiver.decayHalfLife)) +
-                       " ms, interpolation delay " +
-                       milliseconds(static_cast<double>(settings.receiver.interpolationDelay)) + " ms, extrapolation limit " +
-                       (std::isinf(settings.receiver.extrapolationLimit)
-                            ? std::string("none")
-                            : milliseconds(static_cast<double>(settings.receiver.extrapolationLimit)) + " ms") +
-                       "; jump > " +
-                       format("%g", settings.jumpThreshold) + " m";
+    std::string line =
+        "latency " + milliseconds(settings.link.latency) + " ms, jitter +/-" + milliseconds(settings.link.jitter) +
+        " ms (uniform), loss " + format("%g", settings.link.loss * 100) + "%, seed " +
+        std::to_string(settings.link.seed) + "; send " + format("%g", settings.sendRate) + " Hz, render " +
+        format("%g", settings.renderRate) +
+        (settings.snapshots
+             ? std::string(" Hz; sender: a snapshot every tick")
+             : " Hz; sender thresholds " + format("%g", static_cast<double>(settings.sender.positionThreshold)) +
+                   " m, " +
+                   format(
+                       "%g",
+                       std::round(static_cast<double>(settings.sender.orientationThreshold) * 180 / kPi * 1e4) / 1e4) +
+                   " deg, heartbeat " + format("%g", static_cast<double>(settings.sender.heartbeat)) + " s") +
+        "; blend " + milliseconds(static_cast<double>(settings.receiver.blendTime)) + " ms, decay half-life " +
+        milliseconds(static_cast<double>(settings.receiver.decayHalfLife)) + " ms, interpolation delay " +
+        milliseconds(static_cast<double>(settings.receiver.interpolationDelay)) + " ms, extrapolation limit " +
+        (std::isinf(settings.receiver.extrapolationLimit)
+             ? std::string("none")
+             : milliseconds(static_cast<double>(settings.receiver.extrapolationLimit)) + " ms") +
+        "; jump > " + format("%g", settings.jumpThreshold) + " m";
     return line;
 }
 
@@ -898,20 +938,20 @@ std::string textTable(const std::vector<TrajectoryResult>& results, const Simula
                 else
                     std::snprintf(errors, sizeof errors, "%9.3f %9.3f %9.3f %9.2f %9.2f", d.position.mean,
                                   d.position.p95, d.position.max, d.orientation.mean, d.orientation.max);
-                std::snprintf(buffer, sizeof buffer,
-                              "%-16s %-6s %-11s %9.2f %s %6llu %6llu %5llu %5llu %5llu\n",
-                              trajectory.name.c_str(), foresight::deadReckoningAlgorithmName(model.model),
-                              displayName(d.display), model.updatesPerSecond, errors,
-                              static_cast<unsigned long long>(d.snaps), static_cast<unsigned long long>(d.jumps),
-                              static_cast<unsigned long long>(model.lost), static_cast<unsigned long long>(model.reordered),
-                              static_cast<unsigned long long>(d.dropped));
+                std::snprintf(
+                    buffer, sizeof buffer, "%-16s %-6s %-11s %9.2f %s %6llu %6llu %5llu %5llu %5llu\n",
+                    trajectory.name.c_str(), foresight::deadReckoningAlgorithmName(model.model), displayName(d.display),
+                    model.updatesPerSecond, errors, static_cast<unsigned long long>(d.snaps),
+                    static_cast<unsigned long long>(d.jumps), static_cast<unsigned long long>(model.lost),
+                    static_cast<unsigned long long>(model.reordered), static_cast<unsigned long long>(d.dropped));
                 text += buffer;
             }
         }
     }
-    text += "\nPosition error: |shown - true| at each rendered frame (interpolate: against the truth at the\n"
-            "render time, so its delay is part of its error). [d]: orientation error in degrees. lost, reord:\n"
-            "updates the link lost or delivered after a later one; drop: updates the receiver dropped.\n";
+    text +=
+        "\nPosition error: |shown - true| at each rendered frame (interpolate: against the truth at the\n"
+        "render time, so its delay is part of its error). [d]: orientation error in degrees. lost, reord:\n"
+        "updates the link lost or delivered after a later one; drop: updates the receiver dropped.\n";
     for (const auto& trajectory : results) text += "- " + trajectory.name + ": " + trajectory.description + "\n";
     return text;
 }
@@ -942,8 +982,8 @@ std::string markdownTable(const std::vector<TrajectoryResult>& results, const Si
         }
     }
     text += "\nEach cell: 95th percentile / maximum position error [m] / visible jumps, over " +
-            format("%g", results.empty() ? settings.duration : results.front().duration) + " s. " + settingsLine(settings) +
-            ".\n";
+            format("%g", results.empty() ? settings.duration : results.front().duration) + " s. " +
+            settingsLine(settings) + ".\n";
     return text;
 }
 
@@ -965,8 +1005,8 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
     const SvgWriter svg(1, false);
 
     std::string out = svg.begin(kWidth, kHeight);
-    const std::string title = "Position error over time: " + result.name + ", " +
-                              foresight::deadReckoningAlgorithmName(model.model);
+    const std::string title =
+        "Position error over time: " + result.name + ", " + foresight::deadReckoningAlgorithmName(model.model);
     out += svg.text(kLeft, "22", "font-size=\"15\" font-weight=\"bold\"", escapeXml(title, false));
     // The settings, wrapped at "; " to fit the width (10 px text, about 5.5 px a character).
     const std::string line = settingsLine(settings);
@@ -991,8 +1031,8 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
     }
     out += svg.text(kLeft + kPlotWidth / 2, kHeight - 12, "font-size=\"12\" text-anchor=\"middle\"", "time [s]");
     out += svg.text("18", kTop + kPlotHeight / 2,
-                    "font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " + svg.number(kTop + kPlotHeight / 2) +
-                        ")\"",
+                    "font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " +
+                        svg.number(kTop + kPlotHeight / 2) + ")\"",
                     "position error [m]");
     const double legendLeft = kLeft + kPlotWidth - 200;
     const auto legendY = [&](std::size_t i) { return kTop + 22 + 16 * static_cast<double>(i); };
@@ -1033,4 +1073,4 @@ std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, con
     return out;
 }
 
-} // namespace foresight_cli::netsim
+}  // namespace foresight_cli::netsim

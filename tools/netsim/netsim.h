@@ -39,20 +39,20 @@ inline constexpr std::size_t kMaxCsvRows = 1000000;
 
 /// The true state of the entity at one time.
 struct TruthState {
-    glm::dvec3 position{0};                           ///< [Units: m], world axes.
-    glm::dquat orientation = glm::identity<glm::dquat>(); ///< body-to-world, unit.
-    glm::dvec3 velocity{0};                           ///< [Units: m/s], world axes.
-    glm::dvec3 acceleration{0};                       ///< [Units: m/s^2], world axes.
-    glm::dvec3 angularVelocity{0};                    ///< [Units: rad/s], body axes.
+    glm::dvec3 position{0};                                ///< [Units: m], world axes.
+    glm::dquat orientation = glm::identity<glm::dquat>();  ///< body-to-world, unit.
+    glm::dvec3 velocity{0};                                ///< [Units: m/s], world axes.
+    glm::dvec3 acceleration{0};                            ///< [Units: m/s^2], world axes.
+    glm::dvec3 angularVelocity{0};                         ///< [Units: rad/s], body axes.
 };
 
 /// A true motion over [start, end].
 struct Trajectory {
-    std::string name;                           ///< "slalom", or the CSV file's name.
-    std::string description;                    ///< one line for people.
-    double start = 0;                           ///< [Units: s] first time.
-    double end = 0;                             ///< [Units: s] last time (> start).
-    std::function<TruthState(double)> sample;   ///< the truth at a time in [start, end].
+    std::string name;                          ///< "slalom", or the CSV file's name.
+    std::string description;                   ///< one line for people.
+    double start = 0;                          ///< [Units: s] first time.
+    double end = 0;                            ///< [Units: s] last time (> start).
+    std::function<TruthState(double)> sample;  ///< the truth at a time in [start, end].
 };
 
 /// The built-in trajectories, in the order "all" runs them: run-strafe, slalom, circuit,
@@ -72,17 +72,16 @@ bool makeBuiltinTrajectory(std::string_view name, double duration, Trajectory& o
 /// constant rotation between rows. Between rows: cubic Hermite positions, slerp orientations.
 /// @param fileName  used in messages: `FILE:LINE: ...`.
 /// @return false and `error` (one line naming the line and column) on a bad file.
-bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Trajectory& out,
-                        std::string& error);
+bool parseTrajectoryCsv(std::string_view text, const std::string& fileName, Trajectory& out, std::string& error);
 
 /// A packet link. Each packet is lost with probability `loss`; otherwise it arrives after
 /// `latency` plus a jitter uniform in [-jitter, +jitter] (never before it was sent).
 /// Reordering follows from the jitter.
 struct LinkSettings {
-    double latency = 0.1;     ///< [Units: s] [Limit: 0 .. 10]
-    double jitter = 0.02;     ///< [Units: s] [Limit: 0 .. 10]
-    double loss = 0.02;       ///< [Limit: 0 .. 1] fraction of packets lost.
-    std::uint64_t seed = 1;   ///< the generator's seed.
+    double latency = 0.1;    ///< [Units: s] [Limit: 0 .. 10]
+    double jitter = 0.02;    ///< [Units: s] [Limit: 0 .. 10]
+    double loss = 0.02;      ///< [Limit: 0 .. 1] fraction of packets lost.
+    std::uint64_t seed = 1;  ///< the generator's seed.
 };
 
 /// The link's random fates, in packet order. Uses the raw output of std::mt19937_64 (fixed by
@@ -94,7 +93,7 @@ public:
     bool transmit(double& delay);
 
 private:
-    double uniform(); // [0, 1), 53 bits
+    double uniform();  // [0, 1), 53 bits
     LinkSettings mSettings;
     std::mt19937_64 mEngine;
 };
@@ -118,15 +117,15 @@ inline foresight::ReceiverSettings unlimitedReceiverSettings() {
 
 /// Everything a run needs.
 struct SimulationSettings {
-    double duration = 60.0;    ///< [Units: s] (0, kMaxDuration]; cut to a CSV's length.
-    double sendRate = 30.0;    ///< [Units: Hz] sender ticks.
+    double duration = 60.0;  ///< [Units: s] (0, kMaxDuration]; cut to a CSV's length.
+    double sendRate = 30.0;  ///< [Units: Hz] sender ticks.
     /// false: DeadReckoningSender's thresholds decide which ticks send (dead reckoning);
     /// true: every tick sends a snapshot (Source's model: a fixed rate, usually with
     /// interpolation on the receiver).
     bool snapshots = false;
     double renderRate = 60.0;  ///< [Units: Hz] receiver frames.
     LinkSettings link;
-    foresight::SenderSettings sender;     ///< thresholds and heartbeat.
+    foresight::SenderSettings sender;  ///< thresholds and heartbeat.
     /// Mode and smoothing are set per Display. The library's defaults except
     /// extrapolationLimit: none (infinity), as the sender sends only when the receivers'
     /// extrapolation drifts, seconds apart on a smooth path.
@@ -134,8 +133,8 @@ struct SimulationSettings {
     /// [Units: m] a frame is a visible jump when the shown position moved by more than this
     /// beyond what the true position did: |shown_j - shown_j-1| > |true_j - true_j-1| + this.
     double jumpThreshold = 0.25;
-    std::vector<foresight::DeadReckoningAlgorithm> models; ///< in report order.
-    std::vector<Display> displays;                         ///< in report order.
+    std::vector<foresight::DeadReckoningAlgorithm> models;  ///< in report order.
+    std::vector<Display> displays;                          ///< in report order.
 };
 
 /// Mean, 95th percentile (nearest rank) and maximum of some values; all 0 when empty (the
@@ -154,24 +153,24 @@ double rotationAngleDegrees(const glm::dquat& a, const glm::dquat& b);
 /// One receiver's result.
 struct DisplayResult {
     Display display = Display::Snap;
-    std::uint64_t frames = 0;       ///< frames rendered with a pose (after the first update).
-    Summary position;               ///< [Units: m] |shown - true| at the render time.
-    Summary orientation;            ///< [Units: degrees] the rotation between shown and true.
-    std::uint64_t snaps = 0;        ///< updates the receiver applied with a snap (first included).
-    std::uint64_t jumps = 0;        ///< frames that jumped (SimulationSettings::jumpThreshold).
-    std::uint64_t dropped = 0;      ///< updates it dropped (out of order, duplicate, invalid).
-    std::vector<float> seriesTime;  ///< [Units: s] frame times (with a pose), when kept.
-    std::vector<float> seriesError; ///< [Units: m] position error per frame, when kept.
+    std::uint64_t frames = 0;        ///< frames rendered with a pose (after the first update).
+    Summary position;                ///< [Units: m] |shown - true| at the render time.
+    Summary orientation;             ///< [Units: degrees] the rotation between shown and true.
+    std::uint64_t snaps = 0;         ///< updates the receiver applied with a snap (first included).
+    std::uint64_t jumps = 0;         ///< frames that jumped (SimulationSettings::jumpThreshold).
+    std::uint64_t dropped = 0;       ///< updates it dropped (out of order, duplicate, invalid).
+    std::vector<float> seriesTime;   ///< [Units: s] frame times (with a pose), when kept.
+    std::vector<float> seriesError;  ///< [Units: m] position error per frame, when kept.
 };
 
 /// One model's result.
 struct ModelResult {
     foresight::DeadReckoningAlgorithm model = foresight::DeadReckoningAlgorithm::Fpw;
-    std::uint64_t updates = 0;       ///< updates the sender sent.
-    double updatesPerSecond = 0;     ///< updates / duration.
-    std::uint64_t lost = 0;          ///< lost by the link.
-    std::uint64_t late = 0;          ///< would arrive after the end of the run.
-    std::uint64_t reordered = 0;     ///< arrived after a packet sent later.
+    std::uint64_t updates = 0;    ///< updates the sender sent.
+    double updatesPerSecond = 0;  ///< updates / duration.
+    std::uint64_t lost = 0;       ///< lost by the link.
+    std::uint64_t late = 0;       ///< would arrive after the end of the run.
+    std::uint64_t reordered = 0;  ///< arrived after a packet sent later.
     /// Updates sent for each reason (SendReason bits; one update may count under several).
     std::uint64_t sentFirst = 0, sentPosition = 0, sentOrientation = 0, sentHeartbeat = 0;
     std::uint64_t sentSnapshot = 0;  ///< updates sent as fixed-rate snapshots (SimulationSettings::snapshots).
@@ -182,8 +181,8 @@ struct ModelResult {
 struct TrajectoryResult {
     std::string name;
     std::string description;
-    double duration = 0;   ///< [Units: s] simulated.
-    double distance = 0;   ///< [Units: m] travelled (sum over render frames).
+    double duration = 0;  ///< [Units: s] simulated.
+    double distance = 0;  ///< [Units: m] travelled (sum over render frames).
     std::vector<ModelResult> models;
 };
 
@@ -206,4 +205,4 @@ std::string markdownTable(const std::vector<TrajectoryResult>& results, const Si
 /// axes in seconds and metres, a legend. The model's displays must have their series kept.
 std::string svgChart(const TrajectoryResult& result, std::size_t modelIndex, const SimulationSettings& settings);
 
-} // namespace foresight_cli::netsim
+}  // namespace foresight_cli::netsim

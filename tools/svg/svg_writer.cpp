@@ -18,22 +18,29 @@ std::string after(std::string_view attributes) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string escapeXml(std::string_view text, bool quotes) {
     std::string out;
     for (const char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"':
-            if (quotes) {
-                out += "&quot;";
+            case '&':
+                out += "&amp;";
                 break;
-            }
-            [[fallthrough]];
-        default: out += c;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                if (quotes) {
+                    out += "&quot;";
+                    break;
+                }
+                [[fallthrough]];
+            default:
+                out += c;
         }
     }
     return out;
@@ -65,17 +72,18 @@ std::string SvgWriter::begin(double width, double height, const std::string* tit
 }
 
 std::string SvgWriter::line(Value x1, Value y1, Value x2, Value y2, std::string_view attributes) const {
-    return "<line x1=\"" + value(x1) + "\" y1=\"" + value(y1) + "\" x2=\"" + value(x2) + "\" y2=\"" + value(y2) + "\"" + after(attributes) +
-           "/>\n";
+    return "<line x1=\"" + value(x1) + "\" y1=\"" + value(y1) + "\" x2=\"" + value(x2) + "\" y2=\"" + value(y2) + "\"" +
+           after(attributes) + "/>\n";
 }
 
 std::string SvgWriter::rect(Value x, Value y, Value width, Value height, std::string_view attributes) const {
-    return "<rect x=\"" + value(x) + "\" y=\"" + value(y) + "\" width=\"" + value(width) + "\" height=\"" + value(height) +
-           "\"" + after(attributes) + "/>\n";
+    return "<rect x=\"" + value(x) + "\" y=\"" + value(y) + "\" width=\"" + value(width) + "\" height=\"" +
+           value(height) + "\"" + after(attributes) + "/>\n";
 }
 
 std::string SvgWriter::circle(Value cx, Value cy, Value r, std::string_view attributes) const {
-    return "<circle cx=\"" + value(cx) + "\" cy=\"" + value(cy) + "\" r=\"" + value(r) + "\"" + after(attributes) + "/>\n";
+    return "<circle cx=\"" + value(cx) + "\" cy=\"" + value(cy) + "\" r=\"" + value(r) + "\"" + after(attributes) +
+           "/>\n";
 }
 
 std::string SvgWriter::text(Value x, Value y, std::string_view attributes, std::string_view content) const {
@@ -95,4 +103,4 @@ std::string SvgWriter::path(std::string_view d, std::string_view attributes) con
     return "<path d=\"" + std::string(d) + "\"" + after(attributes) + "/>\n";
 }
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -24,8 +24,8 @@ class SvgWriter {
 public:
     /// A coordinate or length: a number (printed with the writer's decimals) or literal text.
     struct Value {
-        Value(double value) : number(value) {}       // NOLINT: implicit on purpose
-        Value(const char* text) : literal(text) {}   // NOLINT: "18", "100%"
+        Value(double value) : number(value) {}      // NOLINT: implicit on purpose
+        Value(const char* text) : literal(text) {}  // NOLINT: "18", "100%"
         double number = 0;
         const char* literal = nullptr;
     };
@@ -67,4 +67,4 @@ private:
     bool mFiniteOnly;
 };
 
-} // namespace foresight_cli
+}  // namespace foresight_cli

@@ -23,5 +23,5 @@ inline glm::dvec3 toD(const btVector3& v) {
     return glm::dvec3(static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z()));
 }
 
-} // namespace bullet_detail
+}  // namespace bullet_detail
 FORESIGHT_NAMESPACE_END

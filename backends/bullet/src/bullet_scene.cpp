@@ -50,8 +50,8 @@ Status BulletScene::add(const Plane& plane) {
     const double length = glm::length(normal);
     btTransform identity;
     identity.setIdentity();
-    addObject(std::make_unique<btStaticPlaneShape>(
-                  toBt(normal / length), static_cast<btScalar>(static_cast<double>(plane.distance) / length)),
+    addObject(std::make_unique<btStaticPlaneShape>(toBt(normal / length),
+                                                   static_cast<btScalar>(static_cast<double>(plane.distance) / length)),
               identity);
     return Status::Ok;
 }

@@ -73,11 +73,11 @@ private:
 
 // A contact of the body found in the manifolds after a step.
 struct StepContact {
-    bool touching = false;     // a contact was solved in the step (distance <= 0)
-    bool found = false;        // the fastest approach among them, below
-    btVector3 normal{0, 0, 0}; // facing the sphere
-    btScalar approach = 0;     // -dot(velocity the solver started from, normal)
-    btScalar depth = 0;        // penetration at the start of the step (>= 0)
+    bool touching = false;      // a contact was solved in the step (distance <= 0)
+    bool found = false;         // the fastest approach among them, below
+    btVector3 normal{0, 0, 0};  // facing the sphere
+    btScalar approach = 0;      // -dot(velocity the solver started from, normal)
+    btScalar depth = 0;         // penetration at the start of the step (>= 0)
 };
 
 StepContact findContact(btDispatcher& dispatcher, const btRigidBody& body, const btVector3& startVelocity) {
@@ -140,8 +140,8 @@ Status simulateProjectileRigidBody(BulletScene& scene, const RVec3& position, co
     const std::uint64_t stepCount = fullSteps + (rest > 0.0 ? 1u : 0u);
     if (stepCount > settings.maxSteps) return Status::TooManySteps;
 
-    const double radius = settings.radius > 0.0f ? static_cast<double>(settings.radius)
-                                                 : static_cast<double>(simulation.pointRadius);
+    const double radius =
+        settings.radius > 0.0f ? static_cast<double>(settings.radius) : static_cast<double>(simulation.pointRadius);
     const btScalar radiusBt = static_cast<btScalar>(radius);
     const btVector3 gravity = toBt(glm::dvec3(decimalValue(settings.gravity.x), decimalValue(settings.gravity.y),
                                               decimalValue(settings.gravity.z)));
@@ -220,8 +220,8 @@ Status simulateProjectileRigidBody(BulletScene& scene, const RVec3& position, co
         TrajectoryPoint sample{static_cast<float>(now), TrajectoryEvent::Step, toR(end), toF(reported), Vec3(0)};
         if (contact.found) {
             const btScalar gravityNormal = btFabs(gravity.dot(contact.normal)) * length;
-            const btScalar threshold = std::max(static_cast<btScalar>(simulation.minImpactSpeed),
-                                                btScalar(2) * gravityNormal);
+            const btScalar threshold =
+                std::max(static_cast<btScalar>(simulation.minImpactSpeed), btScalar(2) * gravityNormal);
             const btScalar gained = (after - solverStart).dot(contact.normal);
             if (contact.approach > threshold && gained >= btScalar(0.99) * contact.approach) {
                 sample.event = TrajectoryEvent::Bounce;
@@ -239,8 +239,8 @@ Status simulateProjectileRigidBody(BulletScene& scene, const RVec3& position, co
                         closing > 0.0 ? std::clamp(static_cast<double>(contact.depth) / closing, 0.0, 1.0) : 0.0;
                     const glm::dvec3 touch = toD(start) - motion * fraction;
                     impact.touchTime = now - static_cast<double>(length) - fraction * previousLength;
-                    impact.touchPosition = RVec3(static_cast<Real>(touch.x), static_cast<Real>(touch.y),
-                                                 static_cast<Real>(touch.z));
+                    impact.touchPosition =
+                        RVec3(static_cast<Real>(touch.x), static_cast<Real>(touch.y), static_cast<Real>(touch.z));
                     out.impacts.push_back(impact);
                 }
             }

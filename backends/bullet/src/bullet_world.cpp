@@ -27,8 +27,8 @@ struct HitFilter {
 
     // Offers a hit at `extendedFraction` of the extended cast with Bullet's world normal;
     // keeps it in `best*` when it is an entering hit closer than the current one.
-    bool accept(const btCollisionObject* object, const glm::dvec3& bulletNormal,
-                double extendedFraction, double& bestDistance, glm::dvec3& bestNormal) const {
+    bool accept(const btCollisionObject* object, const glm::dvec3& bulletNormal, double extendedFraction,
+                double& bestDistance, glm::dvec3& bestNormal) const {
         const btCollisionShape* shape = object->getCollisionShape();
         glm::dvec3 normal = bulletNormal;
         bool twoSided = false;
@@ -136,9 +136,9 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
     ClosestHitCaster* caster = nullptr;
     // Bullet's narrowphase, for the other shapes.
     btTransform from, to;
-    const btConvexShape* sphere = nullptr;  // null: a ray
-    btTransform exactFrom;               // the real origin (rays against meshes)
-    RayCallback* rayCallback = nullptr;  // convex and other shapes: cast from `from`
+    const btConvexShape* sphere = nullptr;   // null: a ray
+    btTransform exactFrom;                   // the real origin (rays against meshes)
+    RayCallback* rayCallback = nullptr;      // convex and other shapes: cast from `from`
     RayCallback* meshRayCallback = nullptr;  // concave shapes: cast from `exactFrom`
     SweepCallback* sweepCallback = nullptr;
 
@@ -148,17 +148,17 @@ struct BroadphaseVisitor final : btBroadphaseRayCallback {
         const btCollisionShape* shape = object->getCollisionShape();
         const btTransform& transform = object->getWorldTransform();
         switch (shape->getShapeType()) {
-        case SPHERE_SHAPE_PROXYTYPE:
-            caster->test(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
-            return true;
-        case BOX_SHAPE_PROXYTYPE:
-            caster->test(boxOf(*static_cast<const btBoxShape*>(shape), transform));
-            return true;
-        case STATIC_PLANE_PROXYTYPE:
-            caster->test(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
-            return true;
-        default:
-            break;
+            case SPHERE_SHAPE_PROXYTYPE:
+                caster->test(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
+                return true;
+            case BOX_SHAPE_PROXYTYPE:
+                caster->test(boxOf(*static_cast<const btBoxShape*>(shape), transform));
+                return true;
+            case STATIC_PLANE_PROXYTYPE:
+                caster->test(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
+                return true;
+            default:
+                break;
         }
         if (sphere == nullptr && shape->isConcave())
             // Two-sided triangles: a start on a triangle's plane ignores it (as in StaticWorld),
@@ -206,35 +206,35 @@ struct ShapeVisitor final : btBroadphaseAabbCallback {
         const btTransform& transform = object->getWorldTransform();
         bool go = true;
         switch (shape->getShapeType()) {
-        case SPHERE_SHAPE_PROXYTYPE:
-            go = (*visit)(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
-            break;
-        case BOX_SHAPE_PROXYTYPE:
-            go = (*visit)(boxOf(*static_cast<const btBoxShape*>(shape), transform));
-            break;
-        case STATIC_PLANE_PROXYTYPE:
-            go = (*visit)(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
-            break;
-        default:
-            if (shape->isConcave()) {
-                // The box in the shape's frame: the bounds of its corners taken there.
-                const btTransform inverse = transform.inverse();
-                btVector3 localLo(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT), localHi = -localLo;
-                for (int corner = 0; corner < 8; ++corner) {
-                    const btVector3 c((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
-                                      (corner & 4) ? hi.z() : lo.z());
-                    const btVector3 l = inverse * c;
-                    localLo.setMin(l);
-                    localHi.setMax(l);
+            case SPHERE_SHAPE_PROXYTYPE:
+                go = (*visit)(sphereOf(*static_cast<const btSphereShape*>(shape), transform));
+                break;
+            case BOX_SHAPE_PROXYTYPE:
+                go = (*visit)(boxOf(*static_cast<const btBoxShape*>(shape), transform));
+                break;
+            case STATIC_PLANE_PROXYTYPE:
+                go = (*visit)(planeOf(*static_cast<const btStaticPlaneShape*>(shape), transform));
+                break;
+            default:
+                if (shape->isConcave()) {
+                    // The box in the shape's frame: the bounds of its corners taken there.
+                    const btTransform inverse = transform.inverse();
+                    btVector3 localLo(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT), localHi = -localLo;
+                    for (int corner = 0; corner < 8; ++corner) {
+                        const btVector3 c((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
+                                          (corner & 4) ? hi.z() : lo.z());
+                        const btVector3 l = inverse * c;
+                        localLo.setMin(l);
+                        localHi.setMax(l);
+                    }
+                    Triangles triangles;
+                    triangles.owner = this;
+                    triangles.transform = transform;
+                    static_cast<const btConcaveShape*>(shape)->processAllTriangles(&triangles, localLo, localHi);
+                } else {
+                    go = (*visit)(shape);  // another shape: the visitor decides
                 }
-                Triangles triangles;
-                triangles.owner = this;
-                triangles.transform = transform;
-                static_cast<const btConcaveShape*>(shape)->processAllTriangles(&triangles, localLo, localHi);
-            } else {
-                go = (*visit)(shape);  // another shape: the visitor decides
-            }
-            break;
+                break;
         }
         if (!go) stopped = true;
         return !stopped;
@@ -248,8 +248,8 @@ bool visitNear(const btCollisionWorld& world, const BulletWorldSettings& setting
     const glm::dvec3 a(static_cast<double>(capsule.origin.x), static_cast<double>(capsule.origin.y),
                        static_cast<double>(capsule.origin.z));
     const glm::dvec3 b = a + glm::dvec3(capsule.displacement);
-    const double magnitude = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y),
-                                       std::abs(b.z), 1.0});
+    const double magnitude =
+        std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z), 1.0});
     const double grow = std::max(0.0, static_cast<double>(capsule.radius)) + 1e-4 +
                         8.0 * magnitude * static_cast<double>(std::numeric_limits<btScalar>::epsilon());
     if (!std::isfinite(magnitude + grow) || magnitude > 1e15) return false;
@@ -336,8 +336,7 @@ bool BulletWorld::isOnlyPlane(const PlaneRegion& region) const {
 bool BulletWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     const glm::dvec3 origin(static_cast<double>(cast.origin.x), static_cast<double>(cast.origin.y),
                             static_cast<double>(cast.origin.z));
-    const glm::dvec3 displacement(static_cast<double>(cast.displacement.x),
-                                  static_cast<double>(cast.displacement.y),
+    const glm::dvec3 displacement(static_cast<double>(cast.displacement.x), static_cast<double>(cast.displacement.y),
                                   static_cast<double>(cast.displacement.z));
     const double length = glm::length(displacement);
     // Zero-length and non-finite casts hit nothing (and are never given to Bullet).
@@ -371,7 +370,8 @@ bool BulletWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     btVector3 direction = to - from;
     direction.normalize();
     for (int i = 0; i < 3; ++i) {
-        visitor.m_rayDirectionInverse[i] = direction[i] == btScalar(0) ? btScalar(BT_LARGE_FLOAT) : btScalar(1) / direction[i];
+        visitor.m_rayDirectionInverse[i] =
+            direction[i] == btScalar(0) ? btScalar(BT_LARGE_FLOAT) : btScalar(1) / direction[i];
         visitor.m_signs[i] = visitor.m_rayDirectionInverse[i] < btScalar(0) ? 1u : 0u;
     }
     visitor.m_lambda_max = direction.dot(to - from);
@@ -416,10 +416,9 @@ bool BulletWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     const double fraction = std::clamp(bestDistance / length, 0.0, 1.0);
     hit.fraction = static_cast<float>(fraction);
     const glm::dvec3 position = origin + displacement * fraction;
-    hit.position = RVec3(static_cast<Real>(position.x), static_cast<Real>(position.y),
-                         static_cast<Real>(position.z));
-    hit.normal = Vec3(static_cast<float>(bestNormal.x), static_cast<float>(bestNormal.y),
-                      static_cast<float>(bestNormal.z));
+    hit.position = RVec3(static_cast<Real>(position.x), static_cast<Real>(position.y), static_cast<Real>(position.z));
+    hit.normal =
+        Vec3(static_cast<float>(bestNormal.x), static_cast<float>(bestNormal.y), static_cast<float>(bestNormal.z));
     return true;
 }
 

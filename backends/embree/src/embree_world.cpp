@@ -20,7 +20,9 @@ namespace {
 
 using DVec3 = glm::dvec3;
 
-DVec3 toD(const RVec3& v) { return DVec3(static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)); }
+DVec3 toD(const RVec3& v) {
+    return DVec3(static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z));
+}
 
 // Smallest float not below x.
 float floatUp(double x) {
@@ -47,7 +49,7 @@ struct EmbreeWorld::Impl {
     // t is triangles[t]).
     std::vector<float> floatVertices;
     std::vector<unsigned> vertexIndices;
-    double largest = 0.0;             // largest coordinate magnitude of the mesh [Units: m]
+    double largest = 0.0;  // largest coordinate magnitude of the mesh [Units: m]
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     bool committed = false;
@@ -81,12 +83,12 @@ struct QueryState {
     std::array<unsigned, 32> ties;  // the first tieCount are used (left uninitialised: per cast)
     std::size_t tieCount = 0;
     ClosestHitCaster best{SegmentCast{}};  // the exact test of ties[0] alone
-    bool overflowed = false;  // too many ties or checks: the cast is redone by the exact search
+    bool overflowed = false;               // too many ties or checks: the cast is redone by the exact search
 
     // Radius 0 (rtcIntersect1 on the float triangles):
-    double rho = 0.0;        // how far from a triangle's edges float and exact may disagree [m]
-    double shift = 0.0;      // the traced ray starts this fraction before the segment
-    float limit = 0.0f;      // the traced ray's current tfar
+    double rho = 0.0;    // how far from a triangle's edges float and exact may disagree [m]
+    double shift = 0.0;  // the traced ray starts this fraction before the segment
+    float limit = 0.0f;  // the traced ray's current tfar
     // Points (fractions of the segment) around which every triangle within a radius [m] is
     // tested exactly (left uninitialised: per cast).
     std::array<double, 4> checks;
@@ -134,8 +136,10 @@ bool record(QueryState& q, unsigned index, double f) {
     bool known = false;
     for (std::size_t k = 0; k < q.tieCount; ++k) known = known || q.ties[k] == index;
     if (known) return shrink;
-    if (q.tieCount < q.ties.size()) q.ties[q.tieCount++] = index;
-    else q.overflowed = true;
+    if (q.tieCount < q.ties.size())
+        q.ties[q.tieCount++] = index;
+    else
+        q.overflowed = true;
     return shrink;
 }
 
@@ -231,8 +235,7 @@ bool checkDoubt(QueryState& q, unsigned index, double f, double fFloat) {
     }
     const double dn = glm::dot(n, q.displacement);
     const double crossing = dn != 0.0 ? -glm::dot(n, q.origin - a) / dn : fFloat;
-    addCheck(q, std::isfinite(crossing) ? std::clamp(crossing, 0.0, 1.0) : std::clamp(fFloat, 0.0, 1.0),
-             4.0 * reach);
+    addCheck(q, std::isfinite(crossing) ? std::clamp(crossing, 0.0, 1.0) : std::clamp(fFloat, 0.0, 1.0), 4.0 * reach);
     return true;
 }
 
@@ -398,7 +401,8 @@ void castRay(RTCScene scene, double rho, QueryState& q) {
 EmbreeWorld::EmbreeWorld() : EmbreeWorld(EmbreeWorldSettings{}) {}
 
 EmbreeWorld::EmbreeWorld(const EmbreeWorldSettings& settings)
-    : mSettings(settings), mPrimitives(StaticWorldSettings{settings.surfaceTolerance}), mImpl(std::make_unique<Impl>()) {}
+    : mSettings(settings), mPrimitives(StaticWorldSettings{settings.surfaceTolerance}),
+      mImpl(std::make_unique<Impl>()) {}
 
 EmbreeWorld::~EmbreeWorld() = default;
 EmbreeWorld::EmbreeWorld(EmbreeWorld&&) noexcept = default;
@@ -409,8 +413,10 @@ Status EmbreeWorld::add(const Sphere& sphere) { return mPrimitives.add(sphere); 
 Status EmbreeWorld::add(const OrientedBox& box) { return mPrimitives.add(box); }
 Status EmbreeWorld::add(const Triangle& triangle) { return mPrimitives.add(triangle); }
 void EmbreeWorld::addPrimitives(const StaticWorld& world) {
-    for (std::size_t i = 0; i < world.planes().size(); ++i) mPrimitives.add(world.planes()[i], world.planeMaterials()[i]);
-    for (std::size_t i = 0; i < world.spheres().size(); ++i) mPrimitives.add(world.spheres()[i], world.sphereMaterials()[i]);
+    for (std::size_t i = 0; i < world.planes().size(); ++i)
+        mPrimitives.add(world.planes()[i], world.planeMaterials()[i]);
+    for (std::size_t i = 0; i < world.spheres().size(); ++i)
+        mPrimitives.add(world.spheres()[i], world.sphereMaterials()[i]);
     for (std::size_t i = 0; i < world.boxes().size(); ++i) mPrimitives.add(world.boxes()[i], world.boxMaterials()[i]);
     for (std::size_t i = 0; i < world.triangles().size(); ++i)
         mPrimitives.add(world.triangles()[i], world.triangleMaterials()[i]);
@@ -529,10 +535,10 @@ bool EmbreeWorld::commit(std::string* error) {
     if (!geometry) return fail("cannot create a geometry");
     const std::size_t vertexCount = impl.floatVertices.size() / 3;
     const std::size_t count = impl.triangles.size();
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                   RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), vertexCount));
+    auto* indices = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
     if (!vertices || !indices) {
         rtcReleaseGeometry(geometry);
         return fail("cannot allocate the mesh buffers");
@@ -576,14 +582,18 @@ bool EmbreeWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
             ClosestHitCaster exact = pristine;
             unsigned index = 0;
             switch (fastRay(impl->scene, impl->triangles.data(), origin, displacement, length, rho, exact, index)) {
-            case FastRay::Miss: return caster.result(hit);
-            case FastRay::Hit:
-                // Strictly closer than the primitives: its own test is the result (the same as
-                // testing it after them); otherwise the primitives win or tie, in their order.
-                if (exact.closestFraction() < caster.closestFraction()) caster = exact;
-                else caster.test(impl->triangles[index]);
-                return caster.result(hit);
-            case FastRay::Doubt: break;
+                case FastRay::Miss:
+                    return caster.result(hit);
+                case FastRay::Hit:
+                    // Strictly closer than the primitives: its own test is the result (the same as
+                    // testing it after them); otherwise the primitives win or tie, in their order.
+                    if (exact.closestFraction() < caster.closestFraction())
+                        caster = exact;
+                    else
+                        caster.test(impl->triangles[index]);
+                    return caster.result(hit);
+                case FastRay::Doubt:
+                    break;
             }
         }
         QueryState q;
@@ -670,7 +680,8 @@ bool capsuleQuery(const SegmentCast& capsule, RTCPointQuery& query) {
     const double rounding = glm::length(DVec3(query.x, query.y, query.z) - centre);
     const double magnitude = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
     query.radius = floatUp((0.5 * glm::length(d) + std::max(0.0, static_cast<double>(capsule.radius)) + rounding +
-                            1e-4 + 1e-6 * magnitude) * (1.0 + 1e-6));
+                            1e-4 + 1e-6 * magnitude) *
+                           (1.0 + 1e-6));
     return true;
 }
 
@@ -680,10 +691,12 @@ bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
     if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
     PlaneRegionTester tester(region);
     const StaticWorld& p = mPrimitives;
-    for (std::size_t i = 0; i < p.planes().size() && !tester.failed(); ++i) tester.test(p.planes()[i], p.planeMaterials()[i]);
+    for (std::size_t i = 0; i < p.planes().size() && !tester.failed(); ++i)
+        tester.test(p.planes()[i], p.planeMaterials()[i]);
     for (std::size_t i = 0; i < p.spheres().size() && !tester.failed(); ++i)
         tester.test(p.spheres()[i], p.sphereMaterials()[i]);
-    for (std::size_t i = 0; i < p.boxes().size() && !tester.failed(); ++i) tester.test(p.boxes()[i], p.boxMaterials()[i]);
+    for (std::size_t i = 0; i < p.boxes().size() && !tester.failed(); ++i)
+        tester.test(p.boxes()[i], p.boxMaterials()[i]);
     for (std::size_t i = 0; i < p.triangles().size() && !tester.failed(); ++i)
         tester.test(p.triangles()[i], p.triangleMaterials()[i]);
     const Impl* impl = mImpl.get();
@@ -768,7 +781,7 @@ bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const 
             const double length = glm::length(DVec3(capsule.displacement));
             const double radius = std::max(1e-3, 2.0 * static_cast<double>(capsule.radius));
             const int pieces = static_cast<int>(std::clamp(std::ceil(length / radius), 1.0, 8.0));
-            for (int i = 0; i < pieces && static_cast<double>(q.fraction) > static_cast<double>(i) / pieces; ++i) {
+            for (int i = 0; i<pieces&& static_cast<double>(q.fraction)> static_cast<double>(i) / pieces; ++i) {
                 SegmentCast piece = capsule;
                 piece.origin = RVec3(toD(capsule.origin) + DVec3(capsule.displacement) * (double(i) / pieces));
                 piece.displacement = capsule.displacement * (1.0f / static_cast<float>(pieces));

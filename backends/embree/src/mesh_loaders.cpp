@@ -94,7 +94,8 @@ MeshLoadResult loadObjImpl(EmbreeWorld& world, const std::filesystem::path& path
     if (!reader.ParseFromString(text, std::string(), config))
         return failure(path, "malformed OBJ: " + oneLine(reader.Error(), "parse error"));
     const auto& coordinates = reader.GetAttrib().vertices;
-    if (coordinates.size() % 3 != 0) return failure(path, "malformed OBJ: vertex data is not a multiple of 3 coordinates");
+    if (coordinates.size() % 3 != 0)
+        return failure(path, "malformed OBJ: vertex data is not a multiple of 3 coordinates");
     std::vector<RVec3> vertices(coordinates.size() / 3);
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         for (int k = 0; k < 3; ++k) {
@@ -110,11 +111,13 @@ MeshLoadResult loadObjImpl(EmbreeWorld& world, const std::filesystem::path& path
         std::size_t offset = 0;
         for (const unsigned char count : shape.mesh.num_face_vertices) {
             ++faceNumber;
-            if (offset + count > corners.size()) return failure(path, "malformed OBJ: face " + std::to_string(faceNumber));
+            if (offset + count > corners.size())
+                return failure(path, "malformed OBJ: face " + std::to_string(faceNumber));
             for (std::size_t k = 0; k < count; ++k) {
                 const int index = corners[offset + k].vertex_index;
                 if (index < 0 || static_cast<std::size_t>(index) >= vertices.size())
-                    return failure(path, "face " + std::to_string(faceNumber) + " refers to a vertex out of range (the file has " +
+                    return failure(path, "face " + std::to_string(faceNumber) +
+                                             " refers to a vertex out of range (the file has " +
                                              std::to_string(vertices.size()) + " vertices)");
             }
             for (std::size_t k = 1; k + 1 < count; ++k) {
@@ -226,7 +229,8 @@ bool viewAccessor(const tinygltf::Model& model, int index, int type, AccessorVie
         fits = elementSize <= room && accessor.count - 1 <= (room - elementSize) / stride;
     }
     if (!fits) {
-        reason = "accessor " + std::to_string(index) + " reaches past the end of its buffer view or buffer (truncated file?)";
+        reason = "accessor " + std::to_string(index) +
+                 " reaches past the end of its buffer view or buffer (truncated file?)";
         return false;
     }
     const std::size_t begin = bufferView.byteOffset + accessor.byteOffset;
@@ -252,7 +256,8 @@ struct GltfLoader {
     std::string reason;
 
     bool primitive(const tinygltf::Primitive& primitive, const DMat4& transform) {
-        if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) return true;  // lines, points, strips: skipped
+        if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1)
+            return true;  // lines, points, strips: skipped
         const auto position = primitive.attributes.find("POSITION");
         if (position == primitive.attributes.end()) return true;
         AccessorView pv;
@@ -271,7 +276,8 @@ struct GltfLoader {
             const unsigned char* p = pv.data + i * pv.stride;
             const glm::dvec4 local(readAt<float>(p), readAt<float>(p + 4), readAt<float>(p + 8), 1.0);
             if (!std::isfinite(local.x) || !std::isfinite(local.y) || !std::isfinite(local.z)) {
-                reason = "vertex " + std::to_string(i) + " of accessor " + std::to_string(position->second) + " is not finite";
+                reason = "vertex " + std::to_string(i) + " of accessor " + std::to_string(position->second) +
+                         " is not finite";
                 return false;
             }
             const glm::dvec4 world = transform * local;
@@ -282,7 +288,8 @@ struct GltfLoader {
             vertices.emplace_back(static_cast<Real>(world.x), static_cast<Real>(world.y), static_cast<Real>(world.z));
         }
         if (primitive.indices < -1) {
-            reason = "a primitive's indices are accessor " + std::to_string(primitive.indices) + ", which does not exist";
+            reason =
+                "a primitive's indices are accessor " + std::to_string(primitive.indices) + ", which does not exist";
             return false;
         }
         // A mirroring transform flips the winding; triangles are two-sided, so it does not matter.
@@ -314,14 +321,22 @@ struct GltfLoader {
             const unsigned char* p = iv.data + i * iv.stride;
             std::uint64_t index = 0;
             switch (iv.componentType) {
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: index = readAt<std::uint8_t>(p); break;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: index = readAt<std::uint16_t>(p); break;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: index = readAt<std::uint32_t>(p); break;
-            default: reason = "indices are not unsigned integers"; return false;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    index = readAt<std::uint8_t>(p);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                    index = readAt<std::uint16_t>(p);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+                    index = readAt<std::uint32_t>(p);
+                    break;
+                default:
+                    reason = "indices are not unsigned integers";
+                    return false;
             }
             if (index >= pv.count) {
-                reason = "index " + std::to_string(i) + " refers to vertex " + std::to_string(index) + ", out of range (" +
-                         std::to_string(pv.count) + " vertices)";
+                reason = "index " + std::to_string(i) + " refers to vertex " + std::to_string(index) +
+                         ", out of range (" + std::to_string(pv.count) + " vertices)";
                 return false;
             }
             indices.push_back(static_cast<std::uint32_t>(base + index));
@@ -389,12 +404,14 @@ bool checkNodeTrees(const tinygltf::Model& model, std::string& reason) {
         std::vector<bool> listed(count, false);
         for (const int root : model.scenes[s].nodes) {
             if (root < 0 || static_cast<std::size_t>(root) >= count) {
-                reason = "scene " + std::to_string(s) + " lists node " + std::to_string(root) + ", which does not exist";
+                reason =
+                    "scene " + std::to_string(s) + " lists node " + std::to_string(root) + ", which does not exist";
                 return false;
             }
             if (parent[static_cast<std::size_t>(root)] >= 0 || listed[static_cast<std::size_t>(root)]) {
-                reason = "scene " + std::to_string(s) + " lists node " + std::to_string(root) +
-                         (listed[static_cast<std::size_t>(root)] ? " twice" : ", which is not a root (it has a parent)");
+                reason =
+                    "scene " + std::to_string(s) + " lists node " + std::to_string(root) +
+                    (listed[static_cast<std::size_t>(root)] ? " twice" : ", which is not a root (it has a parent)");
                 return false;
             }
             listed[static_cast<std::size_t>(root)] = true;
@@ -464,7 +481,8 @@ MeshLoadResult loadGltfImpl(EmbreeWorld& world, const std::filesystem::path& pat
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
     std::error_code ec;
-    const std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec);
+    const std::filesystem::path folder =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec);
     if (ec) return failure(path, "cannot resolve its folder (" + ec.message() + ")");
     ConfinedFiles files{folder, kMaxGltfBytes - bytes.size(), {}};
     loader.SetFsCallbacks(tinygltf::FsCallbacks{confinedExists, noExpansion, confinedRead, noWrite, &files});
@@ -479,12 +497,15 @@ MeshLoadResult loadGltfImpl(EmbreeWorld& world, const std::filesystem::path& pat
     const bool loaded =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                              static_cast<unsigned>(bytes.size()), baseDir)
-               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), baseDir);
+               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()),
+                                            baseDir);
     if (!loaded) {
         if (!files.refusal.empty()) return failure(path, "a file it names is refused: " + files.refusal);
-        return failure(path, std::string(binary ? "malformed GLB: " : "malformed glTF: ") + oneLine(err, "parse error"));
+        return failure(path,
+                       std::string(binary ? "malformed GLB: " : "malformed glTF: ") + oneLine(err, "parse error"));
     }
-    if (model.defaultScene < -1 || (model.defaultScene >= 0 && static_cast<std::size_t>(model.defaultScene) >= model.scenes.size()))
+    if (model.defaultScene < -1 ||
+        (model.defaultScene >= 0 && static_cast<std::size_t>(model.defaultScene) >= model.scenes.size()))
         return failure(path, "its scene " + std::to_string(model.defaultScene) + " does not exist (" +
                                  std::to_string(model.scenes.size()) + " scenes)");
     if (!checkNodeTrees(model, reason)) return failure(path, reason);

@@ -54,10 +54,12 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// Settings of the rigid-body reference simulation.
 struct RigidBodySimulationSettings {
-    float frequency = 960.0f;    ///< Bullet's fixed internal step rate [Units: Hz] [Limit: 240 .. 100000]
-    float pointRadius = 0.02f;   ///< sphere radius used when the projectile's radius is 0 [Units: m] [Limit: > 0]
-    bool lockRotation = true;    ///< no spin: the sphere slides like the predictor's point mass (false: it may roll; rolling friction stays 0)
-    std::size_t maxImpacts = 4096; ///< impacts recorded at most (later ones are simulated, not recorded)
+    float frequency = 960.0f;   ///< Bullet's fixed internal step rate [Units: Hz] [Limit: 240 .. 100000]
+    float pointRadius = 0.02f;  ///< sphere radius used when the projectile's radius is 0 [Units: m] [Limit: > 0]
+    /// No spin: the sphere slides like the predictor's point mass (false: it may roll; rolling
+    /// friction stays 0).
+    bool lockRotation = true;
+    std::size_t maxImpacts = 4096;  ///< impacts recorded at most (later ones are simulated, not recorded)
     /// Start Bullet's velocity half a step of gravity early (`velocity - gravity * dt / 2`), so
     /// that its semi-implicit Euler steps follow the exact parabola in free flight (false:
     /// Bullet's plain start, below the parabola by |g| t dt / 2).
@@ -84,13 +86,13 @@ struct SimulatedImpact {
     /// step, taken as straight, interpolated back from the depth Bullet measured at the start of
     /// the impulse step. Between 2 steps and 1 step before `time`.
     double touchTime = 0;
-    RVec3 touchPosition{0};   ///< sphere centre at touchTime (the landing point of a first impact)
+    RVec3 touchPosition{0};  ///< sphere centre at touchTime (the landing point of a first impact)
 };
 
 /// Result of simulateProjectileRigidBody.
 struct RigidBodySimulationResult {
-    RVec3 position{0};        ///< sphere centre at `time`
-    Vec3 velocity{0};         ///< at `time` [Units: m/s]
+    RVec3 position{0};  ///< sphere centre at `time`
+    Vec3 velocity{0};   ///< at `time` [Units: m/s]
     /// Bounces in time order. Resting contact is not recorded: an impact needs an approach faster
     /// than RigidBodySimulationSettings::minImpactSpeed and than twice the normal speed gravity
     /// adds in one step (see SimulatedImpact).
@@ -99,8 +101,8 @@ struct RigidBodySimulationResult {
     /// state), then one point per step, Bounce for a step with an impact (with its normal), Step
     /// otherwise, the last one End (at `time`).
     std::vector<TrajectoryPoint> samples;
-    bool atRest = false;      ///< touching a surface in the last step and slower than restSpeed
-    double radius = 0;        ///< radius actually simulated [m]
+    bool atRest = false;  ///< touching a surface in the last step and slower than restSpeed
+    double radius = 0;    ///< radius actually simulated [m]
 };
 
 /// Runs a projectile as a Bullet rigid body (a btSphereShape of settings.radius, or

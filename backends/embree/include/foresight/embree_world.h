@@ -62,8 +62,9 @@
 ///
 /// Casts never allocate and are safe from many threads once commit() has been called (each
 /// cast uses its own Embree ray or query context). Memory: the triangles as added (3 RVec3
-/// each), the float vertices and indices (kept for the next commit), and Embree's scene. The loaders catch every exception (an error
-/// result); addMesh and add can only throw std::bad_alloc, as StaticWorld::add.
+/// each), the float vertices and indices (kept for the next commit), and Embree's scene. The
+/// loaders catch every exception (an error result); addMesh and add can only throw
+/// std::bad_alloc, as StaticWorld::add.
 
 #include <foresight/static_world.h>
 
@@ -78,10 +79,10 @@ FORESIGHT_NAMESPACE_BEGIN
 
 /// What addMesh or a loader did with a mesh.
 struct MeshReport {
-    std::size_t triangles = 0;               ///< triangles added.
-    std::size_t degenerateTriangles = 0;     ///< triangles skipped (validateTriangle: DegenerateShape).
-    std::size_t firstDegenerateTriangle = 0; ///< 0-based index (in the mesh) of the first skipped one.
-    std::string error;                       ///< why the mesh was refused; empty on success.
+    std::size_t triangles = 0;                ///< triangles added.
+    std::size_t degenerateTriangles = 0;      ///< triangles skipped (validateTriangle: DegenerateShape).
+    std::size_t firstDegenerateTriangle = 0;  ///< 0-based index (in the mesh) of the first skipped one.
+    std::string error;                        ///< why the mesh was refused; empty on success.
 };
 
 /// Largest glTF or GLB file loadGltf reads, together with every buffer file it names [bytes]:
