@@ -30,7 +30,6 @@
 
 FORESIGHT_NAMESPACE_BEGIN
 namespace detail {
-long gTmp[8];
 namespace {
 
 // Surfaces followed at once (a sphere in a corner touches three).
@@ -317,7 +316,6 @@ private:
             return 0;
         }
         mContactSteps = std::min<std::uint64_t>(mContactSteps * 2, kMaxCoastSteps);
-        gTmp[4] += taken;
         return taken;
     }
 
@@ -368,11 +366,12 @@ private:
     // only query is a cast of the sphere along its free motion, lengthened by the contact reach.
     // The next n positions (computed exactly as step() computes them) lie within `bend` of the
     // chord from the first to the last, so every one of those casts stays inside the capsule of
-    // radius r + reach + bend around the chord: the steps before the world's first possible touch
-    // of that capsule (CollisionWorld::firstTouch) are free flight, taken here without casts, with
-    // the same arithmetic and so the same numbers as step by step. Returns the steps taken from
-    // step k on (0: step k must be stepped). The horizon doubles after a clear capsule and halves
-    // after a touched one.
+    // radius r + reach + bend around the chord: when the world says nothing touches that capsule,
+    // the n steps are free flight, taken here without casts, with the same arithmetic and so the
+    // same numbers as step by step. Returns the steps taken from step k on (0: step k must be
+    // stepped). The horizon doubles after a clear capsule and halves after a touched one.
+    // (CollisionWorld::firstTouch would say how far a touched capsule is clear; asked here, it
+    // cost more than it saved on the demo level: mayTouch stops at the first candidate.)
     std::uint64_t coast(std::uint64_t k, std::uint64_t steps) {
         if (mCount > 0 || (k == 1 && mProfile.firstStep != FirstStepRule::Normal)) return 0;
         if (mCoastWait > 0) {
@@ -401,25 +400,12 @@ private:
         capsule.displacement = toF(mCoastPositions[n] - toD(capsule.origin));
         // The casts' own margins: the float rounding of origin and displacement, 1 mm besides.
         capsule.radius = static_cast<float>((mRadius + contactReach() + bend + 1e-3) * (1.0 + 1e-5));
-        float fraction = 1.0f;
-        std::uint64_t clear = n;
-        if (mWorld->firstTouch(capsule, fraction)) {
-            // The steps whose positions all lie before the first touch along the chord (1 mm
-            // back, for the chord's rounding to float): every cast up to there stays inside the
-            // clear part of the capsule.
-            const DVec3 chord = mCoastPositions[n] - a;
-            const double length = glm::length(chord);
-            const double limit = static_cast<double>(fraction) * length - 1e-3;
-            clear = 0;
-            while (clear < n && length > 0.0 && glm::dot(mCoastPositions[clear + 1] - a, chord) / length < limit)
-                ++clear;
-        }
-        if (clear == 0) {
+        if (mWorld->mayTouch(capsule)) {
             mCoastSteps = std::max<std::uint64_t>(mCoastSteps / 2, 2);
             if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
             return 0;
         }
-        for (std::uint64_t j = 1; j <= clear; ++j) {
+        for (std::uint64_t j = 1; j <= n; ++j) {
             spinDown();
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
@@ -427,14 +413,11 @@ private:
             mRecorder.add(t, k + j - 1 == steps ? TrajectoryEvent::End : TrajectoryEvent::Step, mPosition, mVelocity);
         }
         mTouching = false;
-        mCoastSteps = clear == n ? std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps)
-                                 : std::max<std::uint64_t>(mCoastSteps / 2, 2);
-        return clear;
+        mCoastSteps = std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps);
+        return n;
     }
 
     bool step(bool first) {
-        ++gTmp[0];
-        if (mCount > 0) ++gTmp[1];
         const double dt = mRec.dt;
         const DVec3 v0 = mVelocity;
         DVec3 v, freeMotion;

@@ -393,7 +393,7 @@ StaticWorld randomScene(ftest::Random& random) {
 
 }  // namespace
 
-// Coasting (one firstTouch query for many free-flight steps) must give exactly the steps of casting
+// Coasting (one mayTouch query for many free-flight steps) must give exactly the steps of casting
 // every step: the same arithmetic, only the queries are skipped. Random scenes, every profile.
 TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
     ftest::Random random(2026);

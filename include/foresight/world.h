@@ -75,8 +75,9 @@ public:
     /// [Limit: 0 .. 1] so that no surface comes within `capsule.radius` of the segment's points
     /// `origin + t * displacement` for t < fraction: the capsule cut at `fraction` is clear, and a
     /// castSegment whose swept sphere stays inside that part hits nothing. A fraction earlier than
-    /// the real first touch only costs speed. ProjectileMethod::Engine asks it to clear the free
-    /// flight up to the step before the first possible contact with one query. The default answers
+    /// the real first touch only costs speed. It serves a predictor that would clear a long stretch of
+    /// flight up to the first possible contact with one query (ProjectileMethod::Engine asks mayTouch:
+    /// on a level's floor, the first candidate answers it sooner). The default answers
     /// from mayTouch (fraction 0 when it says true), so a world that implements only mayTouch, or
     /// only castSegment, stays correct.
     virtual bool firstTouch(const SegmentCast& capsule, float& fraction) const {
