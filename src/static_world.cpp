@@ -419,6 +419,19 @@ Capsule prepareCapsule(const SegmentCast& capsule) {
     return c;
 }
 
+// The capsule's segment in the box's own frame (centre at the origin, axes along the box's);
+// false when the box's orientation is no rotation.
+bool intoBoxFrame(Capsule& c, const OrientedBox& box) {
+    const glm::dquat q(box.orientation);
+    const double norm = glm::length(q);
+    if (!(norm > 0.0)) return false;
+    const glm::dquat inverse = glm::conjugate(q / norm);
+    const glm::dvec3 centre(box.center);
+    c.a = inverse * (c.a - centre);
+    c.b = inverse * (c.b - centre);
+    return true;
+}
+
 // Whether the boxes [lo, hi] and the capsule's bounds overlap.
 bool boundsMeet(const Capsule& c, const glm::dvec3& lo, const glm::dvec3& hi) {
     const glm::dvec3 clo = glm::min(c.a, c.b) - c.radius, chi = glm::max(c.a, c.b) + c.radius;
@@ -451,14 +464,7 @@ bool mayTouch(const SegmentCast& capsule, const Sphere& sphere) {
 
 bool mayTouch(const SegmentCast& capsule, const OrientedBox& box) {
     Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
-    const glm::dquat q(box.orientation);
-    const double norm = glm::length(q);
-    if (!(norm > 0.0)) return true;
-    const glm::dquat inverse = glm::conjugate(q / norm);
-    const glm::dvec3 centre(box.center);
-    c.a = inverse * (c.a - centre);
-    c.b = inverse * (c.b - centre);
+    if (!c.valid || !intoBoxFrame(c, box)) return true;
     const glm::dvec3 half = glm::dvec3(box.halfExtents) * (1.0 + 1e-6);
     return boundsMeet(c, -half, half);
 }
@@ -548,14 +554,7 @@ bool firstTouch(const SegmentCast& capsule, const Sphere& sphere, float& fractio
 bool firstTouch(const SegmentCast& capsule, const OrientedBox& box, float& fraction) {
     fraction = 0.0f;
     Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
-    const glm::dquat q(box.orientation);
-    const double norm = glm::length(q);
-    if (!(norm > 0.0)) return true;
-    const glm::dquat inverse = glm::conjugate(q / norm);
-    const glm::dvec3 centre(box.center);
-    c.a = inverse * (c.a - centre);
-    c.b = inverse * (c.b - centre);
+    if (!c.valid || !intoBoxFrame(c, box)) return true;
     const glm::dvec3 half = glm::dvec3(box.halfExtents) * (1.0 + 1e-6) + c.radius;
     Span span;
     for (int axis = 0; axis < 3; ++axis) clip(span, c.a[axis], c.b[axis], -half[axis], half[axis]);

@@ -576,6 +576,28 @@ TEST(StaticWorldPlane, IsOnlyPlaneKnowsHolesBordersAndNeighbours) {
     EXPECT_FALSE(loose.isOnlyPlane(region)) << "a world whose surface tolerance is not the default";
 }
 
+namespace {
+
+// A swept sphere inside the capsule from `a` along `d` of radius `radius`: smaller, between two
+// points of the axis within `along` of its length, pushed sideways by what the radius difference
+// leaves.
+SegmentCast castInside(ftest::Random& random, const ftest::DVec3& a, const ftest::DVec3& d, float radius,
+                       double along) {
+    const double r = radius * random.uniform(0, 0.9);
+    const double slack = (radius - r) * 0.9;
+    const ftest::DVec3 side =
+        glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
+        random.uniform(0, slack);
+    const ftest::DVec3 from = a + d * random.uniform(0, along) + side, to = a + d * random.uniform(0, along) + side;
+    SegmentCast cast;
+    cast.origin = RVec3(from);
+    cast.displacement = Vec3(to - from);
+    cast.radius = static_cast<float>(r);
+    return cast;
+}
+
+}  // namespace
+
 // mayTouch's promise, checked against the casts: when it says no surface comes within the
 // capsule, no sphere cast inside the capsule (along it, across it, back) hits anything.
 TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
@@ -597,18 +619,7 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
             ++clear;
             const ftest::DVec3 a = ftest::toD(capsule.origin), d = ftest::toD(capsule.displacement);
             for (int k = 0; k < 8; ++k) {
-                // A smaller sphere between two points of the capsule's axis, pushed sideways by
-                // what the radius difference leaves.
-                const double r = capsule.radius * random.uniform(0, 0.9);
-                const double slack = (capsule.radius - r) * 0.9;
-                const ftest::DVec3 side =
-                    glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
-                    random.uniform(0, slack);
-                const ftest::DVec3 from = a + d * random.uniform(0, 1) + side, to = a + d * random.uniform(0, 1) + side;
-                SegmentCast cast;
-                cast.origin = RVec3(from);
-                cast.displacement = Vec3(to - from);
-                cast.radius = static_cast<float>(r);
+                const SegmentCast cast = castInside(random, a, d, capsule.radius, 1.0);
                 CastHit hit;
                 EXPECT_FALSE(world.castSegment(cast, hit)) << "round " << round << " capsule " << i << " cast " << k;
             }
@@ -651,18 +662,8 @@ TEST(StaticWorldTouch, NoCastBeforeTheFirstTouchHits) {
             }
             const ftest::DVec3 a = ftest::toD(capsule.origin), d = ftest::toD(capsule.displacement) * reach;
             for (int k = 0; k < 8; ++k) {
-                const double r = capsule.radius * random.uniform(0, 0.9);
-                const double slack = (capsule.radius - r) * 0.9;
-                const ftest::DVec3 side =
-                    glm::normalize(ftest::DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1))) *
-                    random.uniform(0, slack);
                 // 0.999: the cut's own end is where the first surface may touch.
-                const ftest::DVec3 from = a + d * random.uniform(0, 0.999) + side,
-                                   to = a + d * random.uniform(0, 0.999) + side;
-                SegmentCast cast;
-                cast.origin = RVec3(from);
-                cast.displacement = Vec3(to - from);
-                cast.radius = static_cast<float>(r);
+                const SegmentCast cast = castInside(random, a, d, capsule.radius, 0.999);
                 CastHit hit;
                 EXPECT_FALSE(world.castSegment(cast, hit)) << "round " << round << " capsule " << i << " cast " << k;
             }
