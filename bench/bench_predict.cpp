@@ -8,7 +8,7 @@
 /// than 4 iterations. scripts/bench.sh runs repetitions and prints these ratios.
 /// The inputs are in bench_scenes.h (shared with count_instructions.cpp).
 
-#include "bench_scenes.h"
+#include "bench_throws.h"
 
 #include <foresight/foresight.h>
 
@@ -37,26 +37,7 @@ void BM_Projectile(benchmark::State& state, ProjectileMethod method, float frict
     settings.method = method;
     settings.friction = friction;
     settings.step = kStep;
-    std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kFuse, settings, 256));
-
-    std::uint64_t bounces = 0;
-    for (auto _ : state) {
-        for (const Throw& t : throws) {
-            ProjectileResult result;
-            const Status status =
-                predictProjectile(t.position, t.velocity, kFuse, settings, &world, trajectory, result);
-            if (status != Status::Ok) {
-                state.SkipWithError(statusMessage(status));
-                return;
-            }
-            bounces += result.bounces;
-            benchmark::DoNotOptimize(result);
-        }
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * kThrowCount);
-    state.counters["bounces/throw"] =
-        static_cast<double>(bounces) / static_cast<double>(state.iterations() * kThrowCount);
+    timeThrows(state, throws, kFuse, settings, world, true);
 }
 // The article's settings (no friction: landed grenades slide on for the rest of the fuse).
 BENCHMARK_CAPTURE(BM_Projectile, Stepped, ProjectileMethod::Stepped, 0.0f);

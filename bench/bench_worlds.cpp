@@ -58,7 +58,7 @@
 /// with wall and CPU time (Embree builds with every core; Bullet with one) and the growth of
 /// the resident memory (approximate: the allocator may reuse freed pages).
 
-#include "bench_scenes.h"
+#include "bench_throws.h"
 
 #include <foresight/bullet_world.h>
 #include <foresight/embree_world.h>
@@ -862,25 +862,7 @@ void BM_DemoLevel(benchmark::State& state, LevelWorld which, ProjectileMethod me
     const CollisionWorld& world = levelWorld(w, which);
     ProjectileSettings settings;  // the defaults: 0.02 s step (50 Hz), restitution 0.5
     settings.method = method;
-    std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kLevelFuse, settings, 256));
-    std::uint64_t bounces = 0;
-    for (auto _ : state) {
-        for (const foresight_bench::Throw& t : w.throws) {
-            ProjectileResult result;
-            const Status status =
-                predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result);
-            if (status != Status::Ok) {
-                state.SkipWithError(statusMessage(status));
-                return;
-            }
-            bounces += result.bounces;
-            benchmark::DoNotOptimize(result);
-        }
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * kLevelThrowCount);
-    state.counters["bounces/throw"] =
-        static_cast<double>(bounces) / static_cast<double>(state.iterations() * kLevelThrowCount);
+    timeThrows(state, w.throws, kLevelFuse, settings, world, true);
 }
 // clang-format off (names with slashes: BM_DemoLevel/Embree/Exact)
 BENCHMARK_CAPTURE(BM_DemoLevel, Embree / Exact, LevelWorld::Embree, ProjectileMethod::Exact)
@@ -1067,21 +1049,7 @@ void BM_EngineThrowPredict(benchmark::State& state, LevelWorld which) {
     compareEngineOnce();
     const CollisionWorld& world = levelWorld(w, which);
     const ProjectileSettings settings = engineSettings();
-    std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kLevelFuse, settings, 256));
-    for (auto _ : state) {
-        for (const foresight_bench::Throw& t : w.throws) {
-            ProjectileResult result;
-            const Status status =
-                predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result);
-            if (status != Status::Ok) {
-                state.SkipWithError(statusMessage(status));
-                return;
-            }
-            benchmark::DoNotOptimize(result);
-        }
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * kLevelThrowCount);
+    timeThrows(state, w.throws, kLevelFuse, settings, world, false);
 }
 
 void BM_EngineThrowBulletStep(benchmark::State& state) {
