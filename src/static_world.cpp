@@ -432,6 +432,17 @@ bool intoBoxFrame(Capsule& c, const OrientedBox& box) {
     return true;
 }
 
+// The heights of the capsule's ends above the plane; false when its normal has no length.
+bool planeHeights(const Capsule& c, const Plane& plane, double& sa, double& sb) {
+    const glm::dvec3 n(plane.normal);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) return false;
+    const double d = static_cast<double>(plane.distance);
+    sa = (glm::dot(n, c.a) - d) / length;
+    sb = (glm::dot(n, c.b) - d) / length;
+    return true;
+}
+
 // Whether the boxes [lo, hi] and the capsule's bounds overlap.
 bool boundsMeet(const Capsule& c, const glm::dvec3& lo, const glm::dvec3& hi) {
     const glm::dvec3 clo = glm::min(c.a, c.b) - c.radius, chi = glm::max(c.a, c.b) + c.radius;
@@ -442,12 +453,8 @@ bool boundsMeet(const Capsule& c, const glm::dvec3& lo, const glm::dvec3& hi) {
 
 bool mayTouch(const SegmentCast& capsule, const Plane& plane) {
     const Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
-    const glm::dvec3 n(plane.normal);
-    const double length = glm::length(n);
-    if (!(length > 0.0)) return true;
-    const double d = static_cast<double>(plane.distance);
-    const double sa = (glm::dot(n, c.a) - d) / length, sb = (glm::dot(n, c.b) - d) / length;
+    double sa = 0.0, sb = 0.0;
+    if (!c.valid || !planeHeights(c, plane, sa, sb)) return true;
     return !((sa > c.radius && sb > c.radius) || (sa < -c.radius && sb < -c.radius));
 }
 
@@ -522,13 +529,10 @@ bool touchAt(const Span& span, float& fraction) {
 bool firstTouch(const SegmentCast& capsule, const Plane& plane, float& fraction) {
     fraction = 0.0f;
     const Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
-    const glm::dvec3 n(plane.normal);
-    const double length = glm::length(n);
-    if (!(length > 0.0)) return true;
-    const double d = static_cast<double>(plane.distance);
+    double sa = 0.0, sb = 0.0;
+    if (!c.valid || !planeHeights(c, plane, sa, sb)) return true;
     Span span;
-    clip(span, (glm::dot(n, c.a) - d) / length, (glm::dot(n, c.b) - d) / length, -c.radius, c.radius);
+    clip(span, sa, sb, -c.radius, c.radius);
     return touchAt(span, fraction);
 }
 
