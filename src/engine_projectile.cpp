@@ -20,6 +20,7 @@
 //     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
 #include "engine_internal.h"
+#include "path_capsule.h"
 
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
@@ -189,19 +190,6 @@ private:
         return StepOutcome::Next;
     }
 
-    // How far mCoastPositions[1 .. n-1] stray from the chord from mCoastPositions[0] to [n].
-    double chordBend(std::uint64_t n) const {
-        const DVec3 a = mCoastPositions[0], chord = mCoastPositions[n] - a;
-        const double chordSquared = glm::dot(chord, chord);
-        double bend = 0.0;
-        for (std::uint64_t j = 1; j < n; ++j) {
-            const DVec3 offset = mCoastPositions[j] - a;
-            const double t = chordSquared > 0.0 ? std::clamp(glm::dot(offset, chord) / chordSquared, 0.0, 1.0) : 0.0;
-            bend = std::max(bend, glm::length(offset - chord * t));
-        }
-        return bend;
-    }
-
     // What a step changes (contactCoast takes steps on trial and may have to undo them).
     struct Snapshot {
         DVec3 position, velocity, angular, pushVelocity, substepPosition, lastNormal, contactNormal;
@@ -296,15 +284,12 @@ private:
         // step's travel into it; Jolt's axis probes reach 3 times the contact reach; Rapier's and
         // Box2D's closest-point probes start 0.05 m behind and reach r + reach + 0.1 with a probe
         // sphere as large. Twice the travel, and 0.01 m more.
-        const DVec3 a = mCoastPositions[0];
-        const double bend = chordBend(taken);
+        const std::span<const DVec3> path(mCoastPositions.data(), taken + 1);
         const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
         const double reach = contactReach();
         const double extent =
             (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) + 2.0 * travel + 0.01;
-        region.capsule.origin = toR(a);
-        region.capsule.displacement = toF(mCoastPositions[taken] - toD(region.capsule.origin));
-        region.capsule.radius = static_cast<float>((extent + bend + 1e-3) * (1.0 + 1e-5));
+        region.capsule = pathCapsule(path, extent);
         // isOnlyPlane promises the answers of casts that start clear of the plane: a sphere that
         // sinks into a floor of triangles meets their shared edges (and tilted normals there),
         // which the plane alone has not.
@@ -393,13 +378,8 @@ private:
             mCoastPositions[j] = position;
             mCoastVelocities[j] = velocity;
         }
-        const DVec3 a = mCoastPositions[0];
-        const double bend = chordBend(n);
-        SegmentCast capsule;
-        capsule.origin = toR(a);
-        capsule.displacement = toF(mCoastPositions[n] - toD(capsule.origin));
-        // The casts' own margins: the float rounding of origin and displacement, 1 mm besides.
-        capsule.radius = static_cast<float>((mRadius + contactReach() + bend + 1e-3) * (1.0 + 1e-5));
+        const SegmentCast capsule =
+            pathCapsule(std::span<const DVec3>(mCoastPositions.data(), n + 1), mRadius + contactReach());
         if (mWorld->mayTouch(capsule)) {
             mCoastSteps = std::max<std::uint64_t>(mCoastSteps / 2, 2);
             if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again

@@ -2,6 +2,7 @@
 
 #include "engine_internal.h"
 #include "internal.h"
+#include "path_capsule.h"
 
 #include <algorithm>
 #include <array>
@@ -187,7 +188,9 @@ public:
         mBody = {start, startVelocity};
         mRecorder.add(0.0, TrajectoryEvent::Start, mBody.position, mBody.velocity);
         const double step = decimalValue(mSettings.step);
-        std::uint64_t gridIndex = 0;  // step points recorded so far
+        mStep = step;
+        mEndTime = endTime;
+        std::uint64_t& gridIndex = mGridIndex;  // step points recorded so far
         while (mTime < endTime && !mStopped) {
             const double gridTime = std::min(static_cast<double>(gridIndex + 1) * step, endTime);
             if (mTime >= gridTime) {  // an impact landed exactly on the grid
@@ -266,8 +269,13 @@ private:
             }
         }
         const DVec3 p1 = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
+        // In free flight (no surface near that a cast could start on), the chord may lie in a
+        // stretch that one world query cleared (clearAhead): it would hit nothing.
+        const bool freeFlight = !mHasLastSurface && !mHadImpact && !mHadContact;
+        if (!freeFlight) mClearedGrid = 0;
+        const bool cleared = freeFlight && (mGridIndex < mClearedGrid || clearAhead(p0, v0));
         CastHit hit;
-        if (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit)) {
+        if (!cleared && castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit)) {
             const Impact found = locateImpact(p0, v0, mGravity, duration, hit, mHasLastSurface, mLastSurfaceNormal);
             arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
@@ -285,6 +293,47 @@ private:
             return false;
         }
         mBody = {p1, v0 + mGravity * duration};
+        return true;
+    }
+
+    // Clears the free flight from (p0, v0) at mTime over the next grid steps with one world
+    // query (path_capsule.h): sets mClearedGrid to the grid point that ends the last step whose
+    // chord surely hits nothing, and returns whether that covers the step from mTime. The horizon
+    // doubles after a clear capsule and halves after a touched one; after a query that cleared
+    // nothing (a surface near, or a world that cannot answer: CollisionWorld::firstTouch's
+    // default), the chords are cast one by one for a while, longer each time.
+    bool clearAhead(const DVec3& p0, const DVec3& v0) {
+        if (mClearWait > 0) {
+            --mClearWait;
+            return false;
+        }
+        const std::uint64_t n = mClearSteps;
+        std::uint64_t points = 1;
+        mClearPath[0] = p0;
+        for (std::uint64_t j = 1; j <= n; ++j) {
+            // run()'s grid points (the end time last).
+            const double t = std::min(static_cast<double>(mGridIndex + j) * mStep, mEndTime);
+            const double s = t - mTime;
+            mClearPath[points++] = p0 + v0 * s + 0.5 * mGravity * s * s;
+            if (t >= mEndTime) break;
+        }
+        if (points < 2) return false;
+        const std::span<const DVec3> path(mClearPath.data(), points);
+        const SegmentCast capsule = pathCapsule(path, mSettings.radius);
+        float fraction = 1.0f;
+        const std::size_t clear = mWorld.firstTouch(capsule, fraction) ? clearChords(path, fraction) : points - 1;
+        if (clear + 1 == points) {
+            mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, kMaxClearSteps);
+            mClearBackoff = 2;
+        } else {
+            mClearSteps = std::max<std::uint64_t>(mClearSteps / 2, 4);
+        }
+        if (clear == 0) {
+            mClearWait = mClearBackoff;
+            mClearBackoff = std::min<std::uint64_t>(mClearBackoff * 2, kMaxClearSteps);
+            return false;
+        }
+        mClearedGrid = mGridIndex + clear;
         return true;
     }
 
@@ -671,6 +720,13 @@ private:
     int mRecentCount = 0;
     unsigned mRecentOldest = 0;
     bool mHadContact = false;  // mContactNormal and mContactPoint are set
+    // The step grid of run(), and what clearAhead keeps.
+    double mStep = 0.0, mEndTime = 0.0;
+    std::uint64_t mGridIndex = 0;
+    static constexpr std::uint64_t kMaxClearSteps = 64;
+    std::uint64_t mClearedGrid = 0;  // the chords of this free flight up to this grid point hit nothing
+    std::uint64_t mClearSteps = 8, mClearWait = 0, mClearBackoff = 2;
+    std::array<DVec3, kMaxClearSteps + 1> mClearPath{};
     bool mAtRest = false;
     bool mStopped = false;
     std::uint32_t mEvents = 0;

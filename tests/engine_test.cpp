@@ -323,41 +323,6 @@ TEST(EngineProjectile, RenderedPositionBetweenSteps) {
 
 namespace {
 
-// Forwards to a world and counts the queries; with `answerTouch` false it leaves mayTouch at
-// CollisionWorld's default (always true), so the Engine method casts every free-flight step
-// (and firstTouch says "at once"); with `answerPlane` false it leaves isOnlyPlane at its default
-// (false), so it casts every step in contact.
-class CountingWorld final : public CollisionWorld {
-public:
-    CountingWorld(const CollisionWorld& world, bool answerTouch, bool answerPlane = false)
-        : mWorld(world), mAnswerTouch(answerTouch), mAnswerPlane(answerPlane) {}
-    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
-        ++casts;
-        return mWorld.castSegment(cast, hit);
-    }
-    bool mayTouch(const SegmentCast& capsule) const override {
-        ++touches;
-        return mAnswerTouch ? mWorld.mayTouch(capsule) : true;
-    }
-    bool firstTouch(const SegmentCast& capsule, float& fraction) const override {
-        ++touches;
-        fraction = 0.0f;
-        return mAnswerTouch ? mWorld.firstTouch(capsule, fraction) : true;
-    }
-    bool isOnlyPlane(const PlaneRegion& region) const override {
-        if (!mAnswerPlane) return false;
-        ++planeQueries;
-        const bool only = mWorld.isOnlyPlane(region);
-        planePromises += only ? 1 : 0;
-        return only;
-    }
-    mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0;
-
-private:
-    const CollisionWorld& mWorld;
-    bool mAnswerTouch, mAnswerPlane;
-};
-
 // An engine's profile at 30, 60, 90 or 120 Hz, a sphere of 5 to 30 cm, restitution from
 // `lowestRestitution` to lowestRestitution + 0.6, friction 0 to 0.6.
 ProjectileSettings randomEngineSettings(ftest::Random& random, PhysicsEngine engine, double lowestRestitution) {
@@ -372,25 +337,6 @@ ProjectileSettings randomEngineSettings(ftest::Random& random, PhysicsEngine eng
     return settings;
 }
 
-StaticWorld randomScene(ftest::Random& random) {
-    StaticWorld world;
-    EXPECT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
-    for (int i = 0; i < 3; ++i) {
-        OrientedBox box;
-        const double around = random.uniform(0, 2 * M_PI), distance = random.uniform(3, 9);
-        box.center = RVec3(distance * std::cos(around), random.uniform(0.5, 2), distance * std::sin(around));
-        box.halfExtents = Vec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1, 4));
-        box.orientation = glm::angleAxis(static_cast<float>(random.uniform(0, M_PI)), Vec3(0, 1, 0));
-        EXPECT_EQ(world.add(box), Status::Ok);
-    }
-    const double x = random.uniform(-6, 6), z = random.uniform(-6, 6);
-    EXPECT_EQ(world.add(Sphere{RVec3(x, random.uniform(0, 3), z), static_cast<float>(random.uniform(0.3, 1.0))}),
-              Status::Ok);
-    // A slanted roof triangle overhead: a parallel ceiling must stop coasting too.
-    EXPECT_EQ(world.add(Triangle{RVec3(-8, 5.5, -8), RVec3(8, 6.5, -8), RVec3(0, 6, 8)}), Status::Ok);
-    return world;
-}
-
 }  // namespace
 
 // Coasting (one mayTouch query for many free-flight steps) must give exactly the steps of casting
@@ -399,7 +345,7 @@ TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
     ftest::Random random(2026);
     std::size_t castsEveryStep = 0, castsCoasting = 0;
     for (int round = 0; round < 40; ++round) {
-        const StaticWorld world = randomScene(random);
+        const StaticWorld world = ftest::randomScene(random);
         for (PhysicsEngine engine :
              {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX, PhysicsEngine::Rapier,
               PhysicsEngine::Bullet, PhysicsEngine::Godot3, PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
@@ -409,7 +355,7 @@ TEST(EngineProjectile, CoastingGivesTheStepsOfCastingEveryStep) {
             const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(1, 9)),
                                 static_cast<float>(speed * std::sin(heading)));
             const float time = 3.0f;
-            CountingWorld plain(world, false), coasting(world, true);
+            ftest::CountingWorld plain(world, false), coasting(world, true);
             std::vector<TrajectoryPoint> a(400), b(400);
             ProjectileResult ra, rb;
             ASSERT_EQ(predictProjectile(start, velocity, time, settings, &plain, a, ra), Status::Ok);
@@ -447,7 +393,7 @@ StaticWorld tiledScene(ftest::Random& random, int half) {
             EXPECT_EQ(world.add(Triangle{a, d, c}), Status::Ok);
         }
     }
-    const StaticWorld scene = randomScene(random);
+    const StaticWorld scene = ftest::randomScene(random);
     for (const OrientedBox& box : scene.boxes()) EXPECT_EQ(world.add(box), Status::Ok);
     for (const Sphere& sphere : scene.spheres()) EXPECT_EQ(world.add(sphere), Status::Ok);
     return world;
@@ -466,7 +412,7 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
     double worst = 0.0;
     for (int round = 0; round < 24; ++round) {
         const bool tiled = round % 2 == 1;
-        const StaticWorld world = tiled ? tiledScene(random, 7) : randomScene(random);
+        const StaticWorld world = tiled ? tiledScene(random, 7) : ftest::randomScene(random);
         for (PhysicsEngine engine :
              {PhysicsEngine::Custom, PhysicsEngine::Jolt, PhysicsEngine::PhysX, PhysicsEngine::Rapier,
               PhysicsEngine::Bullet, PhysicsEngine::Godot3, PhysicsEngine::Godot3Bullet, PhysicsEngine::Box2D}) {
@@ -479,7 +425,7 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
                                 static_cast<float>(random.uniform(-2, 2)),
                                 static_cast<float>(speed * std::sin(heading)));
             const float time = 4.0f;
-            CountingWorld plain(world, true, false), coasting(world, true, true);
+            ftest::CountingWorld plain(world, true, false), coasting(world, true, true);
             std::vector<TrajectoryPoint> a(600), b(600);
             ProjectileResult ra, rb;
             ASSERT_EQ(predictProjectile(start, velocity, time, settings, &plain, a, ra), Status::Ok);
@@ -604,7 +550,7 @@ TEST(StaticWorldTouch, NoCastInsideAClearCapsuleHits) {
     ftest::Random random(77);
     int clear = 0, touched = 0;
     for (int round = 0; round < 200; ++round) {
-        const StaticWorld world = randomScene(random);
+        const StaticWorld world = ftest::randomScene(random);
         for (int i = 0; i < 50; ++i) {
             SegmentCast capsule;
             capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));
@@ -637,7 +583,7 @@ TEST(StaticWorldTouch, NoCastBeforeTheFirstTouchHits) {
     ftest::Random random(78);
     int clear = 0, cut = 0, atOnce = 0;
     for (int round = 0; round < 200; ++round) {
-        const StaticWorld world = randomScene(random);
+        const StaticWorld world = ftest::randomScene(random);
         for (int i = 0; i < 50; ++i) {
             SegmentCast capsule;
             capsule.origin = RVec3(random.uniform(-10, 10), random.uniform(-1, 8), random.uniform(-10, 10));

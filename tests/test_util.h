@@ -292,6 +292,63 @@ private:
     std::uint64_t mHash = 14695981039346656037ull;
 };
 
+/// Forwards to a world and counts the queries; with `answerTouch` false it leaves mayTouch at
+/// CollisionWorld's default (always true), so the predictors cast every free-flight step
+/// (and firstTouch says "at once"); with `answerPlane` false it leaves isOnlyPlane at its default
+/// (false), so it casts every step in contact.
+class CountingWorld final : public foresight::CollisionWorld {
+public:
+    CountingWorld(const foresight::CollisionWorld& world, bool answerTouch, bool answerPlane = false)
+        : mWorld(world), mAnswerTouch(answerTouch), mAnswerPlane(answerPlane) {}
+    bool castSegment(const foresight::SegmentCast& cast, foresight::CastHit& hit) const override {
+        ++casts;
+        return mWorld.castSegment(cast, hit);
+    }
+    bool mayTouch(const foresight::SegmentCast& capsule) const override {
+        ++touches;
+        return mAnswerTouch ? mWorld.mayTouch(capsule) : true;
+    }
+    bool firstTouch(const foresight::SegmentCast& capsule, float& fraction) const override {
+        ++touches;
+        fraction = 0.0f;
+        return mAnswerTouch ? mWorld.firstTouch(capsule, fraction) : true;
+    }
+    bool isOnlyPlane(const foresight::PlaneRegion& region) const override {
+        if (!mAnswerPlane) return false;
+        ++planeQueries;
+        const bool only = mWorld.isOnlyPlane(region);
+        planePromises += only ? 1 : 0;
+        return only;
+    }
+    mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0;
+
+private:
+    const foresight::CollisionWorld& mWorld;
+    bool mAnswerTouch, mAnswerPlane;
+};
+
+/// A floor plane (y = 0, normal +Y), three box walls 3 to 9 m around the origin, a sphere and a
+/// slanted roof triangle 5.5 to 6.5 m up.
+inline foresight::StaticWorld randomScene(Random& random) {
+    using namespace foresight;
+    StaticWorld world;
+    EXPECT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    for (int i = 0; i < 3; ++i) {
+        OrientedBox box;
+        const double around = random.uniform(0, 2 * M_PI), distance = random.uniform(3, 9);
+        box.center = RVec3(distance * std::cos(around), random.uniform(0.5, 2), distance * std::sin(around));
+        box.halfExtents = Vec3(random.uniform(0.2, 0.8), random.uniform(0.5, 2.5), random.uniform(1, 4));
+        box.orientation = glm::angleAxis(static_cast<float>(random.uniform(0, M_PI)), Vec3(0, 1, 0));
+        EXPECT_EQ(world.add(box), Status::Ok);
+    }
+    const double x = random.uniform(-6, 6), z = random.uniform(-6, 6);
+    EXPECT_EQ(world.add(Sphere{RVec3(x, random.uniform(0, 3), z), static_cast<float>(random.uniform(0.3, 1.0))}),
+              Status::Ok);
+    // A slanted roof triangle overhead: a parallel ceiling must stop coasting too.
+    EXPECT_EQ(world.add(Triangle{RVec3(-8, 5.5, -8), RVec3(8, 6.5, -8), RVec3(0, 6, 8)}), Status::Ok);
+    return world;
+}
+
 }  // namespace ftest
 
 #define EXPECT_VEC_NEAR(a, b, tol) EXPECT_TRUE(::ftest::vecNear((a), (b), (tol)))
