@@ -96,23 +96,6 @@ struct Surface {
     int pointCount = 0;
 };
 
-// The world that contactCoast steps against: one one-sided plane with a material, answered by
-// the same shape test as StaticWorld's.
-class PlaneWorld final : public CollisionWorld {
-public:
-    PlaneWorld(const Plane& plane, const SurfaceMaterial& material) : mPlane(plane), mMaterial(material) {}
-    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
-        ClosestHitCaster caster(cast);
-        caster.test(mPlane, mMaterial);
-        return caster.result(hit);
-    }
-    bool mayTouch(const SegmentCast& capsule) const override { return foresight::mayTouch(capsule, mPlane); }
-
-private:
-    Plane mPlane;
-    SurfaceMaterial mMaterial;
-};
-
 class EngineRun {
 public:
     EngineRun(const ProjectileSettings& settings, const CollisionWorld& world, TrajectoryRecorder& recorder,

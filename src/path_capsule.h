@@ -10,7 +10,12 @@
 // CollisionWorld::mayTouch says nothing touches that capsule, or CollisionWorld::firstTouch says
 // how far along it nothing does, those casts would have hit nothing: the predictor skips them
 // and computes exactly what it would have computed with them.
+//
+// In contact with one plane (rolling, sliding), the steps' casts and probes are answered by a
+// world that holds that plane alone (PlaneWorld), and CollisionWorld::isOnlyPlane promises that
+// the real world would have answered the same within the capsule around their path.
 
+#include <foresight/static_world.h>
 #include <foresight/world.h>
 
 #include "internal.h"
@@ -64,6 +69,24 @@ inline std::size_t clearChords(std::span<const DVec3> points, float fraction) {
     while (clear + 1 < points.size() && glm::dot(points[clear + 1] - a, chord) / length < limit) ++clear;
     return clear;
 }
+
+// The world that a contact coast steps against: one one-sided plane with a material, answered by
+// the same shape test as StaticWorld's.
+class PlaneWorld final : public CollisionWorld {
+public:
+    PlaneWorld() = default;
+    PlaneWorld(const Plane& plane, const SurfaceMaterial& material) : mPlane(plane), mMaterial(material) {}
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
+        ClosestHitCaster caster(cast);
+        caster.test(mPlane, mMaterial);
+        return caster.result(hit);
+    }
+    bool mayTouch(const SegmentCast& capsule) const override { return foresight::mayTouch(capsule, mPlane); }
+
+private:
+    Plane mPlane;
+    SurfaceMaterial mMaterial;
+};
 
 }  // namespace detail
 FORESIGHT_NAMESPACE_END

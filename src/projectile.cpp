@@ -283,7 +283,7 @@ private:
         if (returnsToSurface) {
             const DVec3& n = mLastSurfaceNormal;
             const double lift = liftDistance();
-            if (mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
+            if (world().castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit)) {
                 arriveAt(p0, v0, duration, toD(hit.normal), toD(hit.position));
                 return false;
             }
@@ -342,7 +342,8 @@ private:
     // by liftDistance(), so that the surface cannot mask the obstacles ahead. A chord that starts
     // a hair behind a surface the body is on (seenFromBehind) is cast again from its front.
     bool castPath(const DVec3& p0, const DVec3& p1, bool onSurface, const DVec3& surface, CastHit& hit) const {
-        if (!mWorld.castSegment(makeChordCast(p0 + mCastOffset, p1 + mCastOffset, mSettings.radius), hit)) return false;
+        if (!world().castSegment(makeChordCast(p0 + mCastOffset, p1 + mCastOffset, mSettings.radius), hit))
+            return false;
         if (!onSurface && !mHadImpact && !mHadContact) return true;  // in free flight
         return recastOffSurfaces(p0, p1, onSurface, surface, hit);
     }
@@ -356,7 +357,7 @@ private:
             const DVec3 nudge = *n * (2.0 * behindTolerance(start));
             start += nudge;
             end += nudge;
-            if (!mWorld.castSegment(makeChordCast(start + mCastOffset, end + mCastOffset, mSettings.radius), hit))
+            if (!world().castSegment(makeChordCast(start + mCastOffset, end + mCastOffset, mSettings.radius), hit))
                 return false;
         }
         if (!onSurface) return true;
@@ -368,7 +369,7 @@ private:
         };
         if (!isThatSurface(hit)) return true;
         CastHit blocker;
-        if (mWorld.castSegment(makeCast(start, start + surface * lift, mSettings.radius), blocker) &&
+        if (world().castSegment(makeCast(start, start + surface * lift, mSettings.radius), blocker) &&
             !isThatSurface(blocker)) {
             // Wedged: another surface is right above this one. That one is hit at once.
             hit = blocker;
@@ -377,7 +378,7 @@ private:
             return true;
         }
         const DVec3 off = surface * lift + mCastOffset;
-        return mWorld.castSegment(makeChordCast(start + off, end + off, mSettings.radius), hit);
+        return world().castSegment(makeChordCast(start + off, end + off, mSettings.radius), hit);
     }
 
     // How far behind a surface it is on rounding can leave the body: a few ulps of Real, and
@@ -505,8 +506,68 @@ private:
         mRecent[static_cast<std::size_t>(slot)] = {n, point};
     }
 
+    // The world that answers the queries of this step: the contact plane alone within a stretch
+    // of sliding that slideAhead cleared, else the world.
+    const CollisionWorld& world() const {
+        return mInContact && mGridIndex < mSlidGrid ? static_cast<const CollisionWorld&>(mPlaneWorld) : mWorld;
+    }
+
+    // Sliding on one plane over many grid steps with one world query: the steps' chord casts and
+    // probes (each within the body's radius and 2 lift distances of its path) are answered by
+    // the plane the last probe found, held alone in mPlaneWorld, when the world promises
+    // (CollisionWorld::isOnlyPlane) that within the capsule around that path it is that plane
+    // and nothing else. The path is bounded before it is known: the acceleration in contact
+    // (gravity along the plane, friction) is at most A, so over s seconds the body stays within
+    // A s^2 / 2 of p0 + v0 s. Sets mSlidGrid (the grid point the stretch ends at), or leaves the
+    // steps to the world: after a crease, an impact, or a refusal (then for a while, longer each
+    // time).
+    void slideAhead() {
+        if (mGridIndex < mSlidGrid) return;
+        mSlidGrid = 0;
+        if (!mHasSupport || mSlideWait > 0) {
+            mSlideWait -= mSlideWait > 0 ? 1 : 0;
+            return;
+        }
+        const DVec3 n = toD(mSupport.normal);
+        const double lift = liftDistance();
+        // A crease (advanceInContact lifts its casts off the obstacle): not a plane alone.
+        if (mHadImpact && glm::dot(mLastSurfaceNormal, n) < 0.999 &&
+            std::abs(glm::dot(mLastSurfaceNormal, mBody.position - mLastSurfacePoint)) <= 2.0 * lift)
+            return;
+        if (glm::dot(mContactNormal, n) < 1.0 - 1e-12) return;  // the contact moved to another surface
+        const std::uint64_t steps = mSlideSteps;
+        const double end = std::min(static_cast<double>(mGridIndex + steps) * mStep, mEndTime);
+        const double s = end - mTime;
+        if (!(s > 0.0)) return;
+        const double gn = glm::dot(mGravity, n);
+        const double accel = glm::length(mGravity - gn * n) + mSettings.friction * std::max(0.0, -gn);
+        const DVec3 p0 = mBody.position, along = mBody.velocity - glm::dot(mBody.velocity, n) * n;
+        const std::array<DVec3, 2> path{p0, p0 + along * s};
+        PlaneRegion region;
+        region.capsule = pathCapsule(path, mSettings.radius + 0.5 * accel * s * s + 2.0 * lift);
+        region.normal = mSupport.normal;
+        const DVec3 surface = toD(mSupport.position) - n * static_cast<double>(mSettings.radius);
+        region.point = toR(surface);
+        region.restitution = mSupport.restitution;
+        region.friction = mSupport.friction;
+        if (!mWorld.isOnlyPlane(region)) {
+            mSlideSteps = std::max<std::uint64_t>(mSlideSteps / 2, 4);
+            mSlideWait = mSlideBackoff;
+            mSlideBackoff = std::min<std::uint64_t>(mSlideBackoff * 2, kMaxClearSteps);
+            return;
+        }
+        Plane plane;
+        plane.normal = mSupport.normal;
+        plane.distance = static_cast<Real>(glm::dot(toD(plane.normal), surface));
+        mPlaneWorld = PlaneWorld(plane, SurfaceMaterial{mSupport.restitution, mSupport.friction});
+        mSlidGrid = mGridIndex + steps;
+        mSlideSteps = std::min<std::uint64_t>(mSlideSteps * 2, kMaxClearSteps);
+        mSlideBackoff = 2;
+    }
+
     // Sliding on the contact surface for up to h seconds. Returns true when h was covered.
     bool advanceInContact(double h) {
+        slideAhead();
         const DVec3 n = mContactNormal;
         const double gn = glm::dot(mGravity, n);
         const DVec3 gt = mGravity - gn * n;
@@ -570,7 +631,7 @@ private:
             // Back on the obstacle's plane: an impact if the obstacle is there (a probe), else
             // the crease has ended and the slide goes on past it.
             const DVec3& m = mLastSurfaceNormal;
-            if (mWorld.castSegment(makeCast(p1 + m * lift, p1 - m * lift, mSettings.radius), hit)) {
+            if (world().castSegment(makeCast(p1 + m * lift, p1 - m * lift, mSettings.radius), hit)) {
                 DVec3 p = backedOff(p1, v0 + a * duration);
                 p -= m * glm::dot(m, p - mLastSurfacePoint);
                 p += m * skinDistance(p);
@@ -602,16 +663,18 @@ private:
         mTime += duration;
         // Is the surface still under the new position? (An edge: fly off.)
         DVec3 probed = p1;  // where the probe ran
-        bool supported = mWorld.castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit);
+        bool supported = world().castSegment(makeCast(p1 + n * lift, p1 - n * lift, mSettings.radius), hit);
         if (supported && glm::dot(toD(hit.normal), n) < 0.05) {
             // The probe grazed a wall beside the surface (sliding along a concave edge, the probe
             // runs in the wall's plane): probe again that far off the wall, for the surface
             // under the body. The body stays there, clear of the wall.
             probed = p1 + toD(hit.normal) * lift;
-            supported = mWorld.castSegment(makeCast(probed + n * lift, probed - n * lift, mSettings.radius), hit) &&
+            supported = world().castSegment(makeCast(probed + n * lift, probed - n * lift, mSettings.radius), hit) &&
                         glm::dot(toD(hit.normal), n) >= 0.05;
         }
         if (supported) {
+            mSupport = hit;
+            mHasSupport = true;
             const DVec3 support = toD(hit.normal);
             // Onto the surface the probe found, along its normal only: the probe's hit point is
             // rounded to Real across the surface too, which could carry the body a hair behind a
@@ -631,6 +694,7 @@ private:
         } else {
             mBody.position = p1;
             mInContact = false;
+            mHasSupport = false;
             ++mEvents;
         }
         mBody.velocity = v1;
@@ -640,6 +704,8 @@ private:
     // An impact at the current state with surface normal n, `elapsed` after the last event.
     void impact(const DVec3& n, double elapsed) {
         ++mEvents;
+        mSlidGrid = 0;
+        mHasSupport = false;
         // Wedged between surfaces: eight impacts in a row, each within a nanosecond or a
         // micrometre of the one before (the body rattles in place).
         const bool stalled = elapsed <= 1e-9 || glm::length(mBody.position - mLastImpactPosition) <= 1e-6;
@@ -727,6 +793,12 @@ private:
     std::uint64_t mClearedGrid = 0;  // the chords of this free flight up to this grid point hit nothing
     std::uint64_t mClearSteps = 8, mClearWait = 0, mClearBackoff = 2;
     std::array<DVec3, kMaxClearSteps + 1> mClearPath{};
+    // What slideAhead keeps: the last probe's hit, and the plane world of a cleared stretch.
+    CastHit mSupport{};
+    bool mHasSupport = false;
+    PlaneWorld mPlaneWorld;
+    std::uint64_t mSlidGrid = 0;  // the steps in contact up to this grid point ask mPlaneWorld
+    std::uint64_t mSlideSteps = 8, mSlideWait = 0, mSlideBackoff = 2;
     bool mAtRest = false;
     bool mStopped = false;
     std::uint32_t mEvents = 0;

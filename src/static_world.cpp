@@ -634,10 +634,11 @@ PlaneRegionTester::PlaneRegionTester(const PlaneRegion& region) {
     mRadius = c.radius;
     mNormal = normal / length;
     mDistance = glm::dot(mNormal, point);
-    // The plane of a mesh's floor holds its vertices up to their float rounding; 10 um besides.
+    // The plane of a mesh's floor holds its vertices up to their float rounding (half an ulp,
+    // 6e-8 of the magnitude), and 1 um besides.
     const double magnitude = std::max(
         {std::abs(point.x), std::abs(point.y), std::abs(point.z), std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
-    mTolerance = 1e-5 + 1e-6 * magnitude;
+    mTolerance = 1e-6 + 1e-7 * magnitude;
     // The anchor must lie in the cross-section: the start within the radius of the plane.
     const double height = glm::dot(mNormal, mA) - mDistance;
     if (!(std::abs(height) < mRadius)) mFailed = true;
@@ -701,10 +702,13 @@ void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& ma
             return;
         }
     }
-    // Its hits' normals must be the plane's (a small triangle may tilt within the tolerance).
+    // Its hits' normals must be the plane's (a small triangle may tilt within the tolerance):
+    // within 4.5e-7 rad, so that a body sliding for seconds on a mesh's tilted floor, its
+    // tiles' normals that far apart by the rounding of their vertices, moves as on the plane
+    // to g 4.5e-7 t^2 / 2 (4e-5 m after 4 s).
     const DVec3 n = glm::cross(b - a, c - a);
     const double area2 = glm::length(n);
-    if (!(area2 > 0.0) || std::abs(glm::dot(n, mNormal)) / area2 < 1.0 - 1e-11 || !sameMaterial(material)) {
+    if (!(area2 > 0.0) || std::abs(glm::dot(n, mNormal)) / area2 < 1.0 - 1e-13 || !sameMaterial(material)) {
         mFailed = true;
         return;
     }

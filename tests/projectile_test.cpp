@@ -14,6 +14,7 @@
 #include <foresight/static_world.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -1379,4 +1380,79 @@ TEST(ProjectileExact, ClearingFreeFlightGivesTheTrajectoryOfCastingEveryChord) {
                 castsEveryChord);
     EXPECT_LT(static_cast<double>(queriesClearing), 0.67 * static_cast<double>(castsEveryChord))
         << queriesClearing << " queries clearing against " << castsEveryChord << " casting every chord";
+}
+
+// Sliding cleared ahead (CollisionWorld::isOnlyPlane for many steps on one plane, answered by
+// that plane alone) must give the trajectory of asking the world at every step, up to rounding:
+// the plane world holds the plane of the world's last probe (its float normal, its rounded hit
+// point), and the tiles of a mesh floor lie in one plane only up to the rounding of their
+// vertices; isOnlyPlane accepts normals within 4.5e-7 rad, which moves a slide by at most
+// g 4.5e-7 t^2 / 2, plus 1 um for the plane's offset. Level floors give the same bits. Once the
+// two differ, an impact (a wall's edge or corner) may magnify the difference as it would any
+// difference in the last bits, so the trajectories are compared up to there. Level and tilted
+// floors (a plane or a mesh of 1 m tiles), a wall, friction from 0.
+TEST(ProjectileExact, ClearingSlidesGivesTheTrajectoryOfAskingEveryStep) {
+    ftest::Random random(2718);
+    std::size_t queriesEveryStep = 0, queriesClearing = 0, promises = 0;
+    std::array<double, 4> worst{};
+    for (int round = 0; round < 100; ++round) {
+        StaticWorld world;
+        const double tilt = round % 2 == 0 ? 0.0 : random.uniform(0.05, 0.35);
+        const double azimuth = random.uniform(0, 2 * M_PI);
+        const DVec3 up(std::sin(tilt) * std::cos(azimuth), std::cos(tilt), std::sin(tilt) * std::sin(azimuth));
+        if (round % 4 < 2) {
+            ASSERT_EQ(world.add(foresight::Plane{ftest::toF(up), 0}), Status::Ok);
+        } else {
+            // Tiles in the plane through the origin with normal `up`.
+            const DVec3 u = glm::normalize(glm::cross(up, DVec3(0, 0, 1))), w = glm::cross(u, up);
+            const auto at = [&](int i, int j) { return ftest::toR(u * double(i) + w * double(j)); };
+            for (int i = -12; i < 12; ++i)
+                for (int j = -12; j < 12; ++j) {
+                    ASSERT_EQ(world.add(foresight::Triangle{at(i, j), at(i, j + 1), at(i + 1, j + 1)}), Status::Ok);
+                    ASSERT_EQ(world.add(foresight::Triangle{at(i, j), at(i + 1, j + 1), at(i + 1, j)}), Status::Ok);
+                }
+        }
+        foresight::OrientedBox wall;
+        wall.center = ftest::toR(up * 0.5 + DVec3(random.uniform(3, 6), 0, random.uniform(-3, 3)));
+        wall.halfExtents = Vec3(0.3f, 1.0f, 2.0f);
+        ASSERT_EQ(world.add(wall), Status::Ok);
+        ProjectileSettings settings;
+        settings.method = ProjectileMethod::Exact;
+        settings.radius = random.below(2) == 0 ? 0.0f : static_cast<float>(random.uniform(0.05, 0.3));
+        settings.restitution = static_cast<float>(random.uniform(0.1, 0.6));
+        settings.friction = random.below(2) == 0 ? 0.0f : static_cast<float>(random.uniform(0, 0.3));
+        const RVec3 start = ftest::toR(up * (static_cast<double>(settings.radius) + random.uniform(0.2, 1.0)));
+        const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(1, 8);
+        const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(-2, 1)),
+                            static_cast<float>(speed * std::sin(heading)));
+        ftest::CountingWorld every(world, true, false), clearing(world, true, true);
+        std::vector<TrajectoryPoint> a(4096), b(4096);
+        ProjectileResult ra, rb;
+        ASSERT_EQ(foresight::predictProjectile(start, velocity, 4.0f, settings, &every, a, ra), Status::Ok);
+        ASSERT_EQ(foresight::predictProjectile(start, velocity, 4.0f, settings, &clearing, b, rb), Status::Ok);
+        ASSERT_EQ(ra.trajectorySize, rb.trajectorySize) << "round " << round;
+        bool differs = false;
+        for (std::size_t i = 0; i < ra.trajectorySize; ++i) {
+            ASSERT_EQ(a[i].event, b[i].event) << "round " << round << " point " << i;
+            // Once the two differ, an impact (a wall's edge or corner) may magnify the difference
+            // like any difference in the last bits: compared up to there.
+            if (differs && a[i].event == TrajectoryEvent::Bounce) break;
+            const double t = a[i].time, error = glm::distance(ftest::toD(a[i].position), ftest::toD(b[i].position));
+            worst[round % 4] = std::max(worst[round % 4], error);
+            EXPECT_LE(error, 1e-6 + 0.5 * 9.81 * 4.5e-7 * t * t) << "round " << round << " point " << i;
+            differs = differs || error > 0.0;
+        }
+        queriesEveryStep += every.casts + every.touches;
+        queriesClearing += clearing.casts + clearing.touches + clearing.planeQueries;
+        promises += clearing.planePromises;
+    }
+    std::printf(
+        "clearing slides: %zu queries (%zu promises) against %zu asking every step; largest differences "
+        "(level plane, tilted plane, level tiles, tilted tiles): %.3g %.3g %.3g %.3g m\n",
+        queriesClearing, promises, queriesEveryStep, worst[0], worst[1], worst[2], worst[3]);
+    EXPECT_GT(promises, 50u);
+    // These throws land within a second and slide for the rest: clearing must save at least
+    // half the queries.
+    EXPECT_LT(static_cast<double>(queriesClearing), 0.5 * static_cast<double>(queriesEveryStep))
+        << queriesClearing << " queries clearing against " << queriesEveryStep << " asking every step";
 }
