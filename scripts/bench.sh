@@ -106,6 +106,20 @@ if [[ "${1:-}" == "--worlds" ]]; then
                 printf "  %-50s %6.2fx\n", label, r
             }
         }
+        # The time of a over the time of b (the inverse of their rates), at most target.
+        function timeRatio(label, a, b, target) {
+            if (!(a in rate) || !(b in rate) || rate[a] <= 0) {
+                printf "  %-50s not measured (filtered out?)\n", label
+                return
+            }
+            r = rate[b] / rate[a]
+            if (target > 0) {
+                printf "  %-50s %6.2fx  (target <= %gx: %s)\n", label, r, target, (r <= target ? "met" : "MISSED")
+                if (r > target) missed = 1
+            } else {
+                printf "  %-50s %6.2fx\n", label, r
+            }
+        }
         END {
             print "  Segment casts on the million-triangle mesh (radius 0):"
             show("EmbreeWorld::castSegment", "BM_Cast/Embree")
@@ -121,15 +135,19 @@ if [[ "${1:-}" == "--worlds" ]]; then
             show("Bullet convexSweepTest", "BM_Sweep/BulletConvexSweep")
             show("BulletWorld::castSegment", "BM_Sweep/BulletWorld")
             print "  Projectile predictions on the demo level (3 s at 50 Hz, 64 throws):"
-            split("Embree Bullet Static", worlds, " ")
-            split("EmbreeWorld BulletWorld StaticWorld(brute-force)", labels, " ")
-            for (i = 1; i <= 3; ++i)
+            split("Embree Bullet Static Callback", worlds, " ")
+            split("EmbreeWorld BulletWorld StaticWorld(brute-force) CallbackWorld(castSegment-only)", labels, " ")
+            for (i = 1; i <= 4; ++i)
                 for (m = 0; m < 2; ++m) {
                     method = m == 0 ? "Exact" : "Stepped"
                     show(labels[i] " " method, "BM_DemoLevel/" worlds[i] "/" method)
                 }
             ratio("Exact: EmbreeWorld / BulletWorld", "BM_DemoLevel/Embree/Exact", "BM_DemoLevel/Bullet/Exact", 0)
             ratio("Stepped: EmbreeWorld / BulletWorld", "BM_DemoLevel/Embree/Stepped", "BM_DemoLevel/Bullet/Stepped", 0)
+            timeRatio("Exact / Stepped time, EmbreeWorld", "BM_DemoLevel/Embree/Exact", "BM_DemoLevel/Embree/Stepped", 0.5)
+            timeRatio("Exact / Stepped time, StaticWorld", "BM_DemoLevel/Static/Exact", "BM_DemoLevel/Static/Stepped", 0.5)
+            timeRatio("Exact / Stepped time, callback world", "BM_DemoLevel/Callback/Exact", "BM_DemoLevel/Callback/Stepped", 1.0)
+            timeRatio("Exact / Stepped time, BulletWorld (info)", "BM_DemoLevel/Bullet/Exact", "BM_DemoLevel/Bullet/Stepped", 0)
             if (missed && strict == 1) exit 1
         }'
     exit 0
