@@ -182,7 +182,7 @@ public:
     ExactRun(const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
              ProjectileResult& result)
         : mSettings(settings), mWorld(world), mRecorder(recorder), mResult(result),
-          mGravity(decimalVector(settings.gravity)) {}
+          mGravity(decimalVector(settings.gravity)), mRegionQueries(world.regionQueryCost(settings.radius) <= 2.0f) {}
 
     Status run(const DVec3& start, const DVec3& startVelocity, double endTime) {
         mBody = {start, startVelocity};
@@ -303,6 +303,7 @@ private:
     // nothing (a surface near, or a world that cannot answer: CollisionWorld::firstTouch's
     // default), the chords are cast one by one for a while, longer each time.
     bool clearAhead(const DVec3& p0, const DVec3& v0) {
+        if (!mRegionQueries) return false;
         if (mClearWait > 0) {
             --mClearWait;
             return false;
@@ -524,6 +525,7 @@ private:
     void slideAhead() {
         if (mGridIndex < mSlidGrid) return;
         mSlidGrid = 0;
+        if (!mRegionQueries) return;
         if (!mHasSupport || mSlideWait > 0) {
             mSlideWait -= mSlideWait > 0 ? 1 : 0;
             return;
@@ -786,6 +788,7 @@ private:
     int mRecentCount = 0;
     unsigned mRecentOldest = 0;
     bool mHadContact = false;  // mContactNormal and mContactPoint are set
+    bool mRegionQueries;       // whether clearAhead and slideAhead may ask (CollisionWorld::regionQueryCost)
     // The step grid of run(), and what clearAhead keeps.
     double mStep = 0.0, mEndTime = 0.0;
     std::uint64_t mGridIndex = 0;

@@ -18,7 +18,11 @@
 ///   plane), the rest of the step continues after the bounce, and the result is at exactly
 ///   `time`. When a bounce leaves too little normal speed to leave the surface (a hop under a
 ///   micrometre), the projectile slides on it (constant tangential gravity, Coulomb friction)
-///   and comes to rest when static friction holds it: reported as `atRest`.
+///   and comes to rest when static friction holds it: reported as `atRest`. Where the world
+///   answers region queries (CollisionWorld::firstTouch, isOnlyPlane) and they cost no more
+///   than two casts (CollisionWorld::regionQueryCost), one query clears many steps of free
+///   flight (the same trajectory as casting every step) or of sliding on one plane (the same up
+///   to the rounding of that plane).
 ///
 /// - Engine: the flight a game's physics engine will compute (Jolt, PhysX, Rapier, Bullet,
 ///   Godot 3, Box2D or a custom profile: settings.engine, see engine_profile.h): its fixed steps

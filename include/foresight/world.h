@@ -100,6 +100,19 @@ public:
         (void)region;
         return false;
     }
+
+    /// Roughly how many castSegment calls with this `radius` [Units: m] one mayTouch, firstTouch
+    /// or isOnlyPlane query costs in this world [Limit: >= 0]. ProjectileMethod::Exact clears
+    /// many steps with one such query only where a query is worth at most two casts (one clears
+    /// about six steps of free flight on average, and costs a cast or more when it clears none).
+    /// The default, 1, suits a world that tests every shape for every query (StaticWorld) or
+    /// finds the candidates of casts and of region queries by the same search; a world whose
+    /// point casts take a much faster path than its region queries (EmbreeWorld's native rays)
+    /// says so. Only speed depends on it: the answers are the same either way.
+    virtual float regionQueryCost(float radius) const {
+        (void)radius;
+        return 1.0f;
+    }
 };
 
 /// Signature of a user ray cast: return true and fill `hit` on a hit.

@@ -182,6 +182,10 @@ public:
     /// The primitives and the mesh triangles that one Embree point query (a sphere holding the
     /// capsule) finds, through PlaneRegionTester; it stops at the first that rules the region out.
     bool isOnlyPlane(const PlaneRegion& region) const override;
+    /// 5 for point casts (radius 0: Embree's native ray traversal, about five times cheaper
+    /// than a firstTouch query on a level of 3 000 triangles), 1 for swept spheres (a sphere
+    /// cast walks the tree with point queries, as the region queries do).
+    float regionQueryCost(float radius) const override { return radius > 0.0f ? 1.0f : 5.0f; }
 
 private:
     struct Impl;
