@@ -93,33 +93,24 @@ if [[ "${1:-}" == "--worlds" ]]; then
             if (name in rate) printf "    %-48s %10s/s\n", label, human(rate[name])
             else printf "    %-48s %10s\n", label, "not measured"
         }
-        function ratio(label, a, b, target) {
-            if (!(a in rate) || !(b in rate) || rate[b] <= 0) {
+        # rate[a] / rate[b] (at least target), or with `time` set the time of a over the time of
+        # b (their rates inverted; at most target). Target 0: for information.
+        function compare(label, a, b, target, time,    r, met) {
+            if (!(a in rate) || !(b in rate) || rate[a] <= 0 || rate[b] <= 0) {
                 printf "  %-50s not measured (filtered out?)\n", label
                 return
             }
-            r = rate[a] / rate[b]
-            if (target > 0) {
-                printf "  %-50s %6.2fx  (target >= %gx: %s)\n", label, r, target, (r >= target ? "met" : "MISSED")
-                if (r < target) missed = 1
-            } else {
+            r = time ? rate[b] / rate[a] : rate[a] / rate[b]
+            if (target <= 0) {
                 printf "  %-50s %6.2fx\n", label, r
-            }
-        }
-        # The time of a over the time of b (the inverse of their rates), at most target.
-        function timeRatio(label, a, b, target) {
-            if (!(a in rate) || !(b in rate) || rate[a] <= 0) {
-                printf "  %-50s not measured (filtered out?)\n", label
                 return
             }
-            r = rate[b] / rate[a]
-            if (target > 0) {
-                printf "  %-50s %6.2fx  (target <= %gx: %s)\n", label, r, target, (r <= target ? "met" : "MISSED")
-                if (r > target) missed = 1
-            } else {
-                printf "  %-50s %6.2fx\n", label, r
-            }
+            met = time ? r <= target : r >= target
+            printf "  %-50s %6.2fx  (target %s %gx: %s)\n", label, r, (time ? "<=" : ">="), target, (met ? "met" : "MISSED")
+            if (!met) missed = 1
         }
+        function ratio(label, a, b, target) { compare(label, a, b, target, 0) }
+        function timeRatio(label, a, b, target) { compare(label, a, b, target, 1) }
         END {
             print "  Segment casts on the million-triangle mesh (radius 0):"
             show("EmbreeWorld::castSegment", "BM_Cast/Embree")
