@@ -436,6 +436,15 @@ private:
             const DVec3 p = p0 + v0 * found.time + 0.5 * a * found.time * found.time;
             CastHit earlier;
             if (!castPath(p0, p, onSurface, surface, earlier) || earlier.fraction >= 1.0f - 1e-6f) return found;
+            if (earlier.fraction == 0.0f && glm::dot(toD(earlier.normal), n) >= 0.999) {
+                // The surface it starts on, reported at once again (in a crease, the one before
+                // the last): the motion up to the impact is cast lifted off it, for another
+                // surface met first (the end of the crease).
+                const DVec3 off = n * liftDistance() + mCastOffset;
+                if (!world().castSegment(makeChordCast(p0 + off, p + off, mSettings.radius), earlier) ||
+                    glm::dot(toD(earlier.normal), n) >= 0.999)
+                    return found;
+            }
             hit = earlier;
             limit = found.time;
         }
