@@ -3,6 +3,7 @@
 #include <cassert>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <system_error>
 #include <utility>
 
@@ -75,8 +76,19 @@ void appendJsonString(std::string& out, std::string_view text) {
     out += Json(std::string(text)).dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+namespace {
+
+constexpr std::size_t kCacheBits = 10;  // 1024 texts per kind, 40 KiB each
+
+std::size_t cacheSlot(std::uint64_t bits) {
+    return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ULL) >> (64 - kCacheBits));
+}
+
+}  // namespace
+
 JsonStreamWriter::JsonStreamWriter(Sink sink, std::size_t flushBytes)
-    : mSink(std::move(sink)), mFlushBytes(flushBytes) {
+    : mSink(std::move(sink)), mFlushBytes(flushBytes), mFloats(std::size_t(1) << kCacheBits),
+      mDoubles(std::size_t(1) << kCacheBits) {
     mOut.reserve(flushBytes + 4096);
 }
 
@@ -90,35 +102,61 @@ void JsonStreamWriter::key(std::string_view name) {
 }
 
 void JsonStreamWriter::number(double value) {
-    mScratch.clear();
-    appendJsonDouble(mScratch, value);
-    scalar(mScratch);
+    const std::size_t at = openValue();
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    CachedNumber& cached = mDoubles[cacheSlot(bits)];
+    if (cached.size != 0 && cached.bits == bits) {
+        mOut.append(cached.text, cached.size);
+    } else {
+        appendJsonDouble(mOut, value);
+        const std::size_t size = mOut.size() - at;
+        if (size < sizeof cached.text) {
+            cached.bits = bits;
+            cached.size = static_cast<std::uint8_t>(size);
+            std::memcpy(cached.text, mOut.data() + at, size);
+        }
+    }
+    closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::floatNumber(float value) {
-    mScratch.clear();
-    appendJsonFloat(mScratch, value);
-    scalar(mScratch);
+    const std::size_t at = openValue();
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    CachedNumber& cached = mFloats[cacheSlot(bits)];
+    if (cached.size != 0 && cached.bits == bits) {
+        mOut.append(cached.text, cached.size);
+    } else {
+        appendJsonFloat(mOut, value);
+        const std::size_t size = mOut.size() - at;
+        if (size < sizeof cached.text) {
+            cached.bits = bits;
+            cached.size = static_cast<std::uint8_t>(size);
+            std::memcpy(cached.text, mOut.data() + at, size);
+        }
+    }
+    closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::integer(std::int64_t value) {
-    mScratch.clear();
-    appendInteger(mScratch, value);
-    scalar(mScratch);
+    const std::size_t at = openValue();
+    appendInteger(mOut, value);
+    closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::unsignedInteger(std::uint64_t value) {
-    mScratch.clear();
-    appendInteger(mScratch, value);
-    scalar(mScratch);
+    const std::size_t at = openValue();
+    appendInteger(mOut, value);
+    closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::boolean(bool value) { scalar(value ? "true" : "false"); }
 
 void JsonStreamWriter::string(std::string_view text) {
-    mScratch.clear();
-    appendJsonString(mScratch, text);
-    scalar(mScratch);
+    const std::size_t at = openValue();
+    appendJsonString(mOut, text);
+    closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::value(const Json& value) {
@@ -168,15 +206,15 @@ void JsonStreamWriter::quaternion(const foresight::Quat& quaternion) {
 }
 
 void JsonStreamWriter::scalar(std::string_view text) {
-    if (startValue(Kind::Scalar, false, text) && mFrames.empty()) endDocument();
+    const std::size_t at = openValue();
+    mOut += text;
+    closeValue(Kind::Scalar, false, at);
 }
 
-void JsonStreamWriter::begin(bool array) { startValue(Kind::Begin, array, {}); }
-
-std::uint32_t JsonStreamWriter::keep(std::string_view text) {
-    const auto at = static_cast<std::uint32_t>(mText.size());
-    mText += text;
-    return at;
+void JsonStreamWriter::begin(bool array) {
+    const std::size_t at = openValue();
+    mOut += array ? '[' : '{';
+    closeValue(Kind::Begin, array, at);
 }
 
 void JsonStreamWriter::writePrefix(Frame& parent, std::string_view key) {
@@ -189,46 +227,59 @@ void JsonStreamWriter::writePrefix(Frame& parent, std::string_view key) {
     }
 }
 
-bool JsonStreamWriter::startValue(Kind kind, bool array, std::string_view text) {
-    if (mFirstHeld == mFrames.size()) {
-        // The parent spans lines (or this is the root): the prefix goes out now, a scalar too; an
-        // object or array is held until its layout is known.
-        std::uint32_t indent = 0;
-        if (!mFrames.empty()) {
-            writePrefix(mFrames.back(), mKey);
-            indent = mFrames.back().indent + 2;
-        }
+std::size_t JsonStreamWriter::openValue() {
+    if (mFrames.empty()) return mOut.size();
+    Frame& parent = mFrames.back();
+    if (!holding()) {
+        // The parent spans lines: the value's line starts here.
+        writePrefix(parent, mKey);
+        return mOut.size();
+    }
+    // Inside a held frame: its one-line form.
+    if (!parent.empty) mOut += ", ";
+    parent.empty = false;
+    if (!parent.array) {
+        mKeyAt = mOut.size() - mHeldStart;
+        mOut += mKey;
+        mOut += ": ";
+    }
+    return mOut.size();
+}
+
+void JsonStreamWriter::closeValue(Kind kind, bool array, std::size_t at) {
+    if (!holding()) {
         mKey.clear();
         if (kind == Kind::Scalar) {
-            mOut += text;
-            maybeFlush();
-            return true;
+            if (mFrames.empty()) {
+                mOut += '\n';  // a scalar document
+            } else {
+                maybeFlush();
+            }
+            return;
         }
+        // An object or array whose parent spans lines (or the root): held until its layout is known.
+        mHeldStart = at;
         mTokens.clear();
-        mText.clear();
         Token token;
         token.kind = Kind::Begin;
         token.array = array;
         mTokens.push_back(token);
         Frame frame;
         frame.array = array;
-        frame.indent = indent;
-        frame.token = 0;
+        frame.indent = mFrames.empty() ? 0 : mFrames.back().indent + 2;
         mFrames.push_back(frame);
-        return false;
+        return;
     }
     Token token;
     token.kind = kind;
     token.array = array;
     if (!mFrames.back().array) {
-        token.key = keep(mKey);
+        token.key = static_cast<std::uint32_t>(mKeyAt);
         token.keySize = static_cast<std::uint32_t>(mKey.size());
     }
     mKey.clear();
-    if (kind == Kind::Scalar) {
-        token.text = keep(text);
-        token.textSize = static_cast<std::uint32_t>(text.size());
-    }
+    token.text = static_cast<std::uint32_t>(at - mHeldStart);
+    token.textSize = static_cast<std::uint32_t>(mOut.size() - at);
     mTokens.push_back(token);
     for (std::size_t i = mFirstHeld; i < mFrames.size(); ++i) ++mFrames[i].nodes;
     if (kind == Kind::Begin) {
@@ -238,14 +289,19 @@ bool JsonStreamWriter::startValue(Kind kind, bool array, std::string_view text) 
         frame.token = static_cast<std::uint32_t>(mTokens.size() - 1);
         mFrames.push_back(frame);
     }
-    while (mFirstHeld < mFrames.size() && mFrames[mFirstHeld].nodes > kInlineNodes) spanLines(mFirstHeld);
-    return false;
+    while (holding() && mFrames[mFirstHeld].nodes > kInlineNodes) spanLines(mFirstHeld);
+}
+
+void JsonStreamWriter::moveHeldText() {
+    mText.assign(mOut, mHeldStart, std::string::npos);
+    mOut.resize(mHeldStart);
 }
 
 void JsonStreamWriter::spanLines(std::size_t index) {
     // The outermost held frame has more values than fit on a line: it spans lines. Its prefix is
     // out already; write its opening and its finished members; the member still open (a held
-    // frame) gets its prefix and stays held.
+    // frame) gets its prefix and stays held, its one-line form so far written again after it.
+    moveHeldText();
     Frame& frame = mFrames[index];
     mOut += frame.array ? "[\n" : "{\n";
     frame.multiLine = true;
@@ -254,20 +310,28 @@ void JsonStreamWriter::spanLines(std::size_t index) {
     const std::size_t stop = open ? mFrames[index + 1].token : mTokens.size();
     for (std::size_t i = 1; i < stop;) {
         const Token& member = mTokens[i];
-        writePrefix(frame, std::string_view(mText).substr(member.key, member.keySize));
+        writePrefix(frame, textOf(member.key, member.keySize));
         layout(i, frame.indent + 2);
         i += member.kind == Kind::Begin ? member.length : 1;
     }
     mFirstHeld = index + 1;
-    if (open) {
-        const Token& member = mTokens[stop];
-        writePrefix(frame, std::string_view(mText).substr(member.key, member.keySize));
-        mTokens.erase(mTokens.begin(), mTokens.begin() + static_cast<std::ptrdiff_t>(stop));
-        for (std::size_t j = index + 1; j < mFrames.size(); ++j) mFrames[j].token -= static_cast<std::uint32_t>(stop);
-    } else {
+    if (!open) {
         mTokens.clear();
-        mText.clear();
+        return;
     }
+    Token& inner = mTokens[stop];
+    writePrefix(frame, textOf(inner.key, inner.keySize));
+    const std::uint32_t from = inner.text;
+    inner.key = 0;
+    inner.keySize = 0;  // written: not needed again
+    mHeldStart = mOut.size();
+    mOut.append(mText, from, std::string::npos);
+    mTokens.erase(mTokens.begin(), mTokens.begin() + static_cast<std::ptrdiff_t>(stop));
+    for (Token& token : mTokens) {
+        token.text -= from;
+        if (token.keySize != 0) token.key -= from;
+    }
+    for (std::size_t j = index + 1; j < mFrames.size(); ++j) mFrames[j].token -= static_cast<std::uint32_t>(stop);
 }
 
 void JsonStreamWriter::end() {
@@ -280,6 +344,7 @@ void JsonStreamWriter::end() {
         mOut += frame.array ? ']' : '}';
         mFirstHeld = mFrames.size();
     } else {
+        mOut += frame.array ? ']' : '}';
         Token token;
         token.kind = Kind::End;
         token.array = frame.array;
@@ -288,20 +353,25 @@ void JsonStreamWriter::end() {
         opening.nodes = frame.nodes;
         opening.length = static_cast<std::uint32_t>(mTokens.size()) - frame.token;
         if (mFrames.size() == mFirstHeld) {
-            // The outermost held value is complete: lay it out as formatJson would.
-            layout(0, frame.indent);
+            // The outermost held value is complete. Its one-line form stands when formatJson would
+            // print it on one line (empty, or few values within the width); else lay it out again.
+            const std::size_t width = mOut.size() - mHeldStart;
+            if (opening.length != 2 && (frame.nodes > kInlineNodes || frame.indent + width > kLineWidth)) {
+                moveHeldText();
+                layout(0, frame.indent);
+            }
             mTokens.clear();
-            mText.clear();
         }
     }
     if (mFrames.empty()) {
-        endDocument();
+        mOut += '\n';
     } else {
         maybeFlush();
     }
 }
 
 void JsonStreamWriter::layout(std::size_t index, std::size_t indent) {
+    // formatJson's writeValue over held tokens whose texts are in mText.
     const Token& token = mTokens[index];
     if (token.kind == Kind::Scalar || token.length == 2) {
         writeInline(index);
@@ -320,7 +390,7 @@ void JsonStreamWriter::layout(std::size_t index, std::size_t indent) {
         if (i != index + 1) mOut += ",\n";
         mOut.append(indent + 2, ' ');
         if (!token.array) {
-            mOut.append(mText, member.key, member.keySize);
+            mOut += textOf(member.key, member.keySize);
             mOut += ": ";
         }
         layout(i, indent + 2);
@@ -334,7 +404,7 @@ void JsonStreamWriter::layout(std::size_t index, std::size_t indent) {
 void JsonStreamWriter::writeInline(std::size_t index) {
     const Token& token = mTokens[index];
     if (token.kind == Kind::Scalar) {
-        mOut.append(mText, token.text, token.textSize);
+        mOut += textOf(token.text, token.textSize);
         return;
     }
     mOut += token.array ? '[' : '{';
@@ -343,7 +413,7 @@ void JsonStreamWriter::writeInline(std::size_t index) {
         const Token& member = mTokens[i];
         if (i != index + 1) mOut += ", ";
         if (!token.array) {
-            mOut.append(mText, member.key, member.keySize);
+            mOut += textOf(member.key, member.keySize);
             mOut += ": ";
         }
         writeInline(i);
@@ -352,10 +422,8 @@ void JsonStreamWriter::writeInline(std::size_t index) {
     mOut += token.array ? ']' : '}';
 }
 
-void JsonStreamWriter::endDocument() { mOut += '\n'; }
-
 void JsonStreamWriter::maybeFlush() {
-    if (mOut.size() < mFlushBytes) return;
+    if (holding() || mOut.size() < mFlushBytes) return;
     if (!mFailed && !mSink(mOut)) mFailed = true;
     if (!mFailed) mWritten += mOut.size();
     mOut.clear();

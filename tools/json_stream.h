@@ -5,11 +5,12 @@
 /// same document, numbers and layout alike, without the document ever being built.
 ///
 /// formatJson puts a value on one line when it has at most 24 values in all and the line fits
-/// in 200 columns at its indent, and one member per line otherwise. A value whose count is
-/// still open is held back (as tokens, at most 25 values deep in each open value); once it has
-/// more than 24 values it is known to span lines, and what it holds is written at once. So the
-/// memory held is a few hundred bytes plus the finished text not yet handed to the sink
-/// (flushBytes), whatever the size of the document.
+/// in 200 columns at its indent, and one member per line otherwise. A value whose layout is
+/// still open is written on one line and held back, with a token per value (at most 25), until
+/// it ends (the line fits: kept as it is; else laid out again over lines) or holds more than 24
+/// values (then it spans lines, and what it holds is laid out at once). So the memory held is
+/// a few hundred bytes plus the finished text not yet handed to the sink (flushBytes), whatever
+/// the size of the document.
 
 #include "json_output.h"
 
@@ -77,13 +78,14 @@ public:
 
 private:
     enum class Kind : std::uint8_t { Begin, End, Scalar };
-    /// A value held back while its container's layout is open. Texts are ranges of mText.
+    /// A value of a held frame. Offsets are into the held text: the inline form of the outermost
+    /// held frame, from its opening bracket (mOut from mHeldStart, or mText once moved there).
     struct Token {
         Kind kind = Kind::Scalar;
         bool array = false;         ///< Begin/End: an array (else an object).
-        std::uint32_t key = 0;      ///< its key's JSON text in mText (members of objects).
+        std::uint32_t key = 0;      ///< its key's JSON text (members of objects).
         std::uint32_t keySize = 0;  ///< 0: no key.
-        std::uint32_t text = 0;     ///< Scalar: its JSON text in mText.
+        std::uint32_t text = 0;     ///< Scalar: its text; Begin: its opening bracket.
         std::uint32_t textSize = 0;
         std::uint32_t nodes = 1;   ///< Begin: values in the container, itself included (set at its end).
         std::uint32_t length = 1;  ///< Begin: tokens up to and including its End (set at its end).
@@ -91,34 +93,48 @@ private:
     /// An open object or array.
     struct Frame {
         bool array = false;
-        bool multiLine = false;    ///< known to span lines: its opening is written, members go out as they end.
-        bool empty = true;         ///< multiLine: no member written yet.
+        bool multiLine = false;    ///< known to span lines: its opening is written, members go out as they come.
+        bool empty = true;         ///< no member written yet.
         std::uint32_t nodes = 1;   ///< values so far, itself included (held frames only).
         std::uint32_t indent = 0;  ///< columns before its first character's line.
         std::uint32_t token = 0;   ///< held frames: index of its Begin token.
     };
+    /// A number's text, remembered by its bits (trajectories repeat times and velocities).
+    struct CachedNumber {
+        std::uint64_t bits = 0;
+        std::uint8_t size = 0;  ///< 0: empty.
+        char text[31] = {};
+    };
 
+    bool holding() const { return mFirstHeld < mFrames.size(); }
+    /// Writes what comes before a value (separator, indent, key); returns where the value starts.
+    std::size_t openValue();
+    /// Records the value written from `at` (a scalar, or the bracket of a container).
+    void closeValue(Kind kind, bool array, std::size_t at);
     void scalar(std::string_view text);
     void begin(bool array);
-    /// A new value: the prefix in a multi-line parent, or a token in a held one.
-    bool startValue(Kind kind, bool array, std::string_view text);
     void writePrefix(Frame& parent, std::string_view key);
+    void moveHeldText();
     void spanLines(std::size_t frame);
     void layout(std::size_t token, std::size_t indent);
     void writeInline(std::size_t token);
-    void endDocument();
     void maybeFlush();
-    std::uint32_t keep(std::string_view text);
+    std::string_view textOf(std::uint32_t at, std::uint32_t size) const {
+        return std::string_view(mText).substr(at, size);
+    }
 
     Sink mSink;
     std::size_t mFlushBytes;
-    std::string mOut;            ///< finished text not yet handed to the sink.
-    std::string mText;           ///< texts of the held tokens.
+    std::string mOut;            ///< finished text not yet handed to the sink, then the held text (from mHeldStart).
+    std::string mText;           ///< the held text while a layout is decided from it.
     std::string mKey;            ///< the next value's key (JSON text), empty in arrays.
-    std::string mScratch;        ///< number text.
+    std::size_t mKeyAt = 0;      ///< where the value's key was written in the held text.
+    std::size_t mHeldStart = 0;  ///< where the held text starts in mOut.
     std::vector<Token> mTokens;  ///< held values, from the Begin of the outermost held frame.
     std::vector<Frame> mFrames;  ///< open containers, outermost first; multi-line ones first.
     std::size_t mFirstHeld = 0;  ///< index in mFrames of the outermost held frame.
+    std::vector<CachedNumber> mFloats;   ///< floatNumber's texts by bits.
+    std::vector<CachedNumber> mDoubles;  ///< number's texts by bits.
     std::uint64_t mWritten = 0;
     bool mFailed = false;
 };
