@@ -12,6 +12,11 @@
 #            entities per frame (bench/bench_replication.cpp): predictDeadReckoningBatch, the
 #            prepared forms (extrapolateDeadReckoning, DeadReckoningBatch: mix and per model)
 #            against a plain p + v t loop, ms per frame (target < 1) and ratios; receivers
+#        scripts/bench.sh --output [benchmark options...]   `foresight predict`'s JSON output
+#            (bench/bench_output.cpp): writing 1 000 projectile results with trajectories (the
+#            streamed writer, and the former whole-document writer) against predicting them,
+#            target streamed / predicting <= 2; then the CLI's peak memory (max RSS) for 1 000 and
+#            4 000 such predictions, which must not grow with the output
 #        scripts/bench.sh --worlds [benchmark options...]
 #            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
 #            backends): segment casts per second on a mesh of a million triangles through
@@ -141,6 +146,60 @@ if [[ "${1:-}" == "--worlds" ]]; then
             timeRatio("Exact / Stepped time, BulletWorld (info)", "BM_DemoLevel/Bullet/Exact", "BM_DemoLevel/Bullet/Stepped", 0)
             if (missed && strict == 1) exit 1
         }'
+    exit 0
+fi
+
+if [[ "${1:-}" == "--output" ]]; then
+    shift
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_output.json}
+    if [[ "$dir" == build ]]; then
+        ./scripts/build.sh --target foresight_bench_output >/dev/null
+        ./scripts/build.sh --target foresight_cli >/dev/null
+    else
+        cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
+            --target foresight_bench_output foresight_cli >/dev/null
+    fi
+    "$dir/bench/foresight_bench_output" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
+    echo "foresight predict's output, 1 000 projectiles with trajectories, medians of this run ($out):"
+    medians "$out" | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        { time[$1] = $2 }
+        END {
+            p = "BM_Output/Predict"; s = "BM_Output/Stream"; d = "BM_Output/Document"
+            if (!(p in time) || !(s in time)) { print "  not measured (filtered out?)"; exit 0 }
+            printf "  %-44s %8.1f ms\n", "predicting (runScenario, trajectories kept)", time[p]
+            printf "  %-44s %8.1f ms  %5.2fx predicting (target <= 2x: %s)\n", "writing, streamed (foresight predict)",
+                   time[s], time[s] / time[p], (time[s] / time[p] <= 2 ? "met" : "MISSED")
+            if (d in time)
+                printf "  %-44s %8.1f ms  %5.2fx predicting\n", "writing, whole document (the former writer)",
+                       time[d], time[d] / time[p]
+            if (time[s] / time[p] > 2 && strict == 1) exit 1
+        }'
+    # Peak memory of the CLI itself: the same throws, 1 000 and 4 000 of them.
+    peak() { # FILE -> "max RSS in KiB" of `foresight predict FILE`, output to /dev/null
+        if [[ -x /usr/bin/time ]]; then
+            /usr/bin/time -f %M "$dir/foresight" predict "$1" 2>&1 >/dev/null | tail -n 1
+        elif command -v python3 >/dev/null 2>&1; then
+            python3 - "$dir/foresight" "$1" <<'PY'
+import resource, subprocess, sys
+subprocess.run([sys.argv[1], "predict", sys.argv[2]], stdout=subprocess.DEVNULL, check=True)
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+PY
+        else
+            echo "?"
+        fi
+    }
+    scenario=$(mktemp "${TMPDIR:-/tmp}/foresight-bench-output.XXXXXX")
+    trap 'rm -f "$scenario"' EXIT
+    echo "  Peak memory of \`foresight predict\` (max RSS; output to /dev/null):"
+    for count in 1000 4000; do
+        "$dir/bench/foresight_bench_output" --scenario "$count" >"$scenario"
+        bytes=$("$dir/foresight" predict "$scenario" | wc -c)
+        kib=$(peak "$scenario")
+        awk -v n="$count" -v b="$bytes" -v k="$kib" 'BEGIN {
+            printf "    %5d predictions: %6.1f MB of JSON, peak %6.1f MiB\n", n, b / 1e6, k / 1024 }'
+    done
     exit 0
 fi
 

@@ -402,6 +402,65 @@ TEST_F(cli, EmptyPredictionsGiveAnEmptyResult) {
     EXPECT_EQ(output, Json::parse(R"({"predictions": []})"));
 }
 
+TEST_F(cli, OutputIsByteIdenticalToTheFormerWriter) {
+    // tests/data/expected/ holds what `foresight predict` printed before the result was streamed
+    // (the whole document built, then printed): every layout rule (one line, over lines, a
+    // trajectory point too wide for its line, a two-point trajectory on one line, a document on
+    // one line), every model, escaped and integer ids, exponents, -0.
+    const std::pair<fs::path, const char*> cases[] = {
+        {kData / "layout_cases.json", "layout_cases.json"},
+        {kData / "one_line.json", "one_line.json"},
+        {kData / "spec_example.json", "spec_example.json"},
+        {kData / ".." / ".." / "docs" / "examples" / "scenario.json", "scenario_example.json"},
+    };
+    for (const auto& [input, expected] : cases) {
+        const CliRun run = runCli({"predict", input.string()});
+        ASSERT_EQ(run.status, 0) << input << "\n" << run.err;
+        EXPECT_EQ(run.out, readFile(kData / "expected" / expected)) << input;
+    }
+}
+
+TEST_F(cli, ARefusalWhileRunningAfterOutputStartedSaysTheResultIsIncomplete) {
+    // Every input is validated before anything runs, but a prediction can still be refused while
+    // it runs (here: more bounces than the work cap, between two plates 1 cm apart). Results
+    // are held back up to 64 KiB: a refusal before that prints nothing on standard output.
+    const std::string plates =
+        R"("world": {"planes": [{"normal": [0, 1, 0], "distance": 0}, {"normal": [0, -1, 0], "distance": -0.01}]})";
+    const std::string refused =
+        R"({"model": "projectile", "position": [0, 0.005, 0], "velocity": [0, 10, 0], "time": 100, "step": 1,
+            "restitution": 1})";
+    const std::string fine =
+        R"({"model": "projectile", "position": [0, 0.005, 0], "velocity": [0, 1, 0], "time": 1, "step": 0.01})";
+    std::string many;
+    for (int i = 0; i < 40; ++i) many += fine + ", ";
+    const auto scenario = [&plates](const std::string& predictions) {
+        return R"({"gravity": [0, 0, 0], )" + plates + R"(, "predictions": [)" + predictions + "]}";
+    };
+
+    CliRun run = predict(scenario(fine + ", " + refused));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("predictions[1]: too many bounces"), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find("incomplete"), std::string::npos) << run.err;
+
+    // 40 trajectories of 101 points are over 64 KiB: the output has started when predictions[40]
+    // is refused. It stops, says so, and the run still reports every problem (predictions[42]).
+    const CliRun complete = predict(scenario(many + fine));
+    ASSERT_EQ(complete.status, 0) << complete.err;
+    ASSERT_GT(complete.out.size(), std::size_t(1) << 16);
+    run = predict(scenario(many + refused + ", " + fine + ", " + refused));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.err.find("predictions[40]: too many bounces"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("predictions[42]: too many bounces"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("foresight: the result on standard output is incomplete: " + std::to_string(run.out.size()) +
+                           " bytes were written"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(run.out.empty());
+    EXPECT_EQ(run.out, complete.out.substr(0, run.out.size()));  // the results before it, as they are
+    EXPECT_FALSE(Json::accept(run.out));                         // not a document a reader could take as whole
+}
+
 // ---------------------------------------------------------------------------------------------
 // Meshes
 

@@ -737,31 +737,48 @@ Status runPrediction(const Scenario& scenario, const Prediction& prediction, Pre
     return runPrediction(scenario, prediction, result, detail);
 }
 
-bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics) {
-    results.clear();
-    results.resize(scenario.predictions.size());
+bool runScenario(const Scenario& scenario, const ResultConsumer& consume, Diagnostics& diagnostics) {
+    const std::size_t errorsBefore = diagnostics.errors.size();
+    bool taken = true;         // every result so far went to `consume`
     std::uint64_t points = 0;  // trajectory points to print, against kMaxScenarioPoints
+    PredictionResult result;
     for (std::size_t i = 0; i < scenario.predictions.size(); ++i) {
         const Prediction& p = scenario.predictions[i];
+        result = PredictionResult{};
         std::string detail;
-        Status status = runPrediction(scenario, p, results[i], detail);
-        if (status == Status::Ok && !resultIsFinite(results[i])) status = Status::NonFiniteResult;
+        Status status = runPrediction(scenario, p, result, detail);
+        if (status == Status::Ok && !resultIsFinite(result)) status = Status::NonFiniteResult;
         if (status != Status::Ok) {
             std::string message = foresight::statusMessage(status);
             if (!detail.empty()) message += ": " + detail;
             diagnostics.error(p.path, message);
         }
         // Bounces add points beyond the steps buildScenario counted: the budget holds here too.
-        if (p.model == Model::Projectile && p.trajectory) points += results[i].trajectory.size();
+        if (p.model == Model::Projectile && p.trajectory) points += result.trajectory.size();
         if (points > kMaxScenarioPoints) {
             diagnostics.error(p.path, "the trajectories up to here have " + std::to_string(points) +
                                           " points; one file may print at most " + std::to_string(kMaxScenarioPoints) +
                                           " (\"trajectory\": false leaves a prediction's out, or split the file)");
-            results.clear();
             return false;
         }
+        if (taken && diagnostics.errors.size() == errorsBefore && !consume(i, result)) return false;
+        taken = taken && diagnostics.errors.size() == errorsBefore;
     }
-    return diagnostics.ok();
+    return taken;
+}
+
+bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics) {
+    results.clear();
+    results.reserve(scenario.predictions.size());
+    const bool ok = runScenario(
+        scenario,
+        [&results](std::size_t, PredictionResult& result) {
+            results.push_back(std::move(result));
+            return true;
+        },
+        diagnostics);
+    if (!ok) results.clear();
+    return ok && diagnostics.ok();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -824,6 +841,121 @@ Json resultJson(const Prediction& p, const PredictionResult& result) {
             break;
     }
     return out;
+}
+
+void writeResult(JsonStreamWriter& w, const Prediction& p, const PredictionResult& result) {
+    // Member for member as resultJson: the same keys in the same order.
+    w.beginObject();
+    if (!p.id.is_null()) {
+        w.key("id");
+        w.value(p.id);
+    }
+    w.key("model");
+    w.string(modelName(p.model));
+    switch (p.model) {
+        case Model::Linear:
+        case Model::Accelerated:
+            w.key("position");
+            w.position(result.position);
+            w.key("velocity");
+            w.vector(result.velocity);
+            break;
+        case Model::Orientation:
+            w.key("orientation");
+            w.quaternion(result.orientation);
+            break;
+        case Model::Projectile: {
+            const auto& r = result.projectile;
+            w.key("method");
+            w.string(p.projectile.method == foresight::ProjectileMethod::Stepped  ? "stepped"
+                     : p.projectile.method == foresight::ProjectileMethod::Engine ? "engine"
+                                                                                  : "exact");
+            w.key("position");
+            w.position(r.position);
+            w.key("velocity");
+            w.vector(r.velocity);
+            w.key("time");
+            w.floatNumber(r.time);
+            w.key("bounces");
+            w.unsignedInteger(r.bounces);
+            w.key("at_rest");
+            w.boolean(r.atRest);
+            w.key("stopped_at_hit");
+            w.boolean(r.stoppedAtHit);
+            if (r.stoppedAtHit) {
+                w.key("hit_normal");
+                w.vector(r.hitNormal);
+            }
+            if (p.trajectory) {
+                w.key("trajectory");
+                w.beginArray();
+                for (const auto& point : result.trajectory) {
+                    w.beginObject();
+                    w.key("t");
+                    w.floatNumber(point.time);
+                    w.key("position");
+                    w.position(point.position);
+                    w.key("velocity");
+                    w.vector(point.velocity);
+                    w.key("event");
+                    w.string(eventName(point.event));
+                    const bool impact = point.event == foresight::TrajectoryEvent::Bounce ||
+                                        point.event == foresight::TrajectoryEvent::Hit;
+                    if (impact || point.normal != foresight::Vec3(0.0f)) {
+                        w.key("normal");
+                        w.vector(point.normal);
+                    }
+                    w.end();
+                }
+                w.end();
+            }
+            break;
+        }
+        case Model::Vehicle:
+            w.key("method");
+            w.string(p.vehicleIterative ? "iterative" : "exact");
+            if (p.vehicleIterative) {
+                w.key("iterations");
+                w.integer(p.iterations);
+            }
+            w.key("position");
+            w.position(result.position);
+            w.key("velocity");
+            w.vector(result.velocity);
+            w.key("orientation");
+            w.quaternion(result.orientation);
+            break;
+        case Model::DeadReckoning:
+            w.key("algorithm");
+            w.string(foresight::deadReckoningAlgorithmName(p.deadReckoning));
+            w.key("position");
+            w.position(result.position);
+            w.key("velocity");
+            w.vector(result.velocity);
+            w.key("orientation");
+            w.quaternion(result.orientation);
+            break;
+    }
+    w.end();
+}
+
+ResultDocumentWriter::ResultDocumentWriter(JsonStreamWriter::Sink sink, std::size_t flushBytes)
+    : mWriter(std::move(sink), flushBytes) {}
+
+void ResultDocumentWriter::begin() {
+    mWriter.beginObject();
+    mWriter.key("predictions");
+    mWriter.beginArray();
+}
+
+void ResultDocumentWriter::add(const Prediction& prediction, const PredictionResult& result) {
+    writeResult(mWriter, prediction, result);
+}
+
+bool ResultDocumentWriter::finish() {
+    mWriter.end();
+    mWriter.end();
+    return mWriter.finish();
 }
 
 Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult>& results) {

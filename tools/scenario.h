@@ -9,11 +9,13 @@
 
 #include "json_input.h"
 #include "json_output.h"
+#include "json_stream.h"
 
 #include <foresight/foresight.h>
 
 #include <filesystem>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,7 +87,20 @@ struct PredictionResult {
 bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
                    Diagnostics& diagnostics);
 
-/// Runs every prediction; refusals of the library (work caps, overflow) become errors.
+/// Takes each result of runScenario as it comes: the index of its prediction and the result,
+/// which the consumer may move from. Returns false to stop the run (the output failed).
+using ResultConsumer = std::function<bool(std::size_t index, PredictionResult& result)>;
+
+/// Runs every prediction in input order and hands each checked result to `consume` before the
+/// next one runs, so that only one result is held at a time. Refusals of the library (work caps,
+/// overflow, a non-finite result) become errors; from the first error on, results are no longer
+/// handed on, but the remaining predictions still run so that every problem is reported in one
+/// run, except over the file's budget of printed trajectory points, which stops the run at once.
+/// Returns true when every prediction ran and every result was taken (diagnostics.ok() and
+/// `consume` never returned false).
+bool runScenario(const Scenario& scenario, const ResultConsumer& consume, Diagnostics& diagnostics);
+
+/// Runs every prediction (runScenario above) and keeps every result, in input order.
 /// Returns diagnostics.ok().
 bool runScenario(const Scenario& scenario, std::vector<PredictionResult>& results, Diagnostics& diagnostics);
 
@@ -97,6 +112,32 @@ Json resultDocument(const Scenario& scenario, const std::vector<PredictionResult
 
 /// One prediction's output object.
 Json resultJson(const Prediction& prediction, const PredictionResult& result);
+
+/// Writes resultJson(prediction, result) to `writer`, member by member: the same text
+/// formatJson prints for it, without building it.
+void writeResult(JsonStreamWriter& writer, const Prediction& prediction, const PredictionResult& result);
+
+/// Streams the output document of predictions that runScenario hands on: {"predictions": [...]},
+/// the same bytes as formatJson(resultDocument(...)) for the same results. Call begin, then add
+/// for each result in input order, then finish.
+class ResultDocumentWriter {
+public:
+    /// Text goes to `sink` (JsonStreamWriter::Sink) in pieces of at least `flushBytes` bytes.
+    explicit ResultDocumentWriter(JsonStreamWriter::Sink sink, std::size_t flushBytes = std::size_t(1) << 16);
+    /// Opens the document.
+    void begin();
+    /// Writes one prediction's result object.
+    void add(const Prediction& prediction, const PredictionResult& result);
+    /// Closes the document and hands the rest to the sink; false if the sink refused text.
+    bool finish();
+    /// True once the sink refused text.
+    bool failed() const { return mWriter.failed(); }
+    /// Bytes handed to the sink so far.
+    std::uint64_t bytesWritten() const { return mWriter.bytesWritten(); }
+
+private:
+    JsonStreamWriter mWriter;
+};
 
 /// Lower-case name of a trajectory event ("start", "step", "bounce", "rest", "hit", "end").
 const char* eventName(foresight::TrajectoryEvent event);
