@@ -275,7 +275,8 @@ private:
         if (!freeFlight) mClearedGrid = 0;
         const bool cleared = freeFlight && (mGridIndex < mClearedGrid || clearAhead(p0, v0));
         CastHit hit;
-        if (!cleared && castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit)) {
+        if (!cleared &&
+            (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit) || crossesRecentSurface(p0, p1, hit))) {
             const Impact found = locateImpact(p0, v0, mGravity, duration, hit, mHasLastSurface, mLastSurfaceNormal);
             arriveAt(p0, v0, found.time, found.normal, found.surfacePoint);
             return false;
@@ -380,6 +381,30 @@ private:
         }
         const DVec3 off = surface * lift + mCastOffset;
         return world().castSegment(makeChordCast(start + off, end + off, mSettings.radius), hit);
+    }
+
+    // A chord that starts on the plane of a recent impact's surface (within the lift) and ends
+    // behind it: a two-sided triangle cannot tell which side a start on its plane is on, and may
+    // let it through (a point rattling in a concave edge, put on one face and onto the other's
+    // plane by keepInFront). Where the chord crosses that plane, a probe along its normal asks
+    // whether the surface is there (not beyond its edge): then `hit` is that impact.
+    bool crossesRecentSurface(const DVec3& p0, const DVec3& p1, CastHit& hit) const {
+        if (!mHadImpact) return false;
+        const double lift = liftDistance();
+        for (int i = 0; i < mRecentCount; ++i) {
+            const Touched& t = mRecent[static_cast<std::size_t>(i)];
+            const double h0 = glm::dot(t.normal, p0 - t.point), h1 = glm::dot(t.normal, p1 - t.point);
+            if (std::abs(h0) > lift || h1 >= -behindTolerance(p1) || h0 <= h1) continue;
+            const double f = std::clamp(h0 / (h0 - h1), 0.0, 1.0);
+            const DVec3 crossing = p0 + (p1 - p0) * f;
+            if (world().castSegment(makeCast(crossing + t.normal * lift, crossing - t.normal * lift, mSettings.radius),
+                                    hit) &&
+                glm::dot(toD(hit.normal), t.normal) >= 0.999) {
+                hit.fraction = static_cast<float>(f);
+                return true;
+            }
+        }
+        return false;
     }
 
     // How far behind a surface it is on rounding can leave the body: a few ulps of Real, and
