@@ -260,7 +260,7 @@ void buildWorld(const Json& value, const std::filesystem::path& baseDirectory, f
         if (meshWorldFor(meshWorld).addMesh(vertices, indices, &report) != Status::Ok)
             d.error(filePath, "cannot load " + jsonQuoted(file) + where + ": " + report.error);
 #else
-        for (const auto& triangle : loaded.triangles) addShape(world, triangle, filePath, d);
+        for (const auto& triangle : loaded.triangles) addShape(world, triangle, foresight::SurfaceMaterial{}, filePath, d);
 #endif
     });
 
