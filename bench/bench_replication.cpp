@@ -13,6 +13,16 @@
 ///   BM_Replication/SoA        DeadReckoningBatch::extrapolate over the same 100 000 (the
 ///                             updates set once, not timed), limit 0.25 s: the fast path
 ///   BM_Replication/SoA/FPW, /RVW, /RPB, /RVB      the same with every entity on one model
+///   BM_Replication/SoA/Cold   BM_Replication/SoA (mix) with the data evicted before every frame
+///                             (a read of a buffer twice the last-level cache, not timed), as a
+///                             server sees it: the entities come from memory. Counters: the
+///                             bytes the frame moves per entity (read and written, from the
+///                             batch's layout) and the lower bound they set at the measured
+///                             bandwidth
+///   BM_Replication/MemoryRead, /MemoryWrite  streaming bandwidth of one thread over a buffer
+///                             twice the last-level cache (bytes_per_second: the lines moved
+///                             between memory and the core; a written line is read and written
+///                             back, so it counts twice)
 ///   BM_Replication/PlainLoop  the loop a game writes without dead reckoning models: p + v t
 ///                             over the same arrays (velocity and orientation copied)
 ///   BM_Replication/Receivers  DeadReckoningReceiver::sample for 10 000 receivers (PVB, each
@@ -29,7 +39,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -150,6 +162,107 @@ void BM_SoA(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
 }
 
+// The last-level cache as Google Benchmark reads it (32 MiB when it reports none).
+std::size_t lastLevelCacheBytes() {
+    std::size_t largest = 0;
+    for (const auto& cache : benchmark::CPUInfo::Get().caches)
+        largest = std::max(largest, static_cast<std::size_t>(cache.size));
+    return largest > 0 ? largest : std::size_t(32) << 20;
+}
+
+// A buffer twice the last-level cache, written once (so that its pages are real, not the shared
+// zero page); reading it evicts whatever the cache held.
+std::vector<std::uint64_t>& evictionBuffer() {
+    static std::vector<std::uint64_t> buffer(2 * lastLevelCacheBytes() / sizeof(std::uint64_t), 1);
+    return buffer;
+}
+
+// One load per 64-byte line: the core brings in every line as fast as memory delivers them
+// (loading every word measured 25% slower here: bound by the loads, not by memory).
+std::uint64_t readAll(const std::vector<std::uint64_t>& buffer) {
+    constexpr std::size_t kWordsPerLine = 64 / sizeof(std::uint64_t);
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < buffer.size(); i += kWordsPerLine) sum += buffer[i];
+    return sum;
+}
+
+// Bytes one frame of DeadReckoningBatch::extrapolate moves per entity for the mix, from the
+// layout in src/replication.cpp (Real is 4 bytes in the float build, 8 in the double build).
+// Pass 1 reads every entity's position (3 Real), velocity and acceleration (2 x 12), fixed
+// orientation (16), timestamp (8) and age scale (4), and writes its result: a written line is
+// read first and written back later (no streaming stores), so the result counts twice. Pass 2
+// reads a turning entity's number (4), orientation and axis term (2 x 16), timestamp and half
+// rate (2 x 8); pass 3 a body-axis entity's number (4), position (3 Real), velocity,
+// acceleration and axis (3 x 12), orientation and axis term (2 x 16), timestamp and half rate
+// (2 x 8). Their rewrites of results just written hit the cache (4 MB) and are not counted.
+double batchBytesPerEntity(double turningShare, double bodyShare) {
+    const double real = sizeof(Real);
+    const double pass1 = 3 * real + 2 * 12 + 16 + 8 + 4 + 2 * static_cast<double>(sizeof(DeadReckoningResult));
+    const double pass2 = 4 + 2 * 16 + 2 * 8;
+    const double pass3 = 4 + 3 * real + 3 * 12 + 2 * 16 + 2 * 8;
+    return pass1 + turningShare * pass2 + bodyShare * pass3;
+}
+
+void BM_SoACold(benchmark::State& state) {
+    const Entities& e = entities();
+    if (e.prepared.size() != kEntityCount) {
+        state.SkipWithError("prepareDeadReckoning refused an entity");
+        return;
+    }
+    DeadReckoningBatch batch(kEntityCount);
+    std::size_t turning = 0, body = 0;
+    for (std::size_t i = 0; i < kEntityCount; ++i) {
+        (void)batch.set(i, e.prepared[i]);
+        turning += deadReckoningRotates(e.states[i].algorithm) && !deadReckoningInBodyAxes(e.states[i].algorithm);
+        body += deadReckoningInBodyAxes(e.states[i].algorithm);
+    }
+    std::vector<DeadReckoningResult> out(kEntityCount);
+    const std::vector<std::uint64_t>& eviction = evictionBuffer();
+    std::size_t refused = 0;
+    std::uint64_t sink = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        sink += readAll(eviction);
+        state.ResumeTiming();
+        refused += batch.extrapolate(kNow, 0.25f, out);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    benchmark::DoNotOptimize(sink);
+    if (refused != 0) state.SkipWithError("entities were refused");
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
+    const double bytes =
+        batchBytesPerEntity(static_cast<double>(turning) / kEntityCount, static_cast<double>(body) / kEntityCount);
+    state.counters["bytes/entity"] = bytes;
+    state.SetBytesProcessed(static_cast<std::int64_t>(static_cast<double>(state.iterations()) * bytes * kEntityCount));
+}
+
+void BM_MemoryRead(benchmark::State& state) {
+    const std::vector<std::uint64_t>& buffer = evictionBuffer();
+    std::uint64_t sink = 0;
+    for (auto _ : state) {
+        sink += readAll(buffer);
+        benchmark::ClobberMemory();
+    }
+    benchmark::DoNotOptimize(sink);
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(buffer.size() * sizeof(std::uint64_t)));
+}
+
+// Writes every byte once (the lines are read first: two bytes of traffic per byte written,
+// as the batch's stores; bytes_per_second counts the traffic).
+void BM_MemoryWrite(benchmark::State& state) {
+    std::vector<std::uint64_t>& buffer = evictionBuffer();
+    std::uint64_t value = 2;
+    for (auto _ : state) {
+        std::fill(buffer.begin(), buffer.end(), value++);
+        benchmark::DoNotOptimize(buffer.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(2 * buffer.size() * sizeof(std::uint64_t)));
+}
+
 void BM_PlainLoop(benchmark::State& state) {
     const Entities& e = entities();
     std::vector<DeadReckoningResult> out(kEntityCount);
@@ -207,6 +320,10 @@ BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/FPW")->Arg(2)->Unit(benchmark::kMicr
 BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
+// Fixed iteration counts: every frame pays for an untimed read of the eviction buffer.
+BENCHMARK(BM_SoACold)->Name("BM_Replication/SoA/Cold")->Iterations(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MemoryRead)->Name("BM_Replication/MemoryRead")->Iterations(20)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MemoryWrite)->Name("BM_Replication/MemoryWrite")->Iterations(20)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlainLoop)->Name("BM_Replication/PlainLoop")->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Receivers)->Name("BM_Replication/Receivers")->Unit(benchmark::kMicrosecond);
 

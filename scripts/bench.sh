@@ -11,7 +11,11 @@
 #        scripts/bench.sh --replication [benchmark options...]   dead reckoning for 100 000
 #            entities per frame (bench/bench_replication.cpp): predictDeadReckoningBatch, the
 #            prepared forms (extrapolateDeadReckoning, DeadReckoningBatch: mix and per model)
-#            against a plain p + v t loop, ms per frame (target < 1) and ratios; receivers
+#            against a plain p + v t loop, ms per frame (target < 1) and ratios; receivers;
+#            DeadReckoningBatch with the data evicted before each frame (cold, target <= 1 ms)
+#            against the memory bandwidth measured in the same run
+#        scripts/bench.sh --aim [benchmark options...]   aimProjectile per call
+#            (bench/bench_aim.cpp): ns per call, accelerating target under 1000
 #        scripts/bench.sh --output [benchmark options...]   `foresight predict`'s JSON output
 #            (bench/bench_output.cpp): writing 1 000 projectile results with trajectories (the
 #            streamed writer, and the former whole-document writer) against predicting them,
@@ -52,6 +56,65 @@ PY
             }' "$json"
     fi
 }
+
+# spreads JSON [FIELD]: lines "run_name median cv" of FIELD (cpu_time by default): the median and
+# the coefficient of variation (a fraction) of the repetitions in Google Benchmark's JSON output.
+spreads() {
+    local json=$1 field=${2:-cpu_time}
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$json" "$field" <<'PY'
+import json, sys
+median, cv = {}, {}
+with open(sys.argv[1]) as f:
+    for b in json.load(f)["benchmarks"]:
+        if sys.argv[2] in b:
+            if b.get("aggregate_name") == "median":
+                median[b["run_name"]] = b[sys.argv[2]]
+            elif b.get("aggregate_name") == "cv":
+                cv[b["run_name"]] = b[sys.argv[2]]
+for name, value in median.items():
+    print(name, value, cv.get(name, 0))
+PY
+    else
+        awk -v field="\"$field\":" '
+            /"name":/ { name = $2; gsub(/[",]/, "", name) }
+            $1 == field && name ~ /_(median|cv)$/ {
+                value = $2; gsub(/,/, "", value)
+                base = name; sub(/_(median|cv)$/, "", base)
+                if (name ~ /_median$/) { median[base] = value; order[++n] = base } else cv[base] = value
+            }
+            END { for (i = 1; i <= n; ++i) print order[i], median[order[i]], (order[i] in cv ? cv[order[i]] : 0) }' "$json"
+    fi
+}
+
+if [[ "${1:-}" == "--aim" ]]; then
+    # Firing solutions (bench/bench_aim.cpp): ns per aimProjectile call, the median of this run's
+    # repetitions and their spread (coefficient of variation).
+    shift
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_aim.json}
+    if [[ "$dir" == build ]]; then
+        ./scripts/build.sh --target foresight_bench_aim >/dev/null
+    else
+        cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
+            --target foresight_bench_aim >/dev/null
+    fi
+    "$dir/bench/foresight_bench_aim" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
+    echo "aimProjectile per call, 256 random problems per case, median of this run's repetitions ($out):"
+    spreads "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        {
+            ns = 1e9 / $2; name = $1; sub(/^BM_Aim\//, "", name)
+            printf "  %-20s %8.0f ns per call  (spread %4.1f%%)\n", name, ns, 100 * $3
+            if (name == "AcceleratingTarget") { accelerating = ns; seen = 1 }
+        }
+        END {
+            if (!seen) { print "  accelerating target: not measured (filtered out?)"; exit 0 }
+            printf "  %-20s %s\n", "target: AcceleratingTarget < 1000 ns", (accelerating < 1000 ? "met" : "MISSED")
+            if (accelerating >= 1000 && strict == 1) exit 1
+        }'
+    exit 0
+fi
 
 if [[ "${1:-}" == "--worlds" ]]; then
     shift
@@ -241,8 +304,11 @@ if [[ "${1:-}" == "--replication" ]]; then
     "$dir/bench/foresight_bench_replication" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
         --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
     echo "Replication, 100 000 entities per frame, medians of this run ($out); one thread:"
-    medians "$out" items_per_second | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
-        { rate[$1] = $2 }
+    { medians "$out" bytes/entity | sed 's/^/bytes /'; spreads "$out" items_per_second
+        spreads "$out" bytes_per_second | sed 's/^/bandwidth /'; } | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        $1 == "bytes" { bytes[$2] = $3; next }
+        $1 == "bandwidth" { bandwidth[$2] = $3; bandwidthSpread[$2] = $4; next }
+        { rate[$1] = $2; spread[$1] = $3 }
         function ms(name) { return 1e8 / rate[name] }  # ms per frame of 100 000
         function row(label, name) {
             if (name in rate)
@@ -262,10 +328,27 @@ if [[ "${1:-}" == "--replication" ]]; then
             row("  all RVB", soa "/RVB/8")
             if ((soa "/1") in rate)
                 printf "  %-46s %s\n", "target: DeadReckoningBatch (mix) < 1 ms", (ms(soa "/1") < 1 ? "met" : "MISSED")
+            cold = "BM_Replication/SoA/Cold/iterations:200"
+            read = "BM_Replication/MemoryRead/iterations:20"; write = "BM_Replication/MemoryWrite/iterations:20"
+            if (cold in rate) {
+                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)\n", "DeadReckoningBatch (mix), hot cache",
+                       ms(soa "/1"), 100 * spread[soa "/1"]
+                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)  %.2fx hot\n",
+                       "DeadReckoningBatch (mix), cold (data evicted)", ms(cold), 100 * spread[cold], ms(cold) / ms(soa "/1")
+                if (read in bandwidth && write in bandwidth) {
+                    printf "  %-46s %8.2f GB/s read, %.2f GB/s write (spread %.1f%%, %.1f%%)\n",
+                           "memory bandwidth, one thread", bandwidth[read] / 1e9, bandwidth[write] / 1e9,
+                           100 * bandwidthSpread[read], 100 * bandwidthSpread[write]
+                    printf "  %-46s %8.0f bytes per entity: %.3f ms per frame at the read bandwidth\n",
+                           "lower bound for the cold frame", bytes[cold], bytes[cold] * 1e5 / bandwidth[read] * 1e3
+                }
+                printf "  %-46s %s\n", "target: cold <= 1 ms", (ms(cold) <= 1 ? "met" : "MISSED")
+            }
             if (receivers in rate)
                 printf "  %-46s %8.1f ns per receiver (%.2f ms for 100 000)\n", "DeadReckoningReceiver::sample (PVB)",
                        1e9 / rate[receivers], 1e8 / rate[receivers]
             if ((soa "/1") in rate && ms(soa "/1") >= 1 && strict == 1) exit 1
+            if (cold in rate && ms(cold) > 1 && strict == 1) exit 1
         }'
     exit 0
 fi

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 FORESIGHT_NAMESPACE_BEGIN
 
@@ -24,11 +25,22 @@ constexpr LongReal kTouch = 1e-14L;
 // Roots of a polynomial closer than this (relative) are the same root.
 constexpr LongReal kSameRoot = 1e-12L;
 
+// The double solver's guard band (see realRoots): a value at a critical point within
+// kTouch * magnitude + kGuard * bound of zero sends the problem to long double. `bound` sums the
+// absolute values of every product that makes up each coefficient, so it bounds the double
+// coefficients' rounding (a few ulps of it: ~5e-16) and Horner's (~9e-16 of the magnitude); 1e-13
+// leaves a margin of 50 over both, so outside the band double decides every sign and every
+// touch as long double would.
+constexpr double kGuard = 1e-13;
+
 constexpr int kMaxDegree = 4;
 
-// c[i] is the coefficient of t^i.
+// c[i] is the coefficient of t^i; bound[i] >= |c[i]|, the sum of the absolute values of the
+// products c[i] is computed from (the scale of its rounding error; used by the double solver).
+template <class T>
 struct Polynomial {
-    std::array<LongReal, kMaxDegree + 1> c{};
+    std::array<T, kMaxDegree + 1> c{};
+    std::array<T, kMaxDegree + 1> bound{};
     int degree = 0;  // highest index that may be non-zero
 
     void trim() {
@@ -37,24 +49,36 @@ struct Polynomial {
     bool identicallyZero() const { return degree == 0 && c[0] == 0; }
 };
 
-LongReal evaluate(const Polynomial& p, LongReal t) {
-    LongReal value = 0;
+template <class T>
+T evaluate(const Polynomial<T>& p, T t) {
+    T value = 0;
     for (int i = p.degree; i >= 0; --i) value = value * t + p.c[static_cast<std::size_t>(i)];
     return value;
 }
 
 // The scale of p's rounding errors at t >= 0.
-LongReal magnitude(const Polynomial& p, LongReal t) {
-    LongReal value = 0;
+template <class T>
+T magnitude(const Polynomial<T>& p, T t) {
+    T value = 0;
     for (int i = p.degree; i >= 0; --i) value = value * t + std::fabs(p.c[static_cast<std::size_t>(i)]);
     return value;
 }
 
-Polynomial derivative(const Polynomial& p) {
-    Polynomial d;
+// The bound of the coefficients' rounding at t >= 0 (sum of bound[i] t^i).
+template <class T>
+T coefficientBound(const Polynomial<T>& p, T t) {
+    T value = 0;
+    for (int i = p.degree; i >= 0; --i) value = value * t + p.bound[static_cast<std::size_t>(i)];
+    return value;
+}
+
+template <class T>
+Polynomial<T> derivative(const Polynomial<T>& p) {
+    Polynomial<T> d;
     d.degree = std::max(p.degree - 1, 0);
     for (int i = 1; i <= p.degree; ++i) {
-        d.c[static_cast<std::size_t>(i - 1)] = static_cast<LongReal>(i) * p.c[static_cast<std::size_t>(i)];
+        d.c[static_cast<std::size_t>(i - 1)] = static_cast<T>(i) * p.c[static_cast<std::size_t>(i)];
+        d.bound[static_cast<std::size_t>(i - 1)] = static_cast<T>(i) * p.bound[static_cast<std::size_t>(i)];
     }
     d.trim();
     return d;
@@ -62,86 +86,145 @@ Polynomial derivative(const Polynomial& p) {
 
 // The root of p in [a, b], where p(a) and p(b) have opposite signs: Newton steps kept inside the
 // bracket, bisection when a step leaves it or does not halve the bracket (Numerical Recipes'
-// rtsafe). Long double: ~1e-19 relative.
-LongReal solveBracket(const Polynomial& p, const Polynomial& slope, LongReal a, LongReal b, LongReal fa) {
+// rtsafe). To the precision of T: ~1e-19 relative in long double; in double, until p(x) is
+// within the rounding of its evaluation.
+template <class T>
+T solveBracket(const Polynomial<T>& p, const Polynomial<T>& slope, T a, T b, T fa) {
     const bool risingAtA = fa < 0;  // p(a) < 0 < p(b), or the reverse
-    LongReal x = 0.5L * (a + b);
-    LongReal stepBefore = b - a;
-    LongReal step = stepBefore;
+    T x = T(0.5) * (a + b);
+    T stepBefore = b - a;
+    T step = stepBefore;
     for (int iteration = 0; iteration < 200; ++iteration) {
-        const LongReal fx = evaluate(p, x);
+        const T fx = evaluate(p, x);
         if (fx == 0) return x;
+        if constexpr (std::is_same_v<T, double>) {
+            // x is a root to the precision of double evaluation (Horner's rounding is below
+            // 2 n eps of the magnitude): further steps only move x within that noise, bisecting
+            // as Newton stops halving (8 more evaluations a root, measured).
+            if (std::fabs(fx) <= 8 * std::numeric_limits<T>::epsilon() * magnitude(p, std::fabs(x))) return x;
+        }
         if ((fx < 0) == risingAtA) {
             a = x;
         } else {
             b = x;
         }
-        const LongReal dfx = evaluate(slope, x);
-        const LongReal newton = dfx != 0 ? x - fx / dfx : a - 1;
+        const T dfx = evaluate(slope, x);
+        const T newton = dfx != 0 ? x - fx / dfx : a - 1;
         if (newton <= a || newton >= b || std::fabs(2 * fx) > std::fabs(stepBefore * dfx)) {
             stepBefore = step;
-            step = 0.5L * (b - a);
+            step = T(0.5) * (b - a);
             x = a + step;
         } else {
             stepBefore = step;
             step = x - newton;
             x = newton;
         }
-        if (b - a <= std::numeric_limits<LongReal>::epsilon() * std::max(std::fabs(a), std::fabs(b)) ||
-            std::fabs(step) <= std::numeric_limits<LongReal>::epsilon() * std::fabs(x)) {
+        if (b - a <= std::numeric_limits<T>::epsilon() * std::max(std::fabs(a), std::fabs(b)) ||
+            std::fabs(step) <= std::numeric_limits<T>::epsilon() * std::fabs(x)) {
             break;
         }
     }
     return x;
 }
 
+// The root of p in [a, b] (a sign change, the only root there). A quadratic in double takes the
+// cancellation-free formula (q / c2 or c0 / q with q = -(c1 + sign(c1) sqrt(disc)) / 2): the
+// guard band has kept its discriminant away from 0, so its roots are good to a few ulps; the
+// one in [a, b] is the root, else (rounding at an end) solveBracket decides.
+template <class T>
+T solveSignChange(const Polynomial<T>& p, const Polynomial<T>& slope, T a, T b, T fa) {
+    if constexpr (std::is_same_v<T, double>) {
+        if (p.degree == 2) {
+            const double disc = p.c[1] * p.c[1] - 4 * p.c[2] * p.c[0];
+            if (disc > 0) {
+                const double q = -0.5 * (p.c[1] + std::copysign(std::sqrt(disc), p.c[1]));
+                const double first = q / p.c[2];
+                const double second = q != 0 ? p.c[0] / q : first;
+                if (first >= a && first <= b) return first;
+                if (second >= a && second <= b) return second;
+            }
+        }
+    }
+    return solveBracket(p, slope, a, b, fa);
+}
+
 // Every real root of p in [lo, hi], sorted, each once: sign changes between consecutive
 // critical points (the roots of p', found the same way) are solved by solveBracket; a critical
 // point where p touches zero (|p| <= kTouch * magnitude) is a double root. Returns the count.
-int realRoots(const Polynomial& p, LongReal lo, LongReal hi, std::array<LongReal, kMaxDegree>& roots) {
+//
+// In double, a critical point whose value is within the guard band (kTouch * magnitude +
+// kGuard * coefficientBound) at any level of the recursion sets `doubtful` and returns 0: there,
+// double rounding could decide a sign or a touch differently from long double, and the caller
+// solves the problem again in long double (grazing shots, near-double roots). Outside the band
+// every decision is long double's, and a root found in double differs from long double's by
+// its rounding over |p'|: p' at a root is at least ~p'' * sqrt(1e-13) * t there, so below
+// ~1e-8 t, and ~1e-15 t for a simple root.
+template <class T>
+int realRoots(const Polynomial<T>& p, T lo, T hi, std::array<T, kMaxDegree>& roots, bool& doubtful) {
     if (p.degree == 0) return 0;
     if (p.degree == 1) {
-        const LongReal root = -p.c[0] / p.c[1];
+        const T root = -p.c[0] / p.c[1];
+        if constexpr (std::is_same_v<T, double>) {
+            // The window's ends decide whether a root near them is in: as for the critical points.
+            for (const T x : {lo, hi}) {
+                const T ax = std::fabs(x);
+                if (std::fabs(evaluate(p, x)) <=
+                    static_cast<T>(kTouch) * magnitude(p, ax) + kGuard * coefficientBound(p, ax)) {
+                    doubtful = true;
+                    return 0;
+                }
+            }
+        }
         if (root >= lo && root <= hi) {
             roots[0] = root;
             return 1;
         }
         return 0;
     }
-    const Polynomial slope = derivative(p);
-    std::array<LongReal, kMaxDegree> critical{};
-    const int criticalCount = realRoots(slope, lo, hi, critical);
+    const Polynomial<T> slope = derivative(p);
+    std::array<T, kMaxDegree> critical{};
+    const int criticalCount = realRoots(slope, lo, hi, critical, doubtful);
+    if (doubtful) return 0;
 
-    std::array<LongReal, kMaxDegree + 2> points{};
+    std::array<T, kMaxDegree + 2> points{};
     int pointCount = 0;
     points[static_cast<std::size_t>(pointCount++)] = lo;
     for (int i = 0; i < criticalCount; ++i) {
-        const LongReal x = critical[static_cast<std::size_t>(i)];
+        const T x = critical[static_cast<std::size_t>(i)];
         if (x > points[static_cast<std::size_t>(pointCount - 1)] && x < hi)
             points[static_cast<std::size_t>(pointCount++)] = x;
     }
     if (hi > points[static_cast<std::size_t>(pointCount - 1)]) points[static_cast<std::size_t>(pointCount++)] = hi;
 
-    std::array<LongReal, kMaxDegree + 2> values{};
+    std::array<T, kMaxDegree + 2> values{};
     std::array<bool, kMaxDegree + 2> zero{};
     for (int i = 0; i < pointCount; ++i) {
         const auto k = static_cast<std::size_t>(i);
         values[k] = evaluate(p, points[k]);
-        zero[k] = std::fabs(values[k]) <= kTouch * magnitude(p, std::fabs(points[k]));
+        const T x = std::fabs(points[k]);
+        const T touch = static_cast<T>(kTouch) * magnitude(p, x);
+        zero[k] = std::fabs(values[k]) <= touch;
+        if constexpr (std::is_same_v<T, double>) {
+            if (std::fabs(values[k]) <= touch + kGuard * coefficientBound(p, x)) {
+                doubtful = true;
+                return 0;
+            }
+        }
     }
 
     int count = 0;
-    auto add = [&](LongReal root) {
+    auto add = [&](T root) {
         if (count > 0) {
-            const LongReal previous = roots[static_cast<std::size_t>(count - 1)];
-            if (root - previous <= kSameRoot * std::max({std::fabs(root), std::fabs(previous), hi * kSameRoot})) return;
+            const T previous = roots[static_cast<std::size_t>(count - 1)];
+            const T same = static_cast<T>(kSameRoot);
+            if (root - previous <= same * std::max({std::fabs(root), std::fabs(previous), hi * same})) return;
         }
         if (count < kMaxDegree) roots[static_cast<std::size_t>(count++)] = root;
     };
     for (int i = 0; i < pointCount; ++i) {
         const auto k = static_cast<std::size_t>(i);
         if (i > 0 && !zero[k - 1] && !zero[k] && (values[k - 1] < 0) != (values[k] < 0)) {
-            add(solveBracket(p, slope, points[k - 1], points[k], values[k - 1]));
+            add(solveSignChange(p, slope, points[k - 1], points[k], values[k - 1]));
         }
         if (zero[k]) add(points[k]);
     }
@@ -173,15 +256,36 @@ struct Relative {
 
 DVec3 across(const DVec3& v, const DVec3& up) { return v - glm::dot(v, up) * up; }
 
-// |P d(t)|^2 - (speed t)^2, with P the identity (Speed) or the projection across gravity.
-Polynomial speedPolynomial(const DVec3& c0, const DVec3& c1, const DVec3& c2, double speed) {
-    Polynomial p;
+double dotAbs(const DVec3& a, const DVec3& b) {
+    return std::fabs(a.x * b.x) + std::fabs(a.y * b.y) + std::fabs(a.z * b.z);
+}
+
+// |P d(t)|^2 - (speed t)^2, with P the identity (Speed) or the projection across gravity: in
+// long double (the products of doubles nearly exact), or in double with each coefficient's
+// bound (the sum of its products' absolute values).
+template <class T>
+Polynomial<T> speedPolynomial(const DVec3& c0, const DVec3& c1, const DVec3& c2, double speed) {
+    Polynomial<T> p;
     p.degree = 4;
-    p.c[4] = dotL(c2, c2);
-    p.c[3] = 2 * dotL(c1, c2);
-    p.c[2] = dotL(c1, c1) + 2 * dotL(c0, c2) - static_cast<LongReal>(speed) * static_cast<LongReal>(speed);
-    p.c[1] = 2 * dotL(c0, c1);
-    p.c[0] = dotL(c0, c0);
+    if constexpr (std::is_same_v<T, LongReal>) {
+        p.c[4] = dotL(c2, c2);
+        p.c[3] = 2 * dotL(c1, c2);
+        p.c[2] = dotL(c1, c1) + 2 * dotL(c0, c2) - static_cast<LongReal>(speed) * static_cast<LongReal>(speed);
+        p.c[1] = 2 * dotL(c0, c1);
+        p.c[0] = dotL(c0, c0);
+    } else {
+        const double c11 = glm::dot(c1, c1);
+        p.c[4] = glm::dot(c2, c2);
+        p.c[3] = 2 * glm::dot(c1, c2);
+        p.c[2] = c11 + 2 * glm::dot(c0, c2) - speed * speed;
+        p.c[1] = 2 * glm::dot(c0, c1);
+        p.c[0] = glm::dot(c0, c0);
+        p.bound[4] = p.c[4];
+        p.bound[3] = 2 * dotAbs(c1, c2);
+        p.bound[2] = c11 + 2 * dotAbs(c0, c2) + speed * speed;
+        p.bound[1] = 2 * dotAbs(c0, c1);
+        p.bound[0] = p.c[0];
+    }
     p.trim();
     return p;
 }
@@ -290,15 +394,32 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
     int timeCount = 0;
     bool everyTime = false;  // every t works: no earliest time (see below)
 
-    auto polynomialTimes = [&](const Polynomial& p, auto&& accept) {
-        if (p.identicallyZero()) {
-            everyTime = true;
-            return;
+    // `build(T())` makes the polynomial in T. Solved in double; when the double solver doubts
+    // (a grazing or near-double root, see realRoots), again in long double.
+    auto polynomialTimes = [&](auto&& build, auto&& accept) {
+        const Polynomial<double> p = build(0.0);
+        // The degree is long double's unless a leading coefficient cancels to its rounding.
+        bool doubtful = p.identicallyZero();
+        for (int i = p.degree; i <= kMaxDegree; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            if (p.bound[k] > 0 && std::fabs(p.c[k]) <= kGuard * p.bound[k]) doubtful = true;
         }
-        std::array<LongReal, kMaxDegree> roots{};
-        const int n = realRoots(p, 0.0L, static_cast<LongReal>(maxTime), roots);
+        std::array<double, kMaxDegree> roots{};
+        int n = doubtful ? 0 : realRoots(p, 0.0, maxTime, roots, doubtful);
+        if (doubtful) {
+            const Polynomial<LongReal> exact = build(0.0L);
+            if (exact.identicallyZero()) {
+                everyTime = true;
+                return;
+            }
+            doubtful = false;
+            std::array<LongReal, kMaxDegree> exactRoots{};
+            n = realRoots(exact, 0.0L, static_cast<LongReal>(maxTime), exactRoots, doubtful);
+            for (int i = 0; i < n; ++i)
+                roots[static_cast<std::size_t>(i)] = static_cast<double>(exactRoots[static_cast<std::size_t>(i)]);
+        }
         for (int i = 0; i < n; ++i) {
-            const double t = static_cast<double>(roots[static_cast<std::size_t>(i)]);
+            const double t = roots[static_cast<std::size_t>(i)];
             if (t > 0 && t <= maxTime && accept(t) && timeCount < static_cast<int>(kMaxFiringSolutions)) {
                 times[static_cast<std::size_t>(timeCount++)] = t;
             }
@@ -324,13 +445,14 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
                     }
                     break;
                 }
-                polynomialTimes(speedPolynomial(r.c0, r.c1, r.c2, speed), always);
+                polynomialTimes([&](auto zero) { return speedPolynomial<decltype(zero)>(r.c0, r.c1, r.c2, speed); },
+                                always);
                 break;
             }
             case AimConstraint::HorizontalSpeed: {
                 if (speed < 0) break;
-                polynomialTimes(speedPolynomial(across(r.c0, r.up), across(r.c1, r.up), across(r.c2, r.up), speed),
-                                always);
+                const DVec3 c0 = across(r.c0, r.up), c1 = across(r.c1, r.up), c2 = across(r.c2, r.up);
+                polynomialTimes([&](auto zero) { return speedPolynomial<decltype(zero)>(c0, c1, c2, speed); }, always);
                 break;
             }
             case AimConstraint::ApexAboveStart:
@@ -339,25 +461,33 @@ Status aimProjectile(const AimShot& shot, const AimTarget& target, std::span<Fir
                 if (height < 0) break;
                 const double g = r.gravityLength;
                 const double apexSpeed = std::sqrt(2.0 * g * height);  // vertical speed gained falling `height`
-                Polynomial p;
-                p.degree = 2;
-                p.c[0] = static_cast<LongReal>(glm::dot(r.c0, r.up));
-                p.c[1] = static_cast<LongReal>(glm::dot(r.c1, r.up));
-                p.c[2] = static_cast<LongReal>(glm::dot(r.c2, r.up));
                 // The launch's vertical speed w covers the vertical displacement: d(t).up = w t.
                 // Above the start: w = sqrt(2 g h), hit descending (t >= w / g). Above the hit
                 // point: the apex is (w - g t)^2 / (2 g) above it, so w = g t - sqrt(2 g h) on the
                 // descending branch, and w >= 0 (the apex is reached in flight): t >= sqrt(2 g h) / g.
                 const double apexTime = apexSpeed / g;
-                if (shot.constraint == AimConstraint::ApexAboveStart) {
-                    p.c[1] -= static_cast<LongReal>(apexSpeed);
-                } else {
-                    p.c[1] += static_cast<LongReal>(apexSpeed);
-                    p.c[2] -= static_cast<LongReal>(g);
-                }
-                p.trim();
+                const bool aboveStart = shot.constraint == AimConstraint::ApexAboveStart;
+                auto apexPolynomial = [&](auto zero) {
+                    using T = decltype(zero);
+                    Polynomial<T> p;
+                    p.degree = 2;
+                    p.c[0] = static_cast<T>(glm::dot(r.c0, r.up));
+                    p.c[1] = static_cast<T>(glm::dot(r.c1, r.up));
+                    p.c[2] = static_cast<T>(glm::dot(r.c2, r.up));
+                    p.bound[0] = static_cast<T>(dotAbs(r.c0, r.up));
+                    p.bound[1] = static_cast<T>(dotAbs(r.c1, r.up) + apexSpeed);
+                    p.bound[2] = static_cast<T>(dotAbs(r.c2, r.up) + (aboveStart ? 0.0 : g));
+                    if (aboveStart) {
+                        p.c[1] -= static_cast<T>(apexSpeed);
+                    } else {
+                        p.c[1] += static_cast<T>(apexSpeed);
+                        p.c[2] -= static_cast<T>(g);
+                    }
+                    p.trim();
+                    return p;
+                };
                 // A hit at the apex itself is a double root, found to ~1e-10: accept it.
-                polynomialTimes(p, [&](double t) { return t >= apexTime * (1.0 - 1e-9); });
+                polynomialTimes(apexPolynomial, [&](double t) { return t >= apexTime * (1.0 - 1e-9); });
                 break;
             }
         }

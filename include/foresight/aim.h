@@ -17,7 +17,11 @@
 /// target without acceleration relative to the projectile, the stable quadratic formula;
 /// everything else finds the real roots of its polynomial on (0, maxTime] by bracketing
 /// between the roots of its derivatives (found the same way, recursively), each bracket
-/// solved by safeguarded Newton in long double. A grazing contact, where the polynomial
+/// solved by safeguarded Newton in double (quadratics by the cancellation-free formula). When
+/// a value that decides a bracket or a touch is within a guard band of zero (1e-13 of the
+/// magnitude of the products the coefficients are made of: a grazing shot, roots closer than
+/// ~1e-6 of the flight time), the polynomial is solved again in long double, as before that
+/// double path existed. A grazing contact, where the polynomial
 /// touches zero without crossing it (the target exactly at the range limit), is a double root
 /// and reported once. "Touches" means the polynomial's residual is within 1e-14 of the
 /// magnitude of its terms there (the rounding of double inputs): the shot misses by a few
@@ -27,7 +31,7 @@
 /// comes back (straight up under gravity), or by none. Nor is a time so small that it rounds
 /// to 0 as a float (a target 1e-30 m away at 3e38 m/s): such solutions are dropped, so every
 /// reported FiringSolution::time is a positive float. No allocation; computation in double
-/// (roots in long double). Gravity is taken at the decimal value it was written as (9.81f is
+/// (long double for the doubtful roots above). Gravity is taken at the decimal value it was written as (9.81f is
 /// 9.81), as predictProjectile takes it, so that a solution flown by predictProjectile meets
 /// the target.
 
