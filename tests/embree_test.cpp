@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "counting_allocator.h"  // replaces operator new/delete in this binary (counts them)
+
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -561,6 +563,26 @@ TEST_F(embree_world, CastSegmentsStopAtTheShortestSpan) {
     EXPECT_EQ(hits[50].fraction, 0.25f);  // beyond n = 40: untouched
     std::vector<CastHit> none;
     EXPECT_EQ(worlds->embree.castSegments(casts, none, found), 0u);
+}
+
+TEST_F(embree_world, CastsDoNotAllocate) {
+    // Rays (fast and slow paths) and spheres, one by one and in a batch, into caller storage.
+    std::vector<SegmentCast> casts = randomCasts(worlds->meshTriangles, 400, 0.0f, 25);
+    for (std::size_t i = 0; i < casts.size(); i += 4) casts[i].radius = 0.1f;
+    std::vector<CastHit> hits(casts.size());
+    std::vector<std::uint8_t> found(casts.size());
+    // The replacement is in effect (otherwise the check below would pass vacuously); the
+    // pointer escapes through a volatile, so the pair cannot be optimised away.
+    const long probe = ftest::gAllocations.load();
+    int* volatile sink = new int(1);
+    delete sink;
+    EXPECT_GT(ftest::gAllocations.load(), probe);
+    const long before = ftest::gAllocations.load();
+    std::size_t count = 0;
+    for (const SegmentCast& cast : casts) count += worlds->embree.castSegment(cast, hits[0]) ? 1 : 0;
+    count += worlds->embree.castSegments(casts, hits, found);
+    EXPECT_EQ(ftest::gAllocations.load() - before, 0);
+    EXPECT_GT(count, 0u);
 }
 
 TEST(embree_mesh, CastSegmentsBeforeCommitAndWithoutAMesh) {
