@@ -24,7 +24,9 @@
 #        scripts/bench.sh --worlds [benchmark options...]
 #            the collision worlds (bench/bench_worlds.cpp, needs the Embree and Bullet
 #            backends): segment casts per second on a mesh of a million triangles through
-#            EmbreeWorld and Bullet's rayTest, target Embree >= 5x Bullet; predictions per second
+#            EmbreeWorld (castSegment, and castSegments for many at once), bare native Embree and
+#            Bullet's rayTest; targets: castSegment within 1.2x the time of a bare native
+#            rtcIntersect1, castSegments >= 5x Bullet's rayTest per ray; predictions per second
 #            on the demo level per world; the BVH build times. Progress goes to stderr on a
 #            terminal only; the build's output is shown only if it fails.
 # The JSON results go to build/bench.json (--worlds: build/bench_worlds.json; FORESIGHT_BENCH_OUT
@@ -138,8 +140,10 @@ if [[ "${1:-}" == "--worlds" ]]; then
     fi
     progress "running $dir/bench/foresight_bench_worlds, 5 repetitions (about two minutes)"
     # The program's own lines (mesh, BVH builds, agreement of the worlds) go to stderr: kept
-    # for the summary.
+    # for the summary. The repetitions of the benchmarks are interleaved in random order, so
+    # that a change of load on a shared machine weighs on every ratio's two sides alike.
     if ! "$dir/bench/foresight_bench_worlds" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_enable_random_interleaving=true \
         --benchmark_out="$out" --benchmark_out_format=json "$@" 2>"$log"; then
         cat "$log" >&2
         echo "bench.sh: foresight_bench_worlds failed (above)" >&2
@@ -182,12 +186,16 @@ if [[ "${1:-}" == "--worlds" ]]; then
         END {
             print "  Segment casts on the million-triangle mesh (radius 0):"
             show("EmbreeWorld::castSegment", "BM_Cast/Embree")
+            show("EmbreeWorld::castSegments (4096 at once)", "BM_Cast/EmbreeBatch")
             show("Bullet btCollisionWorld::rayTest", "BM_Cast/BulletRayTest")
             show("BulletWorld::castSegment (the adapter)", "BM_Cast/BulletWorld")
             show("native Embree triangles, rtcIntersect1 (info)", "BM_Cast/EmbreeNative")
             show("  the same, Embree default scene flags (info)", "BM_Cast/EmbreeNativeDefault")
             show("Embree user geometry, float test (info)", "BM_Cast/EmbreeUserFloat")
-            ratio("EmbreeWorld / Bullet rayTest", "BM_Cast/Embree", "BM_Cast/BulletRayTest", 5)
+            ratio("EmbreeWorld castSegments / Bullet rayTest", "BM_Cast/EmbreeBatch", "BM_Cast/BulletRayTest", 5)
+            ratio("EmbreeWorld castSegment / Bullet rayTest", "BM_Cast/Embree", "BM_Cast/BulletRayTest", 5)
+            timeRatio("castSegment time / native rtcIntersect1 time", "BM_Cast/Embree", "BM_Cast/EmbreeNative", 1.2)
+            timeRatio("castSegments time / native time (info)", "BM_Cast/EmbreeBatch", "BM_Cast/EmbreeNative", 0)
             ratio("native Embree triangles / Bullet rayTest (info)", "BM_Cast/EmbreeNative", "BM_Cast/BulletRayTest", 0)
             print "  Sphere sweeps, radius 0.1 m (information):"
             show("EmbreeWorld::castSegment", "BM_Sweep/Embree")

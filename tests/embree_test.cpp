@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "counting_allocator.h"  // replaces operator new/delete in this binary (counts them)
+
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -493,6 +495,255 @@ TEST_F(embree_world, ConcurrentCastsMatchSequential) {
         EXPECT_EQ(sequential[i].value.fraction, parallel[i].value.fraction) << i;
         EXPECT_EQ(sequential[i].value.position, parallel[i].value.position) << i;
         EXPECT_EQ(sequential[i].value.normal, parallel[i].value.normal) << i;
+    }
+}
+
+// Whether two casts' answers are the same, bit for bit (hit or miss; fraction, position, normal
+// and material of a hit).
+bool sameBits(bool hitA, const CastHit& a, bool hitB, const CastHit& b) {
+    if (hitA != hitB) return false;
+    if (!hitA) return true;
+    return std::memcmp(&a.fraction, &b.fraction, sizeof a.fraction) == 0 &&
+           std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
+           std::memcmp(&a.normal, &b.normal, sizeof a.normal) == 0 &&
+           std::memcmp(&a.restitution, &b.restitution, sizeof a.restitution) == 0 &&
+           std::memcmp(&a.friction, &b.friction, sizeof a.friction) == 0;
+}
+
+// castSegments against castSegment, cast by cast: the same answers bit for bit, and the count.
+void expectBatchMatchesSingle(const EmbreeWorld& world, const std::vector<SegmentCast>& casts) {
+    std::vector<CastHit> hits(casts.size());
+    std::vector<std::uint8_t> found(casts.size(), 7);
+    const std::size_t count = world.castSegments(casts, hits, found);
+    std::size_t expectedCount = 0;
+    for (std::size_t i = 0; i < casts.size(); ++i) {
+        CastHit single;
+        const bool hit = world.castSegment(casts[i], single);
+        expectedCount += hit ? 1 : 0;
+        ASSERT_TRUE(found[i] == 0 || found[i] == 1) << i;
+        ASSERT_TRUE(sameBits(hit, single, found[i] == 1, hits[i]))
+            << "cast " << i << " from (" << casts[i].origin.x << ", " << casts[i].origin.y << ", " << casts[i].origin.z
+            << ") by (" << casts[i].displacement.x << ", " << casts[i].displacement.y << ", " << casts[i].displacement.z
+            << ") r " << casts[i].radius;
+    }
+    EXPECT_EQ(count, expectedCount);
+}
+
+TEST_F(embree_world, CastSegmentsGiveCastSegmentsAnswersBitForBit) {
+    // The scene with primitives and the mesh; rays and spheres, plain and special (on a surface,
+    // at edges and vertices, parallel, zero length, vertex to vertex: randomCasts' cases), in
+    // batches of every length from 0 to 40 (groups of 16 and their remainders).
+    for (const float radius : {0.0f, 0.05f}) {
+        const auto casts = randomCasts(worlds->meshTriangles, 4000, radius, 21);
+        expectBatchMatchesSingle(worlds->embree, casts);
+        if (::testing::Test::HasFailure()) return;
+        for (std::size_t length = 0; length <= 40; ++length)
+            expectBatchMatchesSingle(worlds->embree,
+                                     std::vector<SegmentCast>(casts.begin() + 100, casts.begin() + 100 + length));
+    }
+    // Rays and spheres mixed in one batch.
+    auto mixed = randomCasts(worlds->meshTriangles, 2000, 0.0f, 22);
+    for (std::size_t i = 0; i < mixed.size(); i += 3) mixed[i].radius = 0.1f;
+    expectBatchMatchesSingle(worlds->embree, mixed);
+}
+
+TEST_F(embree_world, CastSegmentsStopAtTheShortestSpan) {
+    // n = min of the three lengths; entries from n on are not touched.
+    const auto casts = randomCasts(worlds->meshTriangles, 64, 0.0f, 23);
+    std::vector<CastHit> hits(64);
+    std::vector<std::uint8_t> found(40, 7);
+    hits[50].fraction = 0.25f;
+    const std::size_t count = worlds->embree.castSegments(casts, hits, found);
+    std::size_t expected = 0;
+    for (std::size_t i = 0; i < 40; ++i) {
+        CastHit hit;
+        expected += worlds->embree.castSegment(casts[i], hit) ? 1 : 0;
+    }
+    EXPECT_EQ(count, expected);
+    EXPECT_EQ(hits[50].fraction, 0.25f);  // beyond n = 40: untouched
+    std::vector<CastHit> none;
+    EXPECT_EQ(worlds->embree.castSegments(casts, none, found), 0u);
+}
+
+TEST_F(embree_world, CastsDoNotAllocate) {
+    // Rays (fast and slow paths) and spheres, one by one and in a batch, into caller storage.
+    std::vector<SegmentCast> casts = randomCasts(worlds->meshTriangles, 400, 0.0f, 25);
+    for (std::size_t i = 0; i < casts.size(); i += 4) casts[i].radius = 0.1f;
+    std::vector<CastHit> hits(casts.size());
+    std::vector<std::uint8_t> found(casts.size());
+    // The replacement is in effect (otherwise the check below would pass vacuously); the
+    // pointer escapes through a volatile, so the pair cannot be optimised away.
+    const long probe = ftest::gAllocations.load();
+    int* volatile sink = new int(1);
+    delete sink;
+    EXPECT_GT(ftest::gAllocations.load(), probe);
+    const long before = ftest::gAllocations.load();
+    std::size_t count = 0;
+    for (const SegmentCast& cast : casts) count += worlds->embree.castSegment(cast, hits[0]) ? 1 : 0;
+    count += worlds->embree.castSegments(casts, hits, found);
+    EXPECT_EQ(ftest::gAllocations.load() - before, 0);
+    EXPECT_GT(count, 0u);
+}
+
+TEST(embree_mesh, CastSegmentsBeforeCommitAndWithoutAMesh) {
+    // Before commit() (brute force) and for a world of primitives only: castSegment's answers.
+    Worlds w;
+    addPrimitives(w.embree);
+    const Mesh mesh = sceneMesh();
+    ASSERT_EQ(w.embree.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    std::vector<Triangle> triangles;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                           mesh.vertices[mesh.indices[t + 2]]};
+        if (foresight::validateTriangle(tri) == Status::Ok) triangles.push_back(tri);
+    }
+    const auto casts = randomCasts(triangles, 500, 0.0f, 24);
+    expectBatchMatchesSingle(w.embree, casts);
+    EmbreeWorld primitivesOnly;
+    addPrimitives(primitivesOnly);
+    ASSERT_TRUE(primitivesOnly.commit());
+    expectBatchMatchesSingle(primitivesOnly, casts);
+}
+
+// Uniform doubles in [0, 1) from SplitMix64: the same sequence with every standard library
+// (std::uniform_real_distribution's is not).
+class UnitRandom {
+public:
+    explicit UnitRandom(std::uint64_t seed) : mState(seed) {}
+    double operator()() {
+        std::uint64_t z = (mState += 0x9E3779B97F4A7C15ULL);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53;
+    }
+
+private:
+    std::uint64_t mState;
+};
+
+// A closed height field: a grid of `cells` x `cells` squares of `size` m (two triangles each,
+// alternating diagonals) with hills, centred on (cx, cz).
+Mesh hillsMesh(int cells, double size, double cx, double cz) {
+    Mesh mesh;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            const double x = cx + (i - 0.5 * cells) * size, z = cz + (j - 0.5 * cells) * size;
+            mesh.vertices.push_back(
+                r3(x, 1.5 * std::sin(0.37 * x) * std::cos(0.29 * z) + 0.2 * std::sin(2.3 * x + z), z));
+        }
+    const auto side = static_cast<std::uint32_t>(cells + 1);
+    for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(cells); ++j)
+        for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(cells); ++i) {
+            const std::uint32_t v00 = j * side + i, v10 = v00 + 1, v01 = v00 + side, v11 = v01 + 1;
+            if ((i + j) % 2 == 0)
+                mesh.indices.insert(mesh.indices.end(), {v00, v10, v11, v00, v11, v01});
+            else
+                mesh.indices.insert(mesh.indices.end(), {v00, v10, v01, v10, v11, v01});
+        }
+    return mesh;
+}
+
+// Radius 0, the third documented difference (embree_world.h): a segment that grazes a
+// triangle's plane may miss a hit that lies within the graze reach (rho / sine) of its start or
+// end; EmbreeWorld then reports a farther exact hit or none.
+bool isDocumentedEndGraze(const Worlds& w, const Outcome& expected, const Outcome& actual, const SegmentCast& cast) {
+    if (!expected.hit || (actual.hit && actual.value.fraction < expected.value.fraction)) return false;
+    if (actual.hit && !trianglesGiving(w.meshTriangles, cast, actual.value).size()) return false;
+    const double length = glm::length(DVec3(cast.displacement));
+    const double f = double(expected.value.fraction);
+    bool grazed = false;
+    for (const Triangle& t : trianglesGiving(w.meshTriangles, cast, expected.value))
+        // 1e-6 relative: the fraction is a float.
+        grazed = grazed || std::min(f, 1.0 - f) * length <= grazeReach(w.meshTriangles, cast, t) + 1e-6 * length;
+    return grazed;
+}
+
+TEST(embree_mesh, RaysNearEdgesVerticesAndGrazingGetTheExactAnswer) {
+    // Where Embree's float hit is in doubt, the exact answer: rays on a closed height field
+    // (every edge away from the border shared by two triangles) aimed at interior points at
+    // distances 1e-9 to 1e-1 m from an edge line (inside and outside the triangle), at shared
+    // vertices, and across the surface at grazing angles (sine 1e-4 to 0.1) and steeply, from
+    // above and from below: EmbreeWorld's answer (the fast path's confirmation, its proof
+    // that the hit is far enough inside, or the slow path) must be StaticWorld's, bit for bit,
+    // or a documented graze (a ray that only touches the surface at an edge or vertex, within
+    // rho / sine of it, or a grazing ray whose hit lies within rho / sine of its end: Embree's
+    // float test may miss those; isDocumentedGraze and isDocumentedEndGraze check them).
+    // Near the origin and 3 km away (larger float errors, larger rho). Also through castSegments.
+    for (const double centre : {0.0, 3000.0}) {
+        const Mesh mesh = hillsMesh(24, 0.5, centre, -centre);
+        Worlds w;  // no primitives: the mesh alone, in both worlds
+        EmbreeWorld& world = w.embree;
+        StaticWorld& reference = w.reference;
+        ASSERT_EQ(world.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+        ASSERT_TRUE(world.commit());
+        std::vector<Triangle> interior;  // triangles with no vertex on the border
+        const double half = 0.5 * 24 * 0.5 - 0.25;
+        for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+            const Triangle tri{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                               mesh.vertices[mesh.indices[t + 2]]};
+            ASSERT_EQ(reference.add(tri), Status::Ok);
+            w.meshTriangles.push_back(tri);
+            bool inside = true;
+            for (const RVec3& v : {tri.a, tri.b, tri.c})
+                inside = inside && std::abs(double(v.x) - centre) < half && std::abs(double(v.z) + centre) < half;
+            if (inside) interior.push_back(tri);
+        }
+        ASSERT_GT(interior.size(), 800u);
+        UnitRandom u(31);
+        std::vector<SegmentCast> casts;
+        for (int i = 0; i < 6000; ++i) {
+            const Triangle& t = interior[static_cast<std::size_t>(u() * double(interior.size())) % interior.size()];
+            const DVec3 a = d3(t.a), b = d3(t.b), c = d3(t.c);
+            const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
+            const int edge = i % 3;
+            const DVec3 u0 = edge == 0 ? a : edge == 1 ? b : c, u1 = edge == 0 ? b : edge == 1 ? c : a;
+            const DVec3 opposite = edge == 0 ? c : edge == 1 ? a : b;
+            const DVec3 inward = glm::normalize(glm::cross(n, u1 - u0)) *
+                                 (glm::dot(glm::cross(n, u1 - u0), opposite - u0) > 0 ? 1.0 : -1.0);
+            DVec3 target;
+            switch ((i / 3) % 4) {
+                case 0:  // near an edge line, inside or outside, 1e-9 to 1e-1 m
+                case 1:
+                    target = u0 + (u1 - u0) * (0.05 + 0.9 * u()) +
+                             inward * ((u() < 0.5 ? 1.0 : -1.0) * std::pow(10.0, -9.0 + 8.0 * u()));
+                    break;
+                case 2:  // at a shared vertex, or within 1e-6 m of it
+                    target = u0 + (u() < 0.5 ? DVec3(0.0) : DVec3(u() - 0.5, 0.0, u() - 0.5) * 2e-6);
+                    break;
+                default:  // anywhere in the triangle
+                    target = a + (b - a) * (0.5 * u()) + (c - a) * (0.5 * u());
+                    break;
+            }
+            // Steep, or grazing: the direction's sine against the triangle's plane, 1e-4 to 0.1.
+            DVec3 along = glm::normalize(u1 - u0 + inward * (u() - 0.5));
+            const double sine = u() < 0.4 ? 0.3 + 0.7 * u() : std::pow(10.0, -4.0 + 3.0 * u());
+            const double side = u() < 0.5 ? 1.0 : -1.0;  // from above or below
+            const DVec3 direction = glm::normalize(along * std::sqrt(1.0 - sine * sine) - n * (side * sine));
+            const double before = 0.05 + 2.0 * u(), after = u() < 0.8 ? 0.5 : 1e-6;
+            const DVec3 from = target - direction * before;
+            casts.push_back(SegmentCast{r3(from.x, from.y, from.z), Vec3(direction * (before + after))});
+        }
+        int hits = 0, grazes = 0;
+        for (std::size_t i = 0; i < casts.size(); ++i) {
+            Outcome expected, actual;
+            expected.hit = reference.castSegment(casts[i], expected.value);
+            actual.hit = world.castSegment(casts[i], actual.value);
+            hits += expected.hit ? 1 : 0;
+            if (sameBits(expected.hit, expected.value, actual.hit, actual.value)) continue;
+            ASSERT_TRUE(isDocumentedGraze(w, expected, actual, casts[i]) ||
+                        isDocumentedEndGraze(w, expected, actual, casts[i]))
+                << "centre " << centre << " cast " << i << ": expected " << expected.hit << " at "
+                << expected.value.fraction << ", got " << actual.hit << " at " << actual.value.fraction;
+            ++grazes;
+        }
+        EXPECT_GT(hits, 5000);  // nearly all aim at the surface from within 2 m
+        // The casts are built to graze: a fifth end 1e-6 m past the surface, three fifths at a sine
+        // below 0.1 (rho / sine up to 3 mm near the origin, 3 cm at 3 km). Measured: 47 and 125
+        // in float builds, 92 and 235 in double builds (whose vertices Embree rounds to float).
+        EXPECT_LT(grazes, 400) << "grazes " << grazes;
+        std::printf("[          ] centre %g: %d of %zu casts graze an edge (documented difference)\n", centre, grazes,
+                    casts.size());
+        expectBatchMatchesSingle(world, casts);
     }
 }
 

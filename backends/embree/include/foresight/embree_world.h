@@ -15,7 +15,13 @@
 /// - Radius 0, fast path: one plain rtcIntersect1 (no filter) along the segment, started rho
 ///   before it and ended rho after it; the float closest triangle then goes through the exact
 ///   test. If that hits within the segment farther than rho / sine from the triangle's edges,
-///   it is the mesh's result (compared with the primitives as StaticWorld orders them).
+///   it is the mesh's result (compared with the primitives as StaticWorld orders them). The
+///   exact test reads one record per triangle, built by commit() in primitive order: the
+///   triangle and its double-precision unit normal (64 bytes, one cache line, in float builds;
+///   huge pages where the kernel offers them), and skips the inside-the-triangle check where
+///   the edge-distance test already proves it (the proof is in embree_world.cpp); the hit,
+///   fraction and normal are the exact test's, bit for bit. castSegments runs this path for
+///   many rays at once.
 ///   Otherwise (the exact test misses, or hits near an edge: about 0.3% of casts on a terrain)
 ///   the slow path traces the ray again with a filter that runs the exact test on every
 ///   triangle the float test reports, and tests exactly every triangle within 4 rho / sine of
@@ -62,7 +68,8 @@
 ///
 /// Casts never allocate and are safe from many threads once commit() has been called (each
 /// cast uses its own Embree ray or query context). Memory: the triangles as added (3 RVec3
-/// each), the float vertices and indices (kept for the next commit), and Embree's scene. The
+/// each), the float vertices and indices (kept for the next commit), the confirmation records
+/// (64 bytes per triangle in float builds, 96 in double builds) and Embree's scene. The
 /// loaders catch every exception (an error result); addMesh and add can only throw
 /// std::bad_alloc, as StaticWorld::add.
 
@@ -173,6 +180,20 @@ public:
     const StaticWorld& primitives() const { return mPrimitives; }
 
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override;
+    /// Many casts at once (throw planning, a frame's projectiles): for each i below
+    /// n = min(casts.size(), hits.size(), found.size()), the answer castSegment(casts[i], hits[i])
+    /// gives, bit for bit: found[i] = 1 and hits[i] filled on a hit, found[i] = 0 (and hits[i]
+    /// unspecified, as castSegment leaves it) otherwise. Casts, hits and units as castSegment
+    /// (metres; fractions of each cast's displacement). Entries from n on are not touched.
+    /// Rays (radius 0) after commit() go through the fast path in groups of 16: each ray is
+    /// traced and its exact confirmation's data is requested from memory at once, then the
+    /// group's hits are confirmed, so that those memory reads overlap instead of each stalling
+    /// its cast. Swept spheres (radius > 0), casts before commit(), and rays in doubt are
+    /// answered one by one, as castSegment answers them. No allocation; thread-safe as
+    /// castSegment (the spans must not overlap between concurrent calls).
+    /// @return the number of hits among the first n casts.
+    std::size_t castSegments(std::span<const SegmentCast> casts, std::span<CastHit> hits,
+                             std::span<std::uint8_t> found) const;
     /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
     /// capsule) whose candidates go through mayTouch(capsule, triangle); it stops at the first.
     bool mayTouch(const SegmentCast& capsule) const override;
@@ -188,6 +209,9 @@ public:
     float regionQueryCost(float radius) const override { return radius > 0.0f ? 1.0f : 5.0f; }
 
 private:
+    /// castSegment without its radius-0 fast path (swept spheres, casts in doubt, before commit()).
+    bool castSlow(const SegmentCast& cast, CastHit& hit) const;
+
     struct Impl;
     EmbreeWorldSettings mSettings;
     StaticWorld mPrimitives;
