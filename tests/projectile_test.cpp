@@ -1589,35 +1589,6 @@ TEST(ProjectileExact, ClearingSlidesGivesTheTrajectoryOfAskingEveryStep) {
         << queriesClearing << " queries clearing against " << queriesEveryStep << " asking every step";
 }
 
-namespace {
-
-// A world whose region queries cost five casts (CollisionWorld::regionQueryCost), as
-// EmbreeWorld's do for point casts; it counts the region queries it is asked.
-class DearRegionQueries final : public foresight::CollisionWorld {
-public:
-    explicit DearRegionQueries(const foresight::CollisionWorld& world) : mWorld(world) {}
-    bool castSegment(const SegmentCast& cast, CastHit& hit) const override { return mWorld.castSegment(cast, hit); }
-    bool mayTouch(const SegmentCast& capsule) const override {
-        ++regionQueries;
-        return mWorld.mayTouch(capsule);
-    }
-    bool firstTouch(const SegmentCast& capsule, float& fraction) const override {
-        ++regionQueries;
-        return mWorld.firstTouch(capsule, fraction);
-    }
-    bool isOnlyPlane(const foresight::PlaneRegion& region) const override {
-        ++regionQueries;
-        return mWorld.isOnlyPlane(region);
-    }
-    float regionQueryCost(float) const override { return 5.0f; }
-    mutable std::size_t regionQueries = 0;
-
-private:
-    const foresight::CollisionWorld& mWorld;
-};
-
-}  // namespace
-
 // Where a region query costs more than two casts, the exact method casts every chord: no region
 // query is asked, and the trajectory is the one of a world that answers none.
 TEST(ProjectileExact, AsksNoRegionQueryWhereTheyCostMoreThanTwoCasts) {
@@ -1631,15 +1602,15 @@ TEST(ProjectileExact, AsksNoRegionQueryWhereTheyCostMoreThanTwoCasts) {
         const RVec3 start(random.uniform(-2, 2), random.uniform(0.5, 3), random.uniform(-2, 2));
         const Vec3 velocity(static_cast<float>(random.uniform(-10, 10)), static_cast<float>(random.uniform(0, 8)),
                             static_cast<float>(random.uniform(-10, 10)));
-        ftest::CountingWorld plain(world, false);
-        DearRegionQueries dear(world);
+        ftest::CountingWorld plain(world, false), dear(world, true, true);
+        dear.queryCost = 5.0f;  // as EmbreeWorld's for point casts
         std::vector<TrajectoryPoint> a(4096), b(4096);
         ProjectileResult ra, rb;
         ASSERT_EQ(foresight::predictProjectile(start, velocity, 4.0f, settings, &plain, a, ra), Status::Ok);
         ASSERT_EQ(foresight::predictProjectile(start, velocity, 4.0f, settings, &dear, b, rb), Status::Ok);
         ASSERT_EQ(ra.trajectorySize, rb.trajectorySize);
         for (std::size_t i = 0; i < ra.trajectorySize; ++i) ASSERT_TRUE(ftest::sameBytes(a[i], b[i])) << i;
-        queries += dear.regionQueries;
+        queries += dear.touches + dear.planeQueries;
         // The same world at the default cost is asked (the scenes have open sky and a floor).
         ftest::CountingWorld clearing(world, true, true);
         ASSERT_EQ(foresight::predictProjectile(start, velocity, 4.0f, settings, &clearing, b, rb), Status::Ok);

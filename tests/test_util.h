@@ -320,7 +320,9 @@ public:
         planePromises += only ? 1 : 0;
         return only;
     }
+    float regionQueryCost(float) const override { return queryCost; }
     mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0;
+    float queryCost = 1.0f;  ///< what regionQueryCost answers (the default world's 1)
 
 private:
     const foresight::CollisionWorld& mWorld;

@@ -20,9 +20,7 @@ Json jsonDouble(double value) {
     return Json(value);
 }
 
-Json jsonFloat(float value) {
-    // Shortest decimal that round-trips the float, then the double nearest to that decimal:
-    // nlohmann prints that double with the same (or fewer) digits.
+double floatDecimal(float value) {
     char buffer[64];
     const auto written = std::to_chars(buffer, buffer + sizeof buffer, value);
     double parsed = static_cast<double>(value);
@@ -31,8 +29,10 @@ Json jsonFloat(float value) {
         const auto read = std::from_chars(buffer, written.ptr, fromText);
         if (read.ec == std::errc()) parsed = fromText;
     }
-    return jsonDouble(parsed);
+    return parsed;
 }
+
+Json jsonFloat(float value) { return jsonDouble(floatDecimal(value)); }
 
 Json jsonPosition(const foresight::RVec3& position) {
     return Json::array({jsonDouble(static_cast<double>(position.x)), jsonDouble(static_cast<double>(position.y)),

@@ -24,6 +24,9 @@ using Json = nlohmann::ordered_json;
 Json jsonDouble(double value);
 /// A JSON number printed as the shortest decimal that round-trips `value` as a float.
 Json jsonFloat(float value);
+/// The double nearest to the shortest decimal that round-trips `value` as a float: what
+/// jsonFloat holds (printed, it has the same or fewer digits than that decimal).
+double floatDecimal(float value);
 /// [x, y, z] of a position (Real: double in the CLI build).
 Json jsonPosition(const foresight::RVec3& position);
 /// [x, y, z] of a float vector.

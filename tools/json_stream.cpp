@@ -43,18 +43,7 @@ void appendJsonDouble(std::string& out, double value) {
     out.append(buffer, static_cast<std::size_t>(end - buffer));
 }
 
-void appendJsonFloat(std::string& out, float value) {
-    // jsonFloat: the double nearest to the float's shortest round-trip decimal.
-    char buffer[64];
-    const auto written = std::to_chars(buffer, buffer + sizeof buffer, value);
-    double parsed = static_cast<double>(value);
-    if (written.ec == std::errc()) {
-        double fromText = 0;
-        const auto read = std::from_chars(buffer, written.ptr, fromText);
-        if (read.ec == std::errc()) parsed = fromText;
-    }
-    appendJsonDouble(out, parsed);
-}
+void appendJsonFloat(std::string& out, float value) { appendJsonDouble(out, floatDecimal(value)); }
 
 void appendJsonString(std::string& out, std::string_view text) {
     // Printable ASCII without quotes or backslashes prints as it is; anything else (escapes,
@@ -101,15 +90,13 @@ void JsonStreamWriter::key(std::string_view name) {
     appendJsonString(mKey, name);
 }
 
-void JsonStreamWriter::number(double value) {
+template <class Append>
+void JsonStreamWriter::cachedNumber(CachedNumber& cached, std::uint64_t bits, Append append) {
     const std::size_t at = openValue();
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    CachedNumber& cached = mDoubles[cacheSlot(bits)];
     if (cached.size != 0 && cached.bits == bits) {
         mOut.append(cached.text, cached.size);
     } else {
-        appendJsonDouble(mOut, value);
+        append();
         const std::size_t size = mOut.size() - at;
         if (size < sizeof cached.text) {
             cached.bits = bits;
@@ -120,23 +107,16 @@ void JsonStreamWriter::number(double value) {
     closeValue(Kind::Scalar, false, at);
 }
 
+void JsonStreamWriter::number(double value) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    cachedNumber(mDoubles[cacheSlot(bits)], bits, [&] { appendJsonDouble(mOut, value); });
+}
+
 void JsonStreamWriter::floatNumber(float value) {
-    const std::size_t at = openValue();
     std::uint32_t bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
-    CachedNumber& cached = mFloats[cacheSlot(bits)];
-    if (cached.size != 0 && cached.bits == bits) {
-        mOut.append(cached.text, cached.size);
-    } else {
-        appendJsonFloat(mOut, value);
-        const std::size_t size = mOut.size() - at;
-        if (size < sizeof cached.text) {
-            cached.bits = bits;
-            cached.size = static_cast<std::uint8_t>(size);
-            std::memcpy(cached.text, mOut.data() + at, size);
-        }
-    }
-    closeValue(Kind::Scalar, false, at);
+    cachedNumber(mFloats[cacheSlot(bits)], bits, [&] { appendJsonFloat(mOut, value); });
 }
 
 void JsonStreamWriter::integer(std::int64_t value) {

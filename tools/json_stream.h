@@ -106,6 +106,10 @@ private:
         char text[31] = {};
     };
 
+    /// Writes a number: `cached`'s text when it holds `bits`, else what `append` appends to mOut
+    /// (then remembered in `cached`).
+    template <class Append>
+    void cachedNumber(CachedNumber& cached, std::uint64_t bits, Append append);
     bool holding() const { return mFirstHeld < mFrames.size(); }
     /// Writes what comes before a value (separator, indent, key); returns where the value starts.
     std::size_t openValue();

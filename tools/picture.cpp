@@ -53,15 +53,7 @@ const char* methodName(const Prediction& p) {
         case Model::Orientation:
             return "orientation";
         case Model::Projectile:
-            switch (p.projectile.method) {
-                case foresight::ProjectileMethod::Stepped:
-                    return "stepped";
-                case foresight::ProjectileMethod::Exact:
-                    return "exact";
-                case foresight::ProjectileMethod::Engine:
-                    return "engine";
-            }
-            return "exact";
+            return projectileMethodName(p.projectile.method);
         case Model::Vehicle:
             return p.vehicleIterative ? "iterative" : "exact";
         case Model::DeadReckoning:

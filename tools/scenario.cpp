@@ -22,6 +22,18 @@ namespace foresight_cli {
 
 using foresight::Status;
 
+const char* projectileMethodName(foresight::ProjectileMethod method) {
+    switch (method) {
+        case foresight::ProjectileMethod::Stepped:
+            return "stepped";
+        case foresight::ProjectileMethod::Exact:
+            return "exact";
+        case foresight::ProjectileMethod::Engine:
+            return "engine";
+    }
+    return "exact";
+}
+
 const char* modelName(Model model) {
     switch (model) {
         case Model::Linear:
@@ -799,9 +811,7 @@ Json resultJson(const Prediction& p, const PredictionResult& result) {
             break;
         case Model::Projectile: {
             const auto& r = result.projectile;
-            out["method"] = p.projectile.method == foresight::ProjectileMethod::Stepped  ? "stepped"
-                            : p.projectile.method == foresight::ProjectileMethod::Engine ? "engine"
-                                                                                         : "exact";
+            out["method"] = projectileMethodName(p.projectile.method);
             out["position"] = jsonPosition(r.position);
             out["velocity"] = jsonVector(r.velocity);
             out["time"] = jsonFloat(r.time);
@@ -867,9 +877,7 @@ void writeResult(JsonStreamWriter& w, const Prediction& p, const PredictionResul
         case Model::Projectile: {
             const auto& r = result.projectile;
             w.key("method");
-            w.string(p.projectile.method == foresight::ProjectileMethod::Stepped  ? "stepped"
-                     : p.projectile.method == foresight::ProjectileMethod::Engine ? "engine"
-                                                                                  : "exact");
+            w.string(projectileMethodName(p.projectile.method));
             w.key("position");
             w.position(r.position);
             w.key("velocity");

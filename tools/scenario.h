@@ -27,6 +27,8 @@ enum class Model { Linear, Accelerated, Orientation, Projectile, Vehicle, DeadRe
 
 /// The model's name in the format ("linear", ...).
 const char* modelName(Model model);
+/// A projectile method's name in the format ("exact", "stepped", "engine").
+const char* projectileMethodName(foresight::ProjectileMethod method);
 
 /// One validated entry of `predictions`.
 struct Prediction {
