@@ -67,25 +67,23 @@ int predictCommand(const std::string& file, const PictureOptions& pictures) {
         for (std::size_t i = 0; i < results.size() && !output.failed(); ++i)
             output.add(scenario.predictions[i], results[i]);
     } else {
-        // Each result is written as it comes (the writer hands out 64 KiB at a time), so memory
-        // does not grow with the output.
+        // Every prediction runs once unwritten first, so that a refusal while running (the work
+        // cap, the precision envelope, the file's trajectory point budget) leaves standard output
+        // empty, as any invalid input does. Then they run again, each result written as it comes:
+        // memory does not grow with the output. Predictions are deterministic: the second run
+        // has the same results, and its diagnostics repeat the first's.
+        ran = runScenario(
+            scenario, [](std::size_t, PredictionResult&) { return true; }, diagnostics);
+        printDiagnostics(diagnostics, std::cerr);
+        if (!ran || !diagnostics.ok()) return 2;
+        Diagnostics again;
         ran = runScenario(
             scenario,
             [&](std::size_t index, PredictionResult& result) {
                 output.add(scenario.predictions[index], result);
                 return !output.failed();
             },
-            diagnostics);
-        printDiagnostics(diagnostics, std::cerr);
-    }
-    if (!output.failed() && !diagnostics.ok()) {
-        // A prediction the library refused while running (after validation): up to 64 KiB of
-        // results are held back, so a small result prints nothing; a larger one may have started.
-        if (output.bytesWritten() > 0) {
-            std::cerr << "foresight: the result on standard output is incomplete: " << output.bytesWritten()
-                      << " bytes were written before the problem above was found\n";
-        }
-        return 2;
+            again);
     }
     if (output.failed() || !ran || !output.finish()) {
         std::cerr << "foresight: cannot write the result: " << writeError << '\n';
