@@ -521,6 +521,7 @@ private:
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
             findNearSurfaces(freeMotion, reach);
         }
+        if (!mProfile.planar) findPenetrated();
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
@@ -528,6 +529,59 @@ private:
             if (mManifold) updateManifold(s, reach);
         }
         if (mProfile.engine == PhysicsEngine::Godot3Bullet) predictiveContact();
+    }
+
+    // The casts above find the surfaces along the motion and the ones known from earlier steps.
+    // A sphere pressed into one face of a narrow corner (a facet of a small icosphere, a box's
+    // edge) can sink into the face beside it without any cast meeting it: casts ignore a surface
+    // they start inside. An engine's narrow phase tests every shape that overlaps the sphere, so
+    // the world's closest-point query (CollisionWorld::findNear, where the world answers it) adds
+    // each surface the sphere penetrates that no cast found. Surfaces the casts found are kept as
+    // they measured them: a surface near the plane of a known one is that one (its neighbour
+    // triangle's edge seen from a ball resting across the edge).
+    void findPenetrated() {
+        if (mCount == kMaxSurfaces || mRadius <= 0.0) return;
+        struct Collector final : NearCollector {
+            std::array<NearSurface, kMaxSurfaces> found{};
+            int count = 0;
+            void add(const NearSurface& surface) override {
+                // Keep the deepest: they matter most when there are more than room for.
+                int slot = count < kMaxSurfaces ? count++ : -1;
+                if (slot < 0) {
+                    slot = 0;
+                    for (int i = 1; i < kMaxSurfaces; ++i)
+                        if (found[i].distance > found[slot].distance) slot = i;
+                    if (found[slot].distance <= surface.distance) return;
+                }
+                found[slot] = surface;
+            }
+        } collector;
+        NearQuery query;
+        query.center = toR(mPosition);
+        query.radius = static_cast<float>(mRadius);
+        if (!mWorld->findNear(query, collector)) return;
+        for (int j = 0; j < collector.count && mCount < kMaxSurfaces; ++j) {
+            const NearSurface& near = collector.found[j];
+            const DVec3 n = glm::normalize(toD(near.normal));
+            const DVec3 point = toD(near.point);
+            const double gap = glm::dot(mPosition - point, n) - mRadius;
+            if (!(gap < 0.0)) continue;
+            bool known = false;
+            for (int i = 0; i < mCount && !known; ++i) {
+                const Surface& s = mSurfaces[i];
+                const DVec3 onSurface = s.touch - s.normal * mRadius;
+                known =
+                    std::abs(glm::dot(s.normal, n)) > 0.99 && std::abs(glm::dot(point - onSurface, s.normal)) < 1e-3;
+            }
+            if (known) continue;
+            Surface& s = mSurfaces[mCount++];
+            s = Surface{};
+            s.normal = n;
+            s.touch = point + n * mRadius;
+            s.gap = gap;
+            s.restitution = near.restitution;
+            s.friction = near.friction;
+        }
     }
 
     // Godot 3's Bullet bodies sweep for continuous collision (btRigidBody's CCD motion threshold

@@ -82,6 +82,11 @@ public:
         return caster.result(hit);
     }
     bool mayTouch(const SegmentCast& capsule) const override { return foresight::mayTouch(capsule, mPlane); }
+    bool findNear(const NearQuery& query, NearCollector& collector) const override {
+        NearTester tester(query, collector);
+        tester.test(mPlane, mMaterial);
+        return true;
+    }
 
 private:
     Plane mPlane;

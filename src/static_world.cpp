@@ -760,6 +760,95 @@ bool PlaneRegionTester::result() const {
     return true;
 }
 
+NearTester::NearTester(const NearQuery& query, NearCollector& collector, float surfaceTolerance)
+    : mCollector(collector) {
+    mCenter = toD(query.center);
+    mRadius = static_cast<double>(query.radius);
+    if (!isFinite(mCenter) || !(mRadius >= 0.0) || !std::isfinite(mRadius)) return;
+    mTolerance = static_cast<double>(std::max(0.0f, surfaceTolerance)) + realUlps(mCenter, 4.0);
+    mValid = true;
+}
+
+void NearTester::report(const DVec3& point, const DVec3& normal, double distance, const SurfaceMaterial& material) {
+    NearSurface s;
+    s.point = toR(point);
+    s.normal = toF(normal);
+    s.distance = static_cast<float>(distance);
+    s.restitution = material.restitution;
+    s.friction = material.friction;
+    mCollector.add(s);
+}
+
+void NearTester::test(const Plane& plane, const SurfaceMaterial& material) {
+    if (!mValid) return;
+    const DVec3 n = toD(plane.normal);
+    const double s = glm::dot(n, mCenter) - static_cast<double>(plane.distance);
+    if (s > mRadius || s < -mTolerance) return;
+    report(mCenter - n * s, n, s, material);
+}
+
+void NearTester::test(const Sphere& sphere, const SurfaceMaterial& material) {
+    if (!mValid) return;
+    const DVec3 center = toD(sphere.center);
+    const DVec3 m = mCenter - center;
+    const double length = glm::length(m);
+    const double s = length - static_cast<double>(sphere.radius);
+    if (s > mRadius || s < -mTolerance) return;
+    const DVec3 n = length > 0.0 ? m / length : DVec3(0.0, 1.0, 0.0);
+    report(center + n * static_cast<double>(sphere.radius), n, s, material);
+}
+
+void NearTester::test(const OrientedBox& box, const SurfaceMaterial& material) {
+    if (!mValid) return;
+    // The rounded box's signed distance and gradient in its frame, as castBox measures them.
+    const DQuat q = toD(box.orientation);
+    const double rounding = static_cast<double>(box.rounding);
+    const DVec3 h = toD(box.halfExtents) - DVec3(rounding);
+    const DVec3 o = glm::conjugate(q) * (mCenter - toD(box.center));
+    const DVec3 qd = glm::abs(o) - h;
+    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
+    const double outsideLength = glm::length(outsidePart);
+    double s;
+    DVec3 outward(0.0);
+    if (outsideLength > 0.0) {
+        s = outsideLength - rounding;
+        outward = outsidePart * glm::sign(o) / outsideLength;
+    } else {
+        const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
+        s = qd[axis] - rounding;
+        outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
+    }
+    if (s > mRadius || s < -mTolerance) return;
+    const DVec3 n = q * outward;
+    report(mCenter - n * s, n, s, material);
+}
+
+void NearTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
+    if (!mValid) return;
+    const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
+    const DVec3 closest = closestOnTriangle(mCenter, a, b, c);
+    const DVec3 away = mCenter - closest;
+    const double length = glm::length(away);
+    if (length > mRadius) return;
+    DVec3 n;
+    if (length > 0.0) {
+        n = away / length;
+    } else {
+        const DVec3 face = glm::normalize(glm::cross(b - a, c - a));
+        n = glm::dot(face, mCenter - a) >= 0.0 ? face : -face;
+    }
+    report(closest, n, length, material);
+}
+
+bool StaticWorld::findNear(const NearQuery& query, NearCollector& collector) const {
+    NearTester tester(query, collector, mSettings.surfaceTolerance);
+    for (std::size_t i = 0; i < mPlanes.size(); ++i) tester.test(mPlanes[i], mPlaneMaterials[i]);
+    for (std::size_t i = 0; i < mSpheres.size(); ++i) tester.test(mSpheres[i], mSphereMaterials[i]);
+    for (std::size_t i = 0; i < mBoxes.size(); ++i) tester.test(mBoxes[i], mBoxMaterials[i]);
+    for (std::size_t i = 0; i < mTriangles.size(); ++i) tester.test(mTriangles[i], mTriangleMaterials[i]);
+    return true;
+}
+
 bool StaticWorld::isOnlyPlane(const PlaneRegion& region) const {
     if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
     PlaneRegionTester tester(region);

@@ -1110,6 +1110,53 @@ TEST(embree_mesh, FirstTouchAnswersAsStaticWorldOrLaterAndKeepsItsPromise) {
     EXPECT_GT(same, 19000) << same << " of 20000 answers as StaticWorld's";
 }
 
+// findNear walks Embree's BVH for the mesh's triangles; StaticWorld tests every triangle. Both
+// use NearTester on the same triangles, so the lists are the same (as sets, bit for bit), before
+// and after commit.
+TEST(embree_mesh, FindNearReportsWhatStaticWorldReports) {
+    struct NearList final : foresight::NearCollector {
+        std::vector<std::array<double, 5>> found;
+        void add(const foresight::NearSurface& s) override {
+            found.push_back({static_cast<double>(s.distance), static_cast<double>(s.point.x),
+                             static_cast<double>(s.point.y), static_cast<double>(s.point.z),
+                             static_cast<double>(s.normal.y)});
+        }
+        void sort() { std::sort(found.begin(), found.end()); }
+    };
+    Worlds w;
+    buildWorlds(w);
+    EmbreeWorld uncommitted;
+    addPrimitives(uncommitted);
+    const Mesh mesh = sceneMesh();
+    ASSERT_EQ(uncommitted.addMesh(mesh.vertices, mesh.indices), Status::Ok);
+    std::mt19937 rng(733);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::size_t reported = 0;
+    for (int i = 0; i < 5000; ++i) {
+        foresight::NearQuery query;
+        query.center = r3(-7 + 14 * u(rng), -2 + 8 * u(rng), -6 + 12 * u(rng));
+        query.radius = static_cast<float>(i % 10 == 0 ? 0.0 : 2.0 * u(rng));
+        NearList expected, embree, before;
+        ASSERT_TRUE(w.reference.findNear(query, expected));
+        ASSERT_TRUE(w.embree.findNear(query, embree));
+        ASSERT_TRUE(uncommitted.findNear(query, before));
+        expected.sort();
+        embree.sort();
+        before.sort();
+        ASSERT_EQ(embree.found, expected.found) << "query " << i;
+        ASSERT_EQ(before.found, expected.found) << "query " << i;
+        reported += expected.found.size();
+    }
+    EXPECT_GT(reported, 3000u);
+    // Beyond Embree's float range it cannot answer (and reports nothing).
+    foresight::NearQuery far;
+    far.center = r3(1e30, 0, 0);
+    far.radius = 1.0f;
+    NearList none;
+    EXPECT_FALSE(w.embree.findNear(far, none));
+    EXPECT_TRUE(none.found.empty());
+}
+
 TEST(embree_mesh, AddMeshRefusesBadInput) {
     EmbreeWorld world;
     const std::vector<RVec3> vertices{r3(0, 0, 0), r3(1, 0, 0), r3(0, 0, 1)};

@@ -219,6 +219,37 @@ private:
     int mEdgeCount = 0;
 };
 
+/// The shape tests behind StaticWorld::findNear, offered one shape at a time, for worlds that
+/// find their candidate shapes themselves (as ClosestHitCaster is for casts): each shape within
+/// the query's radius goes to the collector with its closest point (NearSurface). Planes count
+/// from their front, box and sphere surfaces from outside (a centre inside the solid deeper
+/// than the tolerance does not count), triangles from both sides. No allocation.
+class NearTester {
+public:
+    /// Prepares `query`; `surfaceTolerance` is StaticWorldSettings::surfaceTolerance [Units: m].
+    NearTester(const NearQuery& query, NearCollector& collector, float surfaceTolerance = 1e-5f);
+
+    /// False when the query is not finite or its radius is negative: tests then do nothing.
+    bool valid() const { return mValid; }
+
+    /// Tests one shape (validated as StaticWorld::add would) with its own material.
+    void test(const Plane& plane, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Sphere& sphere, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const OrientedBox& box, const SurfaceMaterial& material = {});
+    /// See test(const Plane&, const SurfaceMaterial&).
+    void test(const Triangle& triangle, const SurfaceMaterial& material = {});
+
+private:
+    void report(const glm::dvec3& point, const glm::dvec3& normal, double distance, const SurfaceMaterial& material);
+    NearCollector& mCollector;
+    glm::dvec3 mCenter{0.0};
+    double mRadius = 0.0;
+    double mTolerance = 0.0;
+    bool mValid = false;
+};
+
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
     /// A cast that starts this close behind a one-sided surface and moves into it still hits
@@ -268,6 +299,9 @@ public:
     /// Every shape through PlaneRegionTester (a linear scan). False unless the world has the
     /// default surface tolerance (the promise is about a plane with that tolerance).
     bool isOnlyPlane(const PlaneRegion& region) const override;
+
+    /// Every shape through NearTester (a linear scan).
+    bool findNear(const NearQuery& query, NearCollector& collector) const override;
 
     /// The shapes as added (normalised).
     std::span<const Plane> planes() const { return mPlanes; }

@@ -43,6 +43,35 @@ struct PlaneRegion {
     float friction = -1.0f;     ///< see restitution.
 };
 
+/// A sphere for CollisionWorld::findNear: the surfaces within `radius` of `center`.
+struct NearQuery {
+    RVec3 center{0};      ///< the sphere's centre [Units: m].
+    float radius = 0.0f;  ///< how far from the centre surfaces count [Units: m] [Limit: >= 0].
+};
+
+/// One surface near a NearQuery's centre: the contact a sphere at the centre would have with it,
+/// as an engine's narrow phase measures it (closest points).
+struct NearSurface {
+    RVec3 point{0};  ///< the surface's point closest to the centre [Units: m].
+    /// Unit contact normal: from `point` towards the centre, or the surface's own normal on the
+    /// centre's side where the centre lies on the surface (or within the tolerance behind it).
+    Vec3 normal{0, 1, 0};
+    /// The centre's signed distance from the surface along `normal` [Units: m]: >= 0 in front of
+    /// it, down to minus the world's surface tolerance behind a one-sided surface.
+    float distance = 0.0f;
+    float restitution = -1.0f;  ///< the surface's own restitution, as CastHit::restitution.
+    float friction = -1.0f;     ///< the surface's own friction, as CastHit::friction.
+};
+
+/// Receives the surfaces of a CollisionWorld::findNear query, one call per shape (per triangle
+/// of a mesh), in no particular order. Implementations must not assume the calls stop early.
+class NearCollector {
+public:
+    virtual ~NearCollector() = default;
+    /// One surface within the query's radius.
+    virtual void add(const NearSurface& surface) = 0;
+};
+
 /// What a world must answer. Rules every implementation should follow (the built-in one does):
 /// - Report the closest hit with a surface the segment enters (`dot(displacement, normal) < 0`).
 /// - A segment that starts on a one-sided surface (within a small tolerance) and moves into it
@@ -112,6 +141,21 @@ public:
     virtual float regionQueryCost(float radius) const {
         (void)radius;
         return 1.0f;
+    }
+
+    /// Every surface within `query.radius` of `query.center`, each passed to `collector` with its
+    /// closest point: what a physics engine's narrow phase finds around a sphere, whatever way it
+    /// moves. Surfaces follow the cast rules: a one-sided surface counts from its front side (and
+    /// up to the surface tolerance behind it); a solid whose inside holds the centre deeper than
+    /// that does not count. Returns false when the world cannot answer (the default: it then calls
+    /// nothing), true when it has reported every such surface that it can measure (a world may
+    /// leave out shapes of kinds it has no closest-point test for: its casts still meet them). ProjectileMethod::Engine asks it
+    /// in every step it does not coast, so that a sphere pressed into one face also meets the faces
+    /// beside it (without it, casts find them and may miss some in a narrow corner).
+    virtual bool findNear(const NearQuery& query, NearCollector& collector) const {
+        (void)query;
+        (void)collector;
+        return false;
     }
 };
 

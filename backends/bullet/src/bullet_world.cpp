@@ -333,6 +333,19 @@ bool BulletWorld::isOnlyPlane(const PlaneRegion& region) const {
     return visited && !other && tester.result();
 }
 
+bool BulletWorld::findNear(const NearQuery& query, NearCollector& collector) const {
+    NearTester tester(query, collector, mSettings.surfaceTolerance);
+    if (!tester.valid()) return true;
+    SegmentCast sphere;
+    sphere.origin = query.center;
+    sphere.radius = query.radius;
+    return visitNear(*mWorld, mSettings, sphere, [&](const auto& shape) {
+        using Shape = std::decay_t<decltype(shape)>;
+        if constexpr (!std::is_same_v<Shape, const btCollisionShape*>) tester.test(shape);
+        return true;
+    });
+}
+
 bool BulletWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {
     const glm::dvec3 origin(static_cast<double>(cast.origin.x), static_cast<double>(cast.origin.y),
                             static_cast<double>(cast.origin.z));

@@ -973,6 +973,49 @@ bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
     return tester.result();
 }
 
+namespace {
+
+struct NearQueryState {
+    const Triangle* triangles = nullptr;
+    NearTester* tester = nullptr;
+};
+
+bool nearCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<NearQueryState*>(args->userPtr);
+    q->tester->test(q->triangles[args->primID]);
+    return false;  // the query's sphere stays as it is: every triangle in it is wanted
+}
+
+}  // namespace
+
+bool EmbreeWorld::findNear(const NearQuery& query, NearCollector& collector) const {
+    const Impl* impl = mImpl.get();
+    const bool mesh = impl && !impl->triangles.empty();
+    const bool traverse = mesh && impl->committed && impl->scene;
+    // The query's sphere as a capsule of no length: the centre rounded to float, the radius grown
+    // by that rounding and a margin, so that every triangle within the radius is visited.
+    SegmentCast sphere;
+    sphere.origin = query.center;
+    sphere.radius = query.radius;
+    RTCPointQuery pointQuery;
+    if (traverse && !capsuleQuery(sphere, pointQuery)) return false;  // beyond Embree's float range
+    mPrimitives.findNear(query, collector);
+    if (!mesh) return true;
+    NearTester tester(query, collector, mSettings.surfaceTolerance);
+    if (!tester.valid()) return true;
+    if (!traverse) {
+        for (const Triangle& t : impl->triangles) tester.test(t);
+        return true;
+    }
+    NearQueryState q;
+    q.triangles = impl->triangles.data();
+    q.tester = &tester;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(impl->scene, &pointQuery, &context, nearCallback, &q);
+    return true;
+}
+
 bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
     if (mPrimitives.mayTouch(capsule)) return true;
     const Impl* impl = mImpl.get();

@@ -203,6 +203,10 @@ public:
     /// The primitives and the mesh triangles that one Embree point query (a sphere holding the
     /// capsule) finds, through PlaneRegionTester; it stops at the first that rules the region out.
     bool isOnlyPlane(const PlaneRegion& region) const override;
+    /// The primitives as StaticWorld answers, then the mesh triangles that one Embree point query
+    /// (the query's sphere, grown by the float rounding of its centre) finds, through NearTester.
+    /// False beyond Embree's float range (then nothing of the mesh is reported).
+    bool findNear(const NearQuery& query, NearCollector& collector) const override;
     /// 5 for point casts (radius 0: Embree's native ray traversal, about five times cheaper
     /// than a firstTouch query on a level of 3 000 triangles), 1 for swept spheres (a sphere
     /// cast walks the tree with point queries, as the region queries do).
