@@ -539,8 +539,10 @@ private:
     // each surface the sphere penetrates that no cast found. Surfaces the casts found are kept as
     // they measured them: a surface near the plane of a known one is that one (its neighbour
     // triangle's edge seen from a ball resting across the edge).
+    // Asked only while the sphere touches a surface: in free flight the cast along the motion
+    // meets what lies ahead before the sphere can sink into it.
     void findPenetrated() {
-        if (mCount == kMaxSurfaces || mRadius <= 0.0) return;
+        if (mCount == 0 || mCount == kMaxSurfaces || mRadius <= 0.0) return;
         struct Collector final : NearCollector {
             std::array<NearSurface, kMaxSurfaces> found{};
             int count = 0;
