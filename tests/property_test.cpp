@@ -30,8 +30,9 @@
 // Each case draws its inputs from its own generator, seeded from (seed, property, index), so a
 // case does not depend on the cases before it.
 //
-// Long run (1 000 000 cases: 5 properties x 200 000), from the build directory:
+// Long run (1 000 000 cases: 5 properties x 200 000, 2 minutes), from the build directory:
 //   FORESIGHT_PROPERTY_CASES=200000 nice tests/foresight_property_tests
+// (FORESIGHT_PROPERTY_CASES=1000000: 10^6 per property, 8 minutes, the known failures included.)
 
 #include "test_util.h"
 
@@ -417,15 +418,21 @@ bool randomMeshThrow(ftest::Random& r, bool allowEngine, MeshThrow& t) {
 // =============================================================================================
 // 1. No tunnelling through closed meshes.
 
-// No known failures at the default seed: the long run (200 000 cases) passes. Its history,
-// for whoever breaks it again: 323 failures before keepInFront, the grazing probe and the crease
-// slide of the Exact method and the Bullet profile's slide cast; then 17 (Exact: a point and a
-// ball rattling in a box's corner or along its edge, fixed by the crease handling of
-// locateImpact and crossesRecentSurface; Engine: balls that sank into a facet beside the one
-// they were pressed into, 6 Bullet, 7 PhysX and 2 Rapier, fixed by asking the world for the
-// surfaces the sphere penetrates, CollisionWorld::findNear). The article's Stepped loop leaves
-// the mesh in 10 cases (counted, not failures: see the test).
-const KnownFailures kKnownTunnelling = {};
+// Known failures at the default seed: none in the long run (200 000 cases per property). A run
+// of 10^6 cases per property finds 15, all the Exact method with a point (radius 0) in a box
+// after 27 to 256 bounces: rattling into a corner or along an inside edge at a few mm/s, or
+// meeting an edge at a grazing angle, the point ends within float rounding of a third face's
+// plane, on its far side, and the next chord leaves through that face (0.05 mm to 1.7 m out).
+// Not fixed yet. Their history, for whoever breaks this again: 323 failures in 200 000 before
+// keepInFront, the grazing probe and the crease slide of the Exact method and the Bullet
+// profile's slide cast; then 17 (Exact: a point and a ball rattling in a box's corner or along
+// its edge, fixed by the crease handling of locateImpact and crossesRecentSurface; Engine: balls
+// that sank into a facet beside the one they were pressed into, 6 Bullet, 7 PhysX and 2 Rapier,
+// fixed by asking the world for the surfaces the sphere penetrates, CollisionWorld::findNear;
+// the Engine method has none in 10^6). The article's Stepped loop leaves the mesh in 10 cases of
+// 200 000 (38 of 10^6): counted, not failures (see the test).
+const KnownFailures kKnownTunnelling = {209875, 256179, 270187, 326206, 513587, 543718, 608684, 610912,
+                                        641628, 728160, 762573, 801124, 840045, 943538, 954793};
 // The Engine method's past failures (see above), run in every run.
 const PastFailures kPastTunnelling = {2524,  16395, 22081,  31200,  34592,  36289,  48581, 52535,
                                       68478, 80584, 107985, 119585, 163166, 167429, 193978};
