@@ -117,6 +117,22 @@ void castSphere(const Ray& ray, double radius, const Sphere& sphere, Candidate& 
     sphereEntry(ray, center, r, best);
 }
 
+// Signed distance from `o` (in the box's frame) to the box [-h, h] grown by `radius`, and the
+// outward unit normal of the closest feature (a face's axis where `o` is inside).
+double boxSignedDistance(const DVec3& o, const DVec3& h, double radius, DVec3& outward) {
+    const DVec3 qd = glm::abs(o) - h;
+    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
+    const double outsideLength = glm::length(outsidePart);
+    if (outsideLength > 0.0) {
+        outward = outsidePart * glm::sign(o) / outsideLength;
+        return outsideLength - radius;
+    }
+    const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
+    outward = DVec3(0.0);
+    outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
+    return qd[axis] - radius;
+}
+
 void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& best) {
     // Work in the box's local frame: an axis-aligned box [-h, h], rounded by the cast radius.
     // A rounded box is the box shrunk by its rounding, met by a sphere that much larger.
@@ -131,20 +147,8 @@ void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& b
     const DVec3& o = local.origin;
 
     // Signed distance to the rounded box and its gradient.
-    const DVec3 qd = glm::abs(o) - h;
-    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
-    const double outsideLength = glm::length(outsidePart);
-    double signedDistance;
     DVec3 outward;
-    if (outsideLength > 0.0) {
-        signedDistance = outsideLength - radius;
-        outward = outsidePart * glm::sign(o) / outsideLength;
-    } else {
-        const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
-        signedDistance = qd[axis] - radius;
-        outward = DVec3(0.0);
-        outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
-    }
+    const double signedDistance = boxSignedDistance(o, h, radius, outward);
     Candidate localBest;
     localBest.distance = best.distance;
     if (surfaceRule(local, signedDistance, outward, localBest)) {
@@ -805,19 +809,8 @@ void NearTester::test(const OrientedBox& box, const SurfaceMaterial& material) {
     const double rounding = static_cast<double>(box.rounding);
     const DVec3 h = toD(box.halfExtents) - DVec3(rounding);
     const DVec3 o = glm::conjugate(q) * (mCenter - toD(box.center));
-    const DVec3 qd = glm::abs(o) - h;
-    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
-    const double outsideLength = glm::length(outsidePart);
-    double s;
-    DVec3 outward(0.0);
-    if (outsideLength > 0.0) {
-        s = outsideLength - rounding;
-        outward = outsidePart * glm::sign(o) / outsideLength;
-    } else {
-        const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
-        s = qd[axis] - rounding;
-        outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
-    }
+    DVec3 outward;
+    const double s = boxSignedDistance(o, h, rounding, outward);
     if (s > mRadius || s < -mTolerance) return;
     const DVec3 n = q * outward;
     report(mCenter - n * s, n, s, material);
