@@ -14,6 +14,11 @@
 
 namespace foresight_fuzz {
 
+/// The most projectile steps a JSON harness runs for one input (plan documents over it are read
+/// and validated, not run): 2^18 steps take about 2 s in the instrumented build, a fifth of the
+/// 10 s that scripts/fuzz.sh allows an input.
+inline constexpr std::uint64_t kMaxFuzzSteps = std::uint64_t(1) << 18;
+
 /// A directory of this process, made once (removed at exit), for the files the loaders read.
 inline const std::filesystem::path& scratchDirectory() {
     static const std::filesystem::path directory = [] {

@@ -18,6 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         !buildScenario(document, base, scenario, diagnostics)) {
         return 0;
     }
+    // Within the CLI's budget, but too slow for the instrumented build: read, not run.
+    if (scenarioProjectileSteps(scenario) > foresight_fuzz::kMaxFuzzSteps) return 0;
     std::string streamed;
     ResultDocumentWriter writer(
         [&streamed](std::string_view text) {

@@ -1627,6 +1627,21 @@ TEST_F(cli, PlanRefusesTooMuchWorkNamingTheFuse) {
     EXPECT_EQ(parseOutput(one).at("throws")[0].at("predictions"), 1);
 }
 
+// A plan file's searches are capped one by one (above) and in all: three searches each just
+// under their own cap are refused at "throws", before any runs (kMaxPlanFileSteps).
+TEST_F(cli, PlanRefusesAFileOverItsWholeBudget) {
+    std::string throws;
+    for (int i = 0; i < 3; ++i)
+        throws += std::string(i > 0 ? ", " : "") +
+                  R"({"start": [0, 1, 0], "target": [0, 0, 1e6], "fuse": 838, "method": "stepped", "max_speed": 20})";
+    const CliRun run = runCli({"plan", "-"}, "{\"throws\": [" + throws + "]}");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("throws: the plans take up to "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(" steps in all; one file may take at most 33554432 (split the file)"), std::string::npos)
+        << run.err;
+}
+
 // A target no throw ends within a float's range of: closest_distance and closest_velocity are
 // null (not 3.4028235e+38 and a zero velocity).
 TEST_F(cli, PlanNowhereNearPrintsNull) {

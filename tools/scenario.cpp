@@ -574,6 +574,16 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
 
 }  // namespace
 
+std::uint64_t scenarioProjectileSteps(const Scenario& scenario) {
+    std::uint64_t steps = 0;
+    for (const Prediction& p : scenario.predictions) {
+        if (p.model != Model::Projectile) continue;
+        steps += std::min<std::uint64_t>(foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)),
+                                         p.projectile.maxSteps);
+    }
+    return steps;
+}
+
 bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,
                    Diagnostics& diagnostics) {
     if (!document.is_object()) {
@@ -610,13 +620,13 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
     root.finish();
     // The whole file's budget: each prediction is capped, and so is their sum (four predictions
     // just under their cap printed 554 MB and took 3.3 GB).
-    std::uint64_t steps = 0, points = 0;
+    const std::uint64_t steps = scenarioProjectileSteps(scenario);
+    std::uint64_t points = 0;
     for (const Prediction& p : scenario.predictions) {
-        if (p.model != Model::Projectile) continue;
-        const std::uint64_t n = std::min<std::uint64_t>(
-            foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)), p.projectile.maxSteps);
-        steps += n;
-        if (p.trajectory) points += n + 1;
+        if (p.model != Model::Projectile || !p.trajectory) continue;
+        points += std::min<std::uint64_t>(foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)),
+                                          p.projectile.maxSteps) +
+                  1;
     }
     if (steps > kMaxScenarioSteps)
         diagnostics.error("predictions", "the projectile predictions take " + std::to_string(steps) +

@@ -84,6 +84,10 @@ struct PredictionResult {
     std::vector<foresight::TrajectoryPoint> trajectory;  ///< projectile with "trajectory": true.
 };
 
+/// The projectile steps a scenario's predictions take in all (each at most its maxSteps), as
+/// buildScenario compares them with kMaxScenarioSteps.
+std::uint64_t scenarioProjectileSteps(const Scenario& scenario);
+
 /// Validates a parsed scenario and loads its meshes (relative to `baseDirectory`).
 /// Returns diagnostics.ok().
 bool buildScenario(const Json& document, const std::filesystem::path& baseDirectory, Scenario& scenario,

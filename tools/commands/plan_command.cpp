@@ -130,8 +130,24 @@ bool buildPlanDocument(const Json& document, const std::filesystem::path& baseDi
     } else {
         for (std::size_t i = 0; i < found->size(); ++i)
             readThrow((*found)[i], "throws[" + std::to_string(i) + "]", world.gravity, throws, diagnostics);
+        // The whole file's budget: each search is capped, and so is their sum.
+        const std::uint64_t work = planFileWork(throws);
+        if (diagnostics.ok() && work > kMaxPlanFileSteps)
+            diagnostics.error("throws", "the plans take up to " + std::to_string(work) +
+                                            " steps in all; one file may take at most " +
+                                            std::to_string(kMaxPlanFileSteps) + " (split the file)");
     }
     return diagnostics.ok();
+}
+
+std::uint64_t planFileWork(const std::vector<ThrowRequest>& throws) {
+    std::uint64_t work = 0;
+    for (const ThrowRequest& t : throws) {
+        const foresight::ThrowPlanRequest& r = t.request;
+        work += foresight::throwPlanWork(r);
+        if (t.trajectory) work += std::uint64_t{r.maxPlans} * foresight::steppedStepCount(r.fuseTime, r.settings.step);
+    }
+    return work;
 }
 
 bool runPlans(const Scenario& world, const std::vector<ThrowRequest>& throws, std::vector<ThrowOutcome>& outcomes,

@@ -29,8 +29,17 @@ struct ThrowOutcome {
     std::vector<std::vector<foresight::TrajectoryPoint>> trajectories;  ///< per plan, if asked
 };
 
-/// Reads a plan document: the scenario's world (built with buildScenario) and the throws.
-/// Returns diagnostics.ok().
+/// Most projectile steps one plan document may ask for in all: the sum over its throws of the
+/// search's bound (max_predictions x fuse / step, foresight::throwPlanWork) plus the printed
+/// trajectories' steps (fuse / step per plan). 2^25: two searches at their own cap (2^24), or 559
+/// default throws; some seconds of work.
+inline constexpr std::uint64_t kMaxPlanFileSteps = std::uint64_t(1) << 25;
+
+/// The steps `throws` may take in all, as kMaxPlanFileSteps counts them.
+std::uint64_t planFileWork(const std::vector<ThrowRequest>& throws);
+
+/// Reads a plan document: the scenario's world (built with buildScenario) and the throws; a
+/// document over kMaxPlanFileSteps is refused at "throws". Returns diagnostics.ok().
 bool buildPlanDocument(const Json& document, const std::filesystem::path& baseDirectory, Scenario& world,
                        std::vector<ThrowRequest>& throws, Diagnostics& diagnostics);
 
