@@ -148,10 +148,11 @@ public:
     /// moves. Surfaces follow the cast rules: a one-sided surface counts from its front side (and
     /// up to the surface tolerance behind it); a solid whose inside holds the centre deeper than
     /// that does not count. Returns false when the world cannot answer (the default: it then calls
-    /// nothing), true when it has reported every such surface that it can measure (a world may
-    /// leave out shapes of kinds it has no closest-point test for: its casts still meet them). ProjectileMethod::Engine asks it
-    /// in every step it does not coast, so that a sphere pressed into one face also meets the faces
-    /// beside it (without it, casts find them and may miss some in a narrow corner).
+    /// nothing), true when it has reported every such surface it can measure (a world may leave
+    /// out shapes it has no closest-point test for: its casts still meet them).
+    /// ProjectileMethod::Engine asks it in each step it takes one by one while the sphere touches
+    /// a surface, so that a sphere pressed into one face also meets the faces beside it (casts,
+    /// which ignore a surface they start inside, may miss one in a narrow corner).
     virtual bool findNear(const NearQuery& query, NearCollector& collector) const {
         (void)query;
         (void)collector;
