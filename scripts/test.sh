@@ -92,7 +92,10 @@ configure_and_build build -DCMAKE_BUILD_TYPE=Release -DFORESIGHT_WERROR=ON -DFOR
 
 step "testing build/"
 # The viewer's browser tests must be there: install-deps.sh installs Node.js, npm ci and chromium.
-if ! ctest --test-dir build -N | grep -q 'viewer\.demo_page'; then
+# (The list is read whole first: `ctest -N | grep -q` under pipefail fails when grep stops
+# reading before ctest has written its last line.)
+registered=$(ctest --test-dir build -N)
+if ! grep -q 'viewer\.demo_page' <<<"$registered"; then
     echo "test.sh: the viewer's browser tests are not registered in build/ (Node.js, viewer/node_modules or chromium missing?)" >&2
     exit 1
 fi
