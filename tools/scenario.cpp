@@ -574,13 +574,18 @@ void readPrediction(const Json& item, const std::string& path, Scenario& scenari
 
 }  // namespace
 
+namespace {
+// The steps one projectile prediction takes at most (its time over its step, up to maxSteps).
+std::uint64_t projectileSteps(const Prediction& p) {
+    return std::min<std::uint64_t>(foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)),
+                                   p.projectile.maxSteps);
+}
+}  // namespace
+
 std::uint64_t scenarioProjectileSteps(const Scenario& scenario) {
     std::uint64_t steps = 0;
-    for (const Prediction& p : scenario.predictions) {
-        if (p.model != Model::Projectile) continue;
-        steps += std::min<std::uint64_t>(foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)),
-                                         p.projectile.maxSteps);
-    }
+    for (const Prediction& p : scenario.predictions)
+        if (p.model == Model::Projectile) steps += projectileSteps(p);
     return steps;
 }
 
@@ -622,12 +627,8 @@ bool buildScenario(const Json& document, const std::filesystem::path& baseDirect
     // just under their cap printed 554 MB and took 3.3 GB).
     const std::uint64_t steps = scenarioProjectileSteps(scenario);
     std::uint64_t points = 0;
-    for (const Prediction& p : scenario.predictions) {
-        if (p.model != Model::Projectile || !p.trajectory) continue;
-        points += std::min<std::uint64_t>(foresight::steppedStepCount(p.time, foresight::settingsStep(p.projectile)),
-                                          p.projectile.maxSteps) +
-                  1;
-    }
+    for (const Prediction& p : scenario.predictions)
+        if (p.model == Model::Projectile && p.trajectory) points += projectileSteps(p) + 1;
     if (steps > kMaxScenarioSteps)
         diagnostics.error("predictions", "the projectile predictions take " + std::to_string(steps) +
                                              " steps in all; one file may take at most " +
