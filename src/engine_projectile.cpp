@@ -75,6 +75,7 @@ struct Surface {
     bool bounce = false;
     bool carried = false;     // applied an impulse in the previous step (Rapier: no new bounce)
     bool predictive = false;  // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
+    bool settled = false;     // this step's probe along the normal from the centre found the same normal
     double warmNormal = 0.0;  // Rapier: the last sub-step's impulses, warm-starting the next
     int color = -1;           // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
@@ -492,6 +493,7 @@ private:
             DVec3 touch = toD(hit.position) - off - clear;
             if (mProfile.engine == PhysicsEngine::PhysX) nearestOnEdge(normal, touch);
             if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
+            s.settled = glm::dot(normal, s.normal) > 1.0 - 1e-8;
             s.normal = normal;
             s.touch = touch;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
@@ -516,6 +518,14 @@ private:
             mProfile.engine == PhysicsEngine::Bullet)
             slideCast(freeMotion, reach);
         if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
+        // Bullet's narrow phase (GJK between the sphere's centre and the box's inner box, the
+        // margins added) measures a contact at the closest points where the step starts, as
+        // Jolt's does: on a rounded edge the normal there differs from the one a cast meets.
+        // A surface whose probe from the centre found its normal again is measured there already
+        // (1e-8: within a float cast's rounding of the normal).
+        if (mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet)
+            for (int i = 0; i < mCount; ++i)
+                if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, 1e-8);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
@@ -823,12 +833,14 @@ private:
         }
     }
 
-    // Jolt's narrow phase measures a contact between the closest points of the sphere and the
-    // shape at the step's start (GJK), where the cast found the surface at the point the motion
+    // Jolt's and Bullet's narrow phases measure a contact between the closest points of the
+    // sphere and the shape at the step's start (GJK), where the cast found the surface at the point the motion
     // reaches. On a face the two agree; on a rounded edge or corner the normal differs. Probing
     // along the normal again until it settles finds the closest point (near the surface each
-    // probe shrinks the normal's error by about gap / (r + rounding)).
-    void closestPoint(Surface& s, const DVec3& freeMotion, double reach) const {
+    // probe shrinks the normal's error by about gap / (r + rounding)). `settle`: how close to 1
+    // the dot product of two probes' normals must come (a world of float casts, such as
+    // BulletWorld, needs more room than the 1e-12 of one in double).
+    void closestPoint(Surface& s, const DVec3& freeMotion, double reach, double settle = 1e-12) const {
         const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
         for (int iteration = 0; iteration < 4; ++iteration) {
             const DVec3 from = mPosition + clear + s.normal * (std::max(0.0, -s.gap) + 0.01);
@@ -839,7 +851,7 @@ private:
             if (!cast(from, to, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             if (glm::dot(n, s.normal) < 0.9) return;  // another surface
-            const bool settled = glm::dot(n, s.normal) > 1.0 - 1e-12;
+            const bool settled = glm::dot(n, s.normal) > 1.0 - settle;
             s.normal = n;
             s.touch = toD(hit.position) - clear;
             s.gap = glm::dot(mPosition - s.touch, n);

@@ -95,7 +95,7 @@ const EngineInfo kEngines[] = {
     {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
-    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.85},
+    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.9},
     {"box2d", PhysicsEngine::Box2D, "native", 0.9, 0.85},
 };
 
@@ -265,12 +265,17 @@ Prediction predict(const Throw& t, ProjectileMethod method) {
         // smallest half extent for a thinner box (the harness's set-up).
         if (t.engine == PhysicsEngine::Jolt)
             box.rounding = static_cast<float>(std::min({0.05, b.half.x, b.half.y, b.half.z}));
-        // Godot 3's Bullet shapes have a 0.04 m collision margin: a btBoxShape keeps its faces and
-        // rounds its edges and corners by the margin (btSphereBoxCollisionAlgorithm, the sweeps).
-        // ammo.js's btBoxShape has the same default margin, and its sphere-box pairs go through
-        // GJK (the dedicated sphere-box algorithm is compiled out), which rounds alike.
+        // Bullet's btBoxShape has a collision margin (0.04 m by default): a sphere meets the box
+        // grown by the margin around its inner box, so the box keeps its faces and its edges and
+        // corners are rounded by the margin. Godot 3 with Bullet sets the margin, 0.04 m, and
+        // rounds alike (btSphereBoxCollisionAlgorithm, the sweeps). ammo.js and Debian's Bullet
+        // 3.24 collide a sphere with a box by GJK (the dedicated sphere-box algorithm is compiled
+        // out unless USE_BUGGY_SPHERE_BOX_ALGORITHM is defined), which rounds alike; Bullet 3.24's
+        // constructor lowers the margin to a tenth of the smallest half extent (setSafeMargin).
+        const double smallest = std::min({b.half.x, b.half.y, b.half.z});
         if (t.engine == PhysicsEngine::Godot3Bullet || t.harnessEngine == "ammo")
-            box.rounding = static_cast<float>(std::min({0.04, b.half.x, b.half.y, b.half.z}));
+            box.rounding = static_cast<float>(std::min(0.04, smallest));
+        if (t.harnessEngine == "bullet") box.rounding = static_cast<float>(std::min(0.04, 0.1 * smallest));
         SurfaceMaterial material;
         material.restitution = static_cast<float>(b.restitution);
         material.friction = static_cast<float>(b.friction);

@@ -139,7 +139,7 @@ function validateCase(raw, index) {
         restitution: C.num(bx, `${p}.restitution`, { min: 0 }),
         friction: C.num(bx, `${p}.friction`, { min: 0 }),
         // Radius of the rounded edges (the box keeps its outer size); absent: the engine's own
-        // default (Jolt's convex radius, sharp elsewhere).
+        // default (Jolt's convex radius, Bullet's collision margin, sharp elsewhere).
         rounding: C.num(bx, `${p}.rounding`, { min: 0, optional: true, dflt: undefined }),
       };
     });
@@ -147,7 +147,7 @@ function validateCase(raw, index) {
       if (bx.rounding === undefined) return;
       const p = `boxes[${j}].rounding`;
       if (bx.rounding > Math.min(...bx.half_extents)) C.bad(p, 'must not exceed the smallest half extent', bx.rounding);
-      if (bx.rounding > 0 && raw.engine !== 'jolt' && raw.engine !== 'rapier')
+      if (bx.rounding > 0 && raw.engine !== 'jolt' && raw.engine !== 'rapier' && raw.engine !== 'ammo')
         C.bad(p, `must be 0: ${raw.engine} builds sharp boxes here`, bx.rounding);
     });
   }
@@ -529,6 +529,8 @@ function runAmmo(A, c) {
     };
     for (const bx of c.boxes) {
       const shape = mk(new A.btBoxShape(v3(bx.half_extents)));
+      // The rounding is the box's collision margin (its outer size kept).
+      if (bx.rounding !== undefined) shape.setMargin(bx.rounding);
       world.addRigidBody(makeBody(shape, 0, bx.center, bx.rotation, bx.friction, bx.restitution));
     }
     const b = c.body;

@@ -9,7 +9,8 @@
 //           btCollisionDispatcher, btDbvtBroadphase and btSequentialImpulseConstraintSolver,
 //           every solver setting at its default; stepSimulation(dt, 0), i.e. exactly one
 //           internal step of dt per call. The sphere is a btSphereShape with Bullet's inertia
-//           for it, deactivation disabled; the boxes are static btBoxShape bodies (mass 0).
+//           for it, deactivation disabled; the boxes are static btBoxShape bodies (mass 0) whose
+//           collision margin is the case's rounding (absent: Bullet's default).
 //   box2d   Debian's libbox2d (v2.4): one b2World per case, Step(dt, 8, 3). The body is a
 //           dynamic circle (bullet off, sleeping not allowed) whose mass is the case's mass
 //           and whose rotational inertia is a disc's, m r^2 / 2 (set with SetMassData, so the
@@ -27,6 +28,7 @@
 #include <btBulletDynamicsCommon.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -50,6 +52,7 @@ struct BoxSpec {
     std::array<double, 4> rotation{0.0, 0.0, 0.0, 1.0};  // x, y, z, w
     std::optional<double> restitution;
     std::optional<double> friction;
+    std::optional<double> rounding;  // Bullet: the box's collision margin
 };
 
 struct BodySpec {
@@ -172,6 +175,16 @@ CaseSpec parse_case(const json& c, std::size_t index) {
             }
             box.restitution = optional_number(boxes[i], "restitution", xw);
             box.friction = optional_number(boxes[i], "friction", xw);
+            box.rounding = optional_number(boxes[i], "rounding", xw);
+            if (box.rounding) {
+                const double smallest = std::min({box.half_extents[0], box.half_extents[1], box.half_extents[2]});
+                if (!(*box.rounding >= 0.0 && *box.rounding <= smallest)) {
+                    fail(xw + ".rounding: must be from 0 to the smallest half extent");
+                }
+                if (spec.engine == "box2d" && *box.rounding > 0.0) {
+                    fail(xw + ".rounding: must be 0: box2d builds sharp boxes here");
+                }
+            }
             spec.boxes.push_back(box);
         }
     }
@@ -210,6 +223,11 @@ Trajectory run_bullet(const CaseSpec& spec) {
 
     for (const BoxSpec& box : spec.boxes) {
         shapes.push_back(std::make_unique<btBoxShape>(bt(box.half_extents)));
+        // The rounding is the collision margin (the outer size kept); absent, the constructor's
+        // default: 0.04 m, or a tenth of the smallest half extent if less.
+        if (box.rounding) {
+            shapes.back()->setMargin(bt(*box.rounding));
+        }
         const btQuaternion rotation(bt(box.rotation[0]), bt(box.rotation[1]), bt(box.rotation[2]), bt(box.rotation[3]));
         btRigidBody::btRigidBodyConstructionInfo info(btScalar(0), nullptr, shapes.back().get());
         info.m_startWorldTransform = btTransform(rotation, bt(box.center));

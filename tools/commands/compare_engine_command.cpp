@@ -300,7 +300,10 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
     }
     // What the harnesses build: planes (as large thin boxes) and boxes.
     const bool planar = engine->engine == PhysicsEngine::Box2D;
-    const bool rounds = engine->engine == PhysicsEngine::Jolt || engine->engine == PhysicsEngine::Rapier;
+    // Engines that build a box with the scenario's rounding: Jolt's convex radius, Rapier's round
+    // cuboid, Bullet's collision margin (native, ammo.js and Godot 3 with Bullet).
+    const bool rounds = engine->engine == PhysicsEngine::Jolt || engine->engine == PhysicsEngine::Rapier ||
+                        engine->engine == PhysicsEngine::Bullet || engine->engine == PhysicsEngine::Godot3Bullet;
     if (!scenario.world.spheres().empty())
         diagnostics.error("world.spheres",
                           "compare --engine sends planes and boxes to the engine; spheres are not supported");
@@ -325,7 +328,10 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         boxes.push_back(Json{{"center", {centre.x, centre.y, centre.z}},
                              {"half_extents", {kPlaneHalfWidth, kPlaneHalfThickness, kPlaneHalfWidth}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
-        if (rounds) boxes.back()["rounding"] = 0.0;  // a plane's box is sharp (Jolt would round it)
+        // A plane's box is sharp in Jolt (it would round it). Bullet keeps its default margin: its
+        // faces are where the plane is, and a margin of 0 changes how GJK measures a deep contact.
+        if (engine->engine == PhysicsEngine::Jolt || engine->engine == PhysicsEngine::Rapier)
+            boxes.back()["rounding"] = 0.0;
         boxMaterials.push_back(scenario.world.planeMaterials()[i]);
     }
     for (std::size_t i = 0; i < scenario.world.boxes().size(); ++i) {
@@ -339,15 +345,16 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
         if (!rounds && box.rounding > 0.0f) {
             diagnostics.error("world.boxes[" + std::to_string(i) + "].rounding",
                               std::string(engine->name) +
-                                  " builds sharp boxes here: the rounding must be 0 (jolt and "
-                                  "rapier round them)");
+                                  " builds sharp boxes here: the rounding must be 0 (jolt, rapier and "
+                                  "the Bullet engines round them)");
             continue;
         }
         boxes.push_back(Json{{"center", {box.center.x, box.center.y, box.center.z}},
                              {"half_extents", {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}},
                              {"rotation", {q.x, q.y, q.z, q.w}}});
         // The engine builds the box the scenario describes: Jolt's convex radius (0.05 m unless
-        // given) and Rapier's round cuboid take the box's own rounding, 0 included.
+        // given), Rapier's round cuboid and Bullet's collision margin (0.04 m unless given) take
+        // the box's own rounding, 0 included.
         if (rounds) boxes.back()["rounding"] = box.rounding;
         boxMaterials.push_back(scenario.world.boxMaterials()[i]);
     }

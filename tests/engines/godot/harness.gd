@@ -211,6 +211,17 @@ func spawn(index, c):
 			box.physics_material_override = box_material
 			var box_shape = BoxShape.new()
 			box_shape.extents = half
+			# The rounding is Bullet's collision margin (GodotPhysics has none: sharp boxes only).
+			if b.has("rounding"):
+				var rounding = float(b["rounding"])
+				var smallest = min(half.x, min(half.y, half.z))
+				if rounding < 0.0 or rounding > smallest:
+					fail("case %s: rounding must be from 0 to the smallest half extent" % id)
+					return false
+				if rounding > 0.0 and c["engine"] != "godot3-bullet":
+					fail("case %s: rounding must be 0: %s builds sharp boxes" % [id, c["engine"]])
+					return false
+				box_shape.margin = rounding
 			var box_collision = CollisionShape.new()
 			box_collision.shape = box_shape
 			box.add_child(box_collision)
