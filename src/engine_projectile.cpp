@@ -834,12 +834,12 @@ private:
     }
 
     // Jolt's and Bullet's narrow phases measure a contact between the closest points of the
-    // sphere and the shape at the step's start (GJK), where the cast found the surface at the point the motion
-    // reaches. On a face the two agree; on a rounded edge or corner the normal differs. Probing
-    // along the normal again until it settles finds the closest point (near the surface each
-    // probe shrinks the normal's error by about gap / (r + rounding)). `settle`: how close to 1
-    // the dot product of two probes' normals must come (a world of float casts, such as
-    // BulletWorld, needs more room than the 1e-12 of one in double).
+    // sphere and the shape at the step's start (GJK), where the cast found the surface at the
+    // point the motion reaches. On a face the two agree; on a rounded edge or corner the normal
+    // differs. Probing along the normal again until it settles finds the closest point (near the
+    // surface each probe shrinks the normal's error by about gap / (r + rounding)). `settle`: how
+    // close to 1 the dot product of two probes' normals must come (a world of float casts, such
+    // as BulletWorld, needs more room than the 1e-12 of one in double).
     void closestPoint(Surface& s, const DVec3& freeMotion, double reach, double settle = 1e-12) const {
         const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
         for (int iteration = 0; iteration < 4; ++iteration) {
