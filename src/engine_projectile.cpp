@@ -1474,7 +1474,19 @@ private:
                 normal = glm::normalize(p - corner);
                 touch = corner + normal * mRadius;
             }
-            if (!isKnown(normal, touch, mCount) && mCount < kMaxSurfaces) {
+            // The same corner measured earlier (from where the step started, with another normal)
+            // is the same contact: Box2D keeps one manifold point per corner, its normal from the
+            // corner to the centre where the contact is updated.
+            bool merged = false;
+            for (int i = 0; vertex && i < mCount; ++i) {
+                Surface& o = mSurfaces[i];
+                // 0.1 mm: both corners come from float casts (rounding of about 1e-6 of the coordinates).
+                if (glm::length(o.touch - o.normal * mRadius - corner) > 1e-4) continue;
+                o.normal = normal;
+                o.touch = touch;
+                merged = true;
+            }
+            if (!merged && !isKnown(normal, touch, mCount) && mCount < kMaxSurfaces) {
                 Surface& s = mSurfaces[mCount++];
                 s = Surface{};
                 s.normal = normal;
