@@ -2,12 +2,15 @@
 // is noexcept (an exception would end the program rather than cross into C); the only calls that
 // can throw (std::vector growing in StaticWorld::add) are caught here.
 
+#include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
 #include <foresight/vehicle.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -57,6 +60,15 @@ static_assert(offsetof(fs_projectile_result, velocity) == 24 && offsetof(fs_proj
               offsetof(fs_projectile_result, hit_normal) == 52 &&
               offsetof(fs_projectile_result, trajectory_size) == 64 &&
               offsetof(fs_projectile_result, trajectory_needed) == 72);
+static_assert(sizeof(fs_aim_shot) == 56 && alignof(fs_aim_shot) == 8);
+static_assert(offsetof(fs_aim_shot, constraint) == 24 && offsetof(fs_aim_shot, speed) == 28 &&
+              offsetof(fs_aim_shot, apex_height) == 32 && offsetof(fs_aim_shot, gravity) == 36 &&
+              offsetof(fs_aim_shot, max_time) == 48 && offsetof(fs_aim_shot, reserved) == 52);
+static_assert(sizeof(fs_aim_target) == 48 && alignof(fs_aim_target) == 8);
+static_assert(offsetof(fs_aim_target, velocity) == 24 && offsetof(fs_aim_target, acceleration) == 36);
+static_assert(sizeof(fs_firing_solution) == 48 && alignof(fs_firing_solution) == 8);
+static_assert(offsetof(fs_firing_solution, time) == 12 && offsetof(fs_firing_solution, hit) == 16 &&
+              offsetof(fs_firing_solution, elevation) == 40 && offsetof(fs_firing_solution, reserved) == 44);
 
 // ---- The enumerations mirror the C++ ones value for value. ----------------------------------
 static_assert(FS_STATUS_OK == static_cast<int>(Status::Ok));
@@ -99,6 +111,11 @@ static_assert(FS_EVENT_START == static_cast<int>(TrajectoryEvent::Start) &&
               FS_EVENT_REST == static_cast<int>(TrajectoryEvent::Rest) &&
               FS_EVENT_HIT == static_cast<int>(TrajectoryEvent::Hit) &&
               FS_EVENT_END == static_cast<int>(TrajectoryEvent::End));
+static_assert(FS_AIM_SPEED == static_cast<int>(AimConstraint::Speed) &&
+              FS_AIM_HORIZONTAL_SPEED == static_cast<int>(AimConstraint::HorizontalSpeed) &&
+              FS_AIM_APEX_ABOVE_START == static_cast<int>(AimConstraint::ApexAboveStart) &&
+              FS_AIM_APEX_ABOVE_TARGET == static_cast<int>(AimConstraint::ApexAboveTarget));
+static_assert(FS_MAX_FIRING_SOLUTIONS == kMaxFiringSolutions);
 
 // The handle is the C++ world itself.
 struct fs_world {
@@ -360,6 +377,47 @@ fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
     out->trajectory_size = result.trajectorySize;
     out->trajectory_needed = result.trajectoryNeeded;
     if (capacity > 0 && result.trajectoryNeeded > result.trajectorySize) return FS_STATUS_BUFFER_TOO_SMALL;
+    return FS_STATUS_OK;
+}
+
+fs_aim_shot fs_aim_shot_default(void) noexcept {
+    const AimShot d;
+    fs_aim_shot s;
+    s.from = toCPosition(d.from);
+    s.constraint = static_cast<int32_t>(d.constraint);
+    s.speed = d.speed;
+    s.apex_height = d.apexHeight;
+    s.gravity = toC(d.gravity);
+    s.max_time = d.maxTime;
+    s.reserved = 0.0f;
+    return s;
+}
+
+fs_status fs_aim_projectile(const fs_aim_shot* shot, const fs_aim_target* target, fs_firing_solution* solutions,
+                            size_t capacity, size_t* count) noexcept {
+    if (shot == nullptr || target == nullptr || count == nullptr || (solutions == nullptr && capacity > 0))
+        return FS_STATUS_NULL_POINTER;
+    if (shot->constraint < FS_AIM_SPEED || shot->constraint > FS_AIM_APEX_ABOVE_TARGET)
+        return FS_STATUS_INVALID_SETTING;
+    AimShot cppShot;
+    cppShot.from = toCpp(shot->from);
+    cppShot.constraint = static_cast<AimConstraint>(shot->constraint);
+    cppShot.speed = shot->speed;
+    cppShot.apexHeight = shot->apex_height;
+    cppShot.gravity = toCpp(shot->gravity);
+    cppShot.maxTime = shot->max_time;
+    const AimTarget cppTarget{toCpp(target->position), toCpp(target->velocity), toCpp(target->acceleration)};
+    // At most kMaxFiringSolutions, on the stack; the earliest `capacity` of them are copied out,
+    // as aimProjectile writes the earliest into a shorter span.
+    std::array<FiringSolution, kMaxFiringSolutions> found;
+    std::size_t n = 0;
+    const Status s =
+        aimProjectile(cppShot, cppTarget, std::span<FiringSolution>(found.data(), std::min(capacity, found.size())), n);
+    if (s != Status::Ok) return toC(s);
+    for (std::size_t i = 0; i < n; ++i)
+        solutions[i] = fs_firing_solution{toC(found[i].velocity), found[i].time, toCPosition(found[i].hit),
+                                          found[i].elevation, 0.0f};
+    *count = n;
     return FS_STATUS_OK;
 }
 

@@ -2,6 +2,7 @@
 // random inputs: statuses equal and results bit for bit, since the C API only converts types.
 // This covers the marshalling (fields, order, enumerations); c_api_test.c checks the results
 // against closed forms.
+#include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
@@ -261,5 +262,51 @@ TEST(CApi, ProjectilesMatchCpp) {
                       : std::size_t{0})
             << i;
         fs_world_destroy(cWorld);
+    }
+}
+
+TEST(CApi, AimMatchesCpp) {
+    Random random(14);
+    const AimShot d;
+    const fs_aim_shot cd = fs_aim_shot_default();
+    EXPECT_TRUE(samePosition(cd.from, d.from));
+    EXPECT_EQ(cd.constraint, static_cast<int>(d.constraint));
+    EXPECT_TRUE(same(cd.speed, d.speed) && same(cd.apex_height, d.apexHeight) && same(cd.max_time, d.maxTime));
+    EXPECT_TRUE(same(cd.gravity, d.gravity));
+    for (int i = 0; i < kCases; ++i) {
+        AimShot shot;
+        shot.from = RVec3(random.vec(50.0f));
+        shot.constraint = static_cast<AimConstraint>(random.integer(0, 3));
+        shot.speed = random.uniform(-1, 60);
+        shot.apexHeight = random.uniform(-1, 30);
+        shot.gravity = random.chance(0.2) ? Vec3(0) : Vec3(0, -random.uniform(1, 20), 0);
+        shot.maxTime = random.chance(0.05) ? -1.0f : random.uniform(0, 20);
+        const AimTarget target{RVec3(random.vec(100.0f)), random.vec(20.0f),
+                               random.chance(0.5) ? Vec3(0) : random.vec(5.0f)};
+        const std::size_t capacity = static_cast<std::size_t>(random.integer(0, 4));
+
+        std::array<FiringSolution, kMaxFiringSolutions> cpp;
+        std::size_t cppCount = 0;
+        const Status s = aimProjectile(shot, target, std::span(cpp.data(), capacity), cppCount);
+
+        const fs_aim_shot cShot{toCPosition(shot.from),
+                                static_cast<std::int32_t>(shot.constraint),
+                                shot.speed,
+                                shot.apexHeight,
+                                toC(shot.gravity),
+                                shot.maxTime,
+                                0.0f};
+        const fs_aim_target cTarget{toCPosition(target.position), toC(target.velocity), toC(target.acceleration)};
+        std::array<fs_firing_solution, FS_MAX_FIRING_SOLUTIONS> c{};
+        std::size_t cCount = 0;
+        ASSERT_EQ(fs_aim_projectile(&cShot, &cTarget, c.data(), capacity, &cCount), static_cast<fs_status>(s)) << i;
+        if (s != Status::Ok) continue;
+        ASSERT_EQ(cCount, cppCount) << i;
+        for (std::size_t k = 0; k < cCount; ++k) {
+            EXPECT_TRUE(same(c[k].velocity, cpp[k].velocity)) << i;
+            EXPECT_TRUE(same(c[k].time, cpp[k].time)) << i;
+            EXPECT_TRUE(samePosition(c[k].hit, cpp[k].hit)) << i;
+            EXPECT_TRUE(same(c[k].elevation, cpp[k].elevation)) << i;
+        }
     }
 }

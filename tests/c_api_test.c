@@ -665,6 +665,131 @@ static void test_projectile_event_cap(void) {
     fs_world_destroy(world);
 }
 
+/* ---- Aim ------------------------------------------------------------------------------------ */
+
+static void test_aim(void) {
+    fs_aim_shot shot = fs_aim_shot_default();
+    fs_aim_target target;
+    fs_firing_solution solutions[FS_MAX_FIRING_SOLUTIONS], untouched[FS_MAX_FIRING_SOLUTIONS];
+    size_t count = 99, i;
+
+    CHECK(shot.constraint == FS_AIM_SPEED && shot.speed == 0.0f && shot.apex_height == 0.0f);
+    CHECK(shot.gravity.x == 0.0f && shot.gravity.y == -9.81f && shot.gravity.z == 0.0f);
+    CHECK(shot.max_time == 60.0f);
+    CHECK(shot.from.x == 0.0 && shot.from.y == 0.0 && shot.from.z == 0.0);
+
+    /* A static target 20 m away at 20 m/s under gravity: the low and the high arc,
+     * tan(theta) = (s^2 -+ sqrt(s^4 - g^2 x^2)) / (g x), flight time x / (s cos(theta)). */
+    shot.speed = 20.0f;
+    target.position = dvec3(20.0, 0.0, 0.0);
+    target.velocity = vec3(0.0f, 0.0f, 0.0f);
+    target.acceleration = vec3(0.0f, 0.0f, 0.0f);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 2);
+    if (count == 2) {
+        const double s = 20.0, x = 20.0, root = sqrt(s * s * s * s - kGravity * kGravity * x * x);
+        const double low = atan((s * s - root) / (kGravity * x)), high = atan((s * s + root) / (kGravity * x));
+        CHECK_NEAR(solutions[0].time, x / (s * cos(low)), kTol);
+        CHECK_NEAR(solutions[1].time, x / (s * cos(high)), kTol);
+        CHECK_NEAR(solutions[0].elevation, low, kTol);
+        CHECK_NEAR(solutions[1].elevation, high, kTol);
+        CHECK_NEAR(solutions[0].velocity.x, s * cos(low), kTol);
+        CHECK_NEAR(solutions[0].velocity.y, s * sin(low), kTol);
+        CHECK_NEAR(solutions[1].velocity.y, s * sin(high), kTol);
+        CHECK_NEAR(solutions[0].hit.x, 20.0, kTol);
+        CHECK(solutions[0].reserved == 0.0f);
+    }
+
+    /* No gravity, a target crossing at 3 m/s: |(10, 3t, 0)| = 5t at t = 2.5, velocity (4, 3, 0). */
+    shot.gravity = vec3(0.0f, 0.0f, 0.0f);
+    shot.speed = 5.0f;
+    target.position = dvec3(10.0, 0.0, 0.0);
+    target.velocity = vec3(0.0f, 3.0f, 0.0f);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 1);
+    CHECK_NEAR(solutions[0].time, 2.5, kTol);
+    CHECK_NEAR(solutions[0].velocity.x, 4.0, kTol);
+    CHECK_NEAR(solutions[0].velocity.y, 3.0, kTol);
+    CHECK_NEAR(solutions[0].hit.y, 7.5, kTol);
+
+    /* No gravity, a target accelerating at 2 m/s^2: |(10, t^2, 0)| = 5t, t^2 = 5 or 20. */
+    target.velocity = vec3(0.0f, 0.0f, 0.0f);
+    target.acceleration = vec3(0.0f, 2.0f, 0.0f);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 2);
+    CHECK_NEAR(solutions[0].time, sqrt(5.0), kTol);
+    CHECK_NEAR(solutions[1].time, sqrt(20.0), kTol);
+    CHECK_NEAR(solutions[1].hit.y, 20.0, kTol);
+    /* a shorter buffer gets the earliest; none at all only counts nothing */
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 1, &count), FS_STATUS_OK);
+    CHECK(count == 1);
+    CHECK_NEAR(solutions[0].time, sqrt(5.0), kTol);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, NULL, 0, &count), FS_STATUS_OK);
+    CHECK(count == 0);
+
+    /* Out of reach: no solutions, not an error. */
+    shot = fs_aim_shot_default();
+    shot.speed = 5.0f;
+    target.position = dvec3(100.0, 0.0, 0.0);
+    target.acceleration = vec3(0.0f, 0.0f, 0.0f);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 0);
+
+    /* The apex constraints: a lob whose apex is 5 m above the start, onto a target on the
+     * ground 10 m away: up for sqrt(2 h / g), down as long. */
+    shot.constraint = FS_AIM_APEX_ABOVE_START;
+    shot.apex_height = 5.0f;
+    target.position = dvec3(10.0, 0.0, 0.0);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 1);
+    CHECK_NEAR(solutions[0].time, 2.0 * sqrt(2.0 * 5.0 / kGravity), kTol);
+    CHECK_NEAR(solutions[0].velocity.y, sqrt(2.0 * kGravity * 5.0), kTol);
+    shot.constraint = FS_AIM_APEX_ABOVE_TARGET;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 1);
+    CHECK_NEAR(solutions[0].time, 2.0 * sqrt(2.0 * 5.0 / kGravity), kTol);
+    shot.constraint = FS_AIM_HORIZONTAL_SPEED;
+    shot.speed = 5.0f;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, FS_MAX_FIRING_SOLUTIONS, &count), FS_STATUS_OK);
+    CHECK(count == 1);
+    CHECK_NEAR(solutions[0].time, 2.0, kTol);
+    CHECK_NEAR(solutions[0].velocity.x, 5.0, kTol);
+    CHECK_NEAR(solutions[0].velocity.y, 0.5 * kGravity * 2.0, kTol);
+
+    /* Refusals: nothing written. */
+    shot = fs_aim_shot_default();
+    shot.speed = 20.0f;
+    memset(untouched, 0x5a, sizeof untouched);
+    memcpy(solutions, untouched, sizeof solutions);
+    count = 99;
+    CHECK_STATUS(fs_aim_projectile(NULL, &target, solutions, 4, &count), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_aim_projectile(&shot, NULL, solutions, 4, &count), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, NULL, 4, &count), FS_STATUS_NULL_POINTER);
+    shot.constraint = 4;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_INVALID_SETTING);
+    shot.constraint = -1;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_INVALID_SETTING);
+    shot.constraint = FS_AIM_SPEED;
+    shot.max_time = -1.0f;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_NEGATIVE_TIME);
+    shot.max_time = NAN;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_NON_FINITE_INPUT);
+    shot.max_time = 60.0f;
+    shot.speed = INFINITY;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_NON_FINITE_INPUT);
+    shot.speed = 20.0f;
+    target.velocity.z = NAN;
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_NON_FINITE_INPUT);
+    target.velocity.z = 0.0f;
+    shot.constraint = FS_AIM_APEX_ABOVE_START;
+    shot.gravity = vec3(0.0f, 0.0f, 0.0f);
+    CHECK_STATUS(fs_aim_projectile(&shot, &target, solutions, 4, &count), FS_STATUS_ZERO_VECTOR);
+    CHECK(count == 99);
+    CHECK(memcmp(solutions, untouched, sizeof solutions) == 0);
+    for (i = 0; i < FS_MAX_FIRING_SOLUTIONS; ++i) CHECK(solutions[i].time == untouched[i].time);
+}
+
 int main(void) {
     test_version_and_statuses();
     test_defaults();
@@ -676,6 +801,7 @@ int main(void) {
     test_projectile_shapes();
     test_projectile_buffers_and_refusals();
     test_projectile_event_cap();
+    test_aim();
     if (failures != 0) {
         fprintf(stderr, "c_api_test: %d check(s) failed\n", failures);
         return 1;

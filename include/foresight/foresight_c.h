@@ -380,6 +380,77 @@ FS_API fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, floa
                                        fs_trajectory_point* points, size_t capacity,
                                        fs_projectile_result* out) FS_NOEXCEPT;
 
+/* ---- Aim ------------------------------------------------------------------------------------ */
+
+/// What fixes the launch velocity besides meeting the target (fs_aim_shot::constraint).
+enum {
+    /// `|velocity| = speed`: a gun or a throw of fixed strength (low and high arc).
+    FS_AIM_SPEED = 0,
+    /// The velocity's part across gravity has length `speed` (a fixed lateral speed); with zero
+    /// gravity, "vertical" is +Y.
+    FS_AIM_HORIZONTAL_SPEED = 1,
+    /// The arc's apex is `apex_height` above the launch point; the hit is at or after the apex.
+    FS_AIM_APEX_ABOVE_START = 2,
+    /// The arc's apex is `apex_height` above the hit point; the hit is at or after the apex.
+    FS_AIM_APEX_ABOVE_TARGET = 3,
+};
+
+/// The most firing solutions any constraint has: a buffer of this size never loses one.
+#define FS_MAX_FIRING_SOLUTIONS 4
+
+/// The shooter and the shot's constraint; fs_aim_shot_default() gives the C++ defaults. The
+/// projectile flies in free space (no world, no drag). 56 bytes, alignment 8: from 0,
+/// constraint 24, speed 28, apex_height 32, gravity 36, max_time 48, reserved 52.
+typedef struct fs_aim_shot {
+    fs_dvec3 from;       ///< launch point [Units: m].
+    int32_t constraint;  ///< FS_AIM_* (default FS_AIM_SPEED).
+    /// FS_AIM_SPEED, FS_AIM_HORIZONTAL_SPEED: the launch speed [Units: m/s] [Limit: finite]; 0
+    /// drops the projectile, negative reaches nothing (no solutions, not an error). Default 0.
+    float speed;
+    /// The apex constraints: the apex's height along -gravity [Units: m] [Limit: finite]; below 0
+    /// nothing is reachable. Default 0.
+    float apex_height;
+    fs_vec3 gravity;  ///< [Units: m/s^2], world axes (default {0, -9.81, 0}).
+    float max_time;   ///< latest flight time reported [Units: s] [Limit: >= 0, finite] (default 60).
+    float reserved;   ///< padding: ignored.
+} fs_aim_shot;
+
+/// A target moving as `position + velocity t + acceleration t^2 / 2`. 48 bytes, alignment 8:
+/// position 0, velocity 24, acceleration 36.
+typedef struct fs_aim_target {
+    fs_dvec3 position;     ///< at t = 0 [Units: m].
+    fs_vec3 velocity;      ///< [Units: m/s].
+    fs_vec3 acceleration;  ///< [Units: m/s^2].
+} fs_aim_target;
+
+/// One way to hit the target. 48 bytes, alignment 8: velocity 0, time 12, hit 16, elevation
+/// 40, reserved 44.
+typedef struct fs_firing_solution {
+    fs_vec3 velocity;  ///< launch velocity [Units: m/s]; for FS_AIM_SPEED, of length `speed`.
+    float time;        ///< flight time to the hit [Units: s] [Limit: (0, max_time]].
+    fs_dvec3 hit;      ///< where projectile and target meet at `time` [Units: m].
+    float elevation;   ///< launch angle above the plane across gravity [Units: rad] [Limit: -pi/2 .. pi/2].
+    float reserved;    ///< padding: written as 0.
+} fs_firing_solution;
+
+/// The defaults of foresight::AimShot (see fs_aim_shot).
+FS_API fs_aim_shot fs_aim_shot_default(void) FS_NOEXCEPT;
+
+/// Every firing solution with a flight time in (0, max_time], earliest first (the low arc or the
+/// straight-line intercept first, the high arc last). Allocates nothing.
+/// @param shot       launch point, constraint, gravity and time limit.
+/// @param target     the target's motion.
+/// @param solutions  receives the solutions; with fewer than FS_MAX_FIRING_SOLUTIONS entries,
+///                   the earliest. May be NULL when capacity is 0.
+/// @param capacity   entries in `solutions`.
+/// @param count      receives the number written (0: unreachable, which is not an error).
+/// @return OK, NULL_POINTER (shot, target, count, or solutions with capacity > 0),
+///         INVALID_SETTING (constraint), NON_FINITE_INPUT, NEGATIVE_TIME (max_time < 0),
+///         ZERO_VECTOR (an apex constraint with zero gravity) or NON_FINITE_RESULT; `solutions`
+///         and `count` are written only on OK.
+FS_API fs_status fs_aim_projectile(const fs_aim_shot* shot, const fs_aim_target* target, fs_firing_solution* solutions,
+                                   size_t capacity, size_t* count) FS_NOEXCEPT;
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif
