@@ -125,8 +125,15 @@ if [[ "$found" != "$tmp/prefix/"* ]]; then
 fi
 cmake --build "$tmp/example" --parallel "$jobs"
 
-step "running the examples (hello_prediction, and hello_embree / hello_bullet when those backends are built)"
+step "running the examples (hello_prediction, c_example, and hello_embree / hello_bullet when those backends are built)"
 "$tmp/example/hello_prediction"
+if grep -q '^FORESIGHT_BUILD_C_API:BOOL=ON' build/CMakeCache.txt; then
+    if [[ ! -x "$tmp/example/c_example" ]]; then
+        echo "test.sh: the installed package has no foresight::foresight_c although build/ has it" >&2
+        exit 1
+    fi
+    "$tmp/example/c_example"
+fi
 if grep -q '^FORESIGHT_WITH_EMBREE:BOOL=ON' build/CMakeCache.txt; then
     if [[ ! -x "$tmp/example/hello_embree" ]]; then
         echo "test.sh: the installed package has no foresight::embree although build/ has it" >&2

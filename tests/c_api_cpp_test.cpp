@@ -1,0 +1,312 @@
+// The C API (foresight_c.h, through the shared library) against direct calls of the C++ API on
+// random inputs: statuses equal and results bit for bit, since the C API only converts types.
+// This covers the marshalling (fields, order, enumerations); c_api_test.c checks the results
+// against closed forms.
+#include <foresight/aim.h>
+#include <foresight/character.h>
+#include <foresight/foresight_c.h>
+#include <foresight/projectile.h>
+#include <foresight/static_world.h>
+#include <foresight/vehicle.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+using namespace foresight;
+
+namespace {
+
+constexpr int kCases = 300;
+
+// Bit-identical (0 and -0 differ, as would two NaNs with different payloads).
+bool same(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool same(const fs_vec3& c, const Vec3& v) { return same(c.x, v.x) && same(c.y, v.y) && same(c.z, v.z); }
+bool samePosition(const fs_dvec3& c, const RVec3& v) {
+    return same(c.x, static_cast<double>(v.x)) && same(c.y, static_cast<double>(v.y)) &&
+           same(c.z, static_cast<double>(v.z));
+}
+bool same(const fs_quat& c, const Quat& q) {
+    return same(c.x, q.x) && same(c.y, q.y) && same(c.z, q.z) && same(c.w, q.w);
+}
+
+class Random {
+public:
+    explicit Random(std::uint32_t seed) : mEngine(seed) {}
+    float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(mEngine); }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(mEngine); }
+    bool chance(double p) { return std::bernoulli_distribution(p)(mEngine); }
+    Vec3 vec(float range) { return Vec3(uniform(-range, range), uniform(-range, range), uniform(-range, range)); }
+    // A time, negative now and then (so that refusals are compared too).
+    float time(float hi) { return chance(0.05) ? -uniform(0.01f, 1.0f) : uniform(0.0f, hi); }
+
+private:
+    std::mt19937 mEngine;
+};
+
+fs_vec3 toC(const Vec3& v) { return fs_vec3{v.x, v.y, v.z}; }
+// Positions: the same float values as the C++ call gets, widened (exact).
+fs_dvec3 toCPosition(const RVec3& v) {
+    return fs_dvec3{static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+fs_quat toC(const Quat& q) { return fs_quat{q.x, q.y, q.z, q.w}; }
+
+Quat quat(float x, float y, float z, float w) {
+    Quat q;
+    q.x = x;
+    q.y = y;
+    q.z = z;
+    q.w = w;
+    return q;
+}
+
+}  // namespace
+
+TEST(CApi, StatusesAndMessages) {
+    EXPECT_EQ(fs_abi_version(), static_cast<std::uint32_t>(FS_ABI_VERSION));
+    for (int s = 0; s <= static_cast<int>(Status::OutOfRange); ++s)
+        EXPECT_STREQ(fs_status_message(s), statusMessage(static_cast<Status>(s))) << s;
+}
+
+TEST(CApi, Defaults) {
+    const ProjectileSettings p;
+    const fs_projectile_settings c = fs_projectile_settings_default();
+    EXPECT_EQ(c.method, static_cast<int>(p.method));
+    EXPECT_TRUE(same(c.gravity, p.gravity));
+    EXPECT_TRUE(same(c.step, p.step));
+    EXPECT_TRUE(same(c.restitution, p.restitution));
+    EXPECT_TRUE(same(c.friction, p.friction));
+    EXPECT_TRUE(same(c.radius, p.radius));
+    EXPECT_EQ(c.max_bounces, p.maxBounces);
+    EXPECT_EQ(c.max_steps, p.maxSteps);
+    EXPECT_EQ(c.max_events, p.maxEvents);
+    EXPECT_EQ(c.engine, static_cast<int>(p.engine.engine));
+    const VehicleSettings v;
+    const fs_vehicle_settings cv = fs_vehicle_settings_default();
+    EXPECT_EQ(cv.frame, static_cast<int>(v.frame));
+    EXPECT_TRUE(same(cv.forward, v.forward));
+}
+
+TEST(CApi, CharactersMatchCpp) {
+    Random random(11);
+    for (int i = 0; i < kCases; ++i) {
+        const PointState start{RVec3(random.vec(1000.0f)), random.vec(50.0f)};
+        const Vec3 acceleration = random.vec(20.0f);
+        const float time = random.time(10.0f);
+        const fs_point_state cStart{toCPosition(start.position), toC(start.velocity), 0.0f};
+
+        PointState cpp;
+        fs_point_state c{};
+        Status s = predictLinear(start, time, cpp);
+        ASSERT_EQ(fs_predict_linear(&cStart, time, &c), static_cast<fs_status>(s)) << i;
+        if (s == Status::Ok) {
+            EXPECT_TRUE(samePosition(c.position, cpp.position)) << i;
+            EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i;
+        }
+        s = predictAccelerated(start, acceleration, time, cpp);
+        ASSERT_EQ(fs_predict_accelerated(&cStart, toC(acceleration), time, &c), static_cast<fs_status>(s)) << i;
+        if (s == Status::Ok) {
+            EXPECT_TRUE(samePosition(c.position, cpp.position)) << i;
+            EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i;
+        }
+    }
+}
+
+TEST(CApi, VehiclesMatchCpp) {
+    Random random(12);
+    for (int i = 0; i < kCases; ++i) {
+        VehicleState start;
+        start.position = RVec3(random.vec(1000.0f));
+        start.velocity = random.vec(30.0f);
+        start.orientation =
+            quat(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+        start.angularVelocity = random.vec(2.0f);
+        VehicleSettings settings;
+        settings.frame = random.chance(0.5) ? AngularFrame::Body : AngularFrame::World;
+        settings.forward = random.chance(0.5) ? Vec3(0, 0, 1) : random.vec(1.0f);
+        const float time = random.time(5.0f);
+        const int iterations = random.integer(0, 16);
+
+        const fs_vehicle_state cStart{toCPosition(start.position), toC(start.velocity), toC(start.orientation),
+                                      toC(start.angularVelocity)};
+        const fs_vehicle_settings cSettings{static_cast<std::int32_t>(settings.frame), toC(settings.forward)};
+        const auto expectSame = [i](const fs_vehicle_state& c, const VehicleState& cpp) {
+            EXPECT_TRUE(samePosition(c.position, cpp.position)) << i;
+            EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i;
+            EXPECT_TRUE(same(c.orientation, cpp.orientation)) << i;
+            EXPECT_TRUE(same(c.angular_velocity, cpp.angularVelocity)) << i;
+        };
+
+        VehicleState cpp;
+        fs_vehicle_state c{};
+        Status s = predictVehicleExact(start, time, settings, cpp);
+        ASSERT_EQ(fs_predict_vehicle_exact(&cStart, time, &cSettings, &c), static_cast<fs_status>(s)) << i;
+        if (s == Status::Ok) expectSame(c, cpp);
+        s = predictVehicleIterative(start, time, iterations, settings, cpp);
+        ASSERT_EQ(fs_predict_vehicle_iterative(&cStart, time, iterations, &cSettings, &c), static_cast<fs_status>(s))
+            << i;
+        if (s == Status::Ok) expectSame(c, cpp);
+    }
+}
+
+TEST(CApi, ProjectilesMatchCpp) {
+    Random random(13);
+    std::vector<TrajectoryPoint> cppPoints(4096);
+    std::vector<fs_trajectory_point> cPoints(4096);
+    for (int i = 0; i < kCases; ++i) {
+        // The same world both ways: a floor, and now and then a box, a sphere and a triangle,
+        // some with their own material.
+        StaticWorld world;
+        fs_world* cWorld = fs_world_create();
+        ASSERT_NE(cWorld, nullptr);
+        const auto material = [&random]() {
+            return random.chance(0.5) ? SurfaceMaterial{} : SurfaceMaterial{random.uniform(0, 1), random.uniform(0, 1)};
+        };
+        const auto cMaterial = [](const SurfaceMaterial& m) { return fs_material{m.restitution, m.friction}; };
+        {
+            const Plane plane{Vec3(random.uniform(-0.2f, 0.2f), 1.0f, random.uniform(-0.2f, 0.2f)),
+                              static_cast<Real>(random.uniform(-1, 0))};
+            const SurfaceMaterial m = material();
+            const fs_plane cPlane{toC(plane.normal), 0.0f, static_cast<double>(plane.distance)};
+            const fs_material cm = cMaterial(m);
+            ASSERT_EQ(fs_world_add_plane(cWorld, &cPlane, &cm), static_cast<fs_status>(world.add(plane, m)));
+        }
+        if (random.chance(0.6)) {
+            OrientedBox box;
+            box.center = RVec3(random.vec(6.0f));
+            box.halfExtents = Vec3(random.uniform(0.2f, 2), random.uniform(0.2f, 2), random.uniform(0.2f, 2));
+            box.orientation = quat(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1), 1.0f);
+            box.rounding = random.chance(0.3) ? 0.05f : 0.0f;
+            const SurfaceMaterial m = material();
+            const fs_box cBox{toCPosition(box.center), toC(box.halfExtents), toC(box.orientation), box.rounding};
+            const fs_material cm = cMaterial(m);
+            ASSERT_EQ(fs_world_add_box(cWorld, &cBox, &cm), static_cast<fs_status>(world.add(box, m)));
+        }
+        if (random.chance(0.6)) {
+            const Sphere sphere{RVec3(random.vec(6.0f)), random.uniform(0.2f, 2)};
+            const fs_sphere cSphere{toCPosition(sphere.center), sphere.radius, 0.0f};
+            ASSERT_EQ(fs_world_add_sphere(cWorld, &cSphere, nullptr), static_cast<fs_status>(world.add(sphere)));
+        }
+        if (random.chance(0.6)) {
+            const Triangle triangle{RVec3(random.vec(6.0f)), RVec3(random.vec(6.0f)), RVec3(random.vec(6.0f))};
+            const fs_triangle cTriangle{toCPosition(triangle.a), toCPosition(triangle.b), toCPosition(triangle.c)};
+            ASSERT_EQ(fs_world_add_triangle(cWorld, &cTriangle, nullptr), static_cast<fs_status>(world.add(triangle)));
+        }
+
+        ProjectileSettings settings;
+        const int method = random.integer(0, 2);
+        const int engine = random.integer(0, 7);
+        settings.method = static_cast<ProjectileMethod>(method);
+        settings.engine = engineProfile(static_cast<PhysicsEngine>(engine));
+        settings.gravity = Vec3(0, -random.uniform(1, 20), 0);
+        settings.step = random.chance(0.5) ? 0.02f : random.uniform(0.005f, 0.05f);
+        settings.restitution = random.uniform(0, 1);
+        settings.friction = random.chance(0.5) ? 0.0f : random.uniform(0, 1);
+        settings.radius = random.chance(0.5) ? 0.0f : random.uniform(0, 0.3f);
+        settings.maxBounces = random.chance(0.3) ? static_cast<std::uint32_t>(random.integer(0, 3)) : kUnlimitedBounces;
+        fs_projectile_settings cSettings = fs_projectile_settings_default();
+        cSettings.method = method;
+        cSettings.engine = engine;
+        cSettings.gravity = toC(settings.gravity);
+        cSettings.step = settings.step;
+        cSettings.restitution = settings.restitution;
+        cSettings.friction = settings.friction;
+        cSettings.radius = settings.radius;
+        cSettings.max_bounces = settings.maxBounces;
+
+        const RVec3 position(random.uniform(-3, 3), random.uniform(0.5f, 6), random.uniform(-3, 3));
+        const Vec3 velocity = random.vec(15.0f);
+        const float time = random.time(4.0f);
+        // Now and then a buffer too small for the whole trajectory.
+        const std::size_t capacity = random.chance(0.2) ? static_cast<std::size_t>(random.integer(0, 20)) : 4096;
+        const bool withWorld = random.chance(0.9);
+
+        ProjectileResult cpp;
+        fs_projectile_result c{};
+        const Status s = predictProjectile(position, velocity, time, settings, withWorld ? &world : nullptr,
+                                           std::span(cppPoints.data(), capacity), cpp);
+        const fs_status cs = fs_predict_projectile(toCPosition(position), toC(velocity), time, &cSettings,
+                                                   withWorld ? cWorld : nullptr, cPoints.data(), capacity, &c);
+        if (s == Status::Ok && capacity > 0 && cpp.trajectoryNeeded > cpp.trajectorySize)
+            ASSERT_EQ(cs, FS_STATUS_BUFFER_TOO_SMALL) << i;
+        else
+            ASSERT_EQ(cs, static_cast<fs_status>(s)) << i;
+        if (s == Status::Ok) {
+            EXPECT_TRUE(samePosition(c.position, cpp.position)) << i;
+            EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i;
+            EXPECT_TRUE(same(c.time, cpp.time)) << i;
+            EXPECT_EQ(c.bounces, cpp.bounces) << i;
+            EXPECT_EQ(c.at_rest, cpp.atRest ? 1 : 0) << i;
+            EXPECT_EQ(c.stopped_at_hit, cpp.stoppedAtHit ? 1 : 0) << i;
+            EXPECT_TRUE(same(c.hit_normal, cpp.hitNormal)) << i;
+            ASSERT_EQ(c.trajectory_size, cpp.trajectorySize) << i;
+            EXPECT_EQ(c.trajectory_needed, cpp.trajectoryNeeded) << i;
+            for (std::size_t k = 0; k < cpp.trajectorySize; ++k) {
+                const fs_trajectory_point& a = cPoints[k];
+                const TrajectoryPoint& b = cppPoints[k];
+                EXPECT_TRUE(same(a.time, b.time)) << i << " point " << k;
+                EXPECT_EQ(a.event, static_cast<int>(b.event)) << i << " point " << k;
+                EXPECT_TRUE(samePosition(a.position, b.position)) << i << " point " << k;
+                EXPECT_TRUE(same(a.velocity, b.velocity)) << i << " point " << k;
+                EXPECT_TRUE(same(a.normal, b.normal)) << i << " point " << k;
+            }
+        }
+        EXPECT_EQ(fs_trajectory_capacity(time, &cSettings),
+                  validateProjectileSettings(settings) == Status::Ok && time >= 0.0f
+                      ? trajectoryCapacity(time, settings)
+                      : std::size_t{0})
+            << i;
+        fs_world_destroy(cWorld);
+    }
+}
+
+TEST(CApi, AimMatchesCpp) {
+    Random random(14);
+    const AimShot d;
+    const fs_aim_shot cd = fs_aim_shot_default();
+    EXPECT_TRUE(samePosition(cd.from, d.from));
+    EXPECT_EQ(cd.constraint, static_cast<int>(d.constraint));
+    EXPECT_TRUE(same(cd.speed, d.speed) && same(cd.apex_height, d.apexHeight) && same(cd.max_time, d.maxTime));
+    EXPECT_TRUE(same(cd.gravity, d.gravity));
+    for (int i = 0; i < kCases; ++i) {
+        AimShot shot;
+        shot.from = RVec3(random.vec(50.0f));
+        shot.constraint = static_cast<AimConstraint>(random.integer(0, 3));
+        shot.speed = random.uniform(-1, 60);
+        shot.apexHeight = random.uniform(-1, 30);
+        shot.gravity = random.chance(0.2) ? Vec3(0) : Vec3(0, -random.uniform(1, 20), 0);
+        shot.maxTime = random.chance(0.05) ? -1.0f : random.uniform(0, 20);
+        const AimTarget target{RVec3(random.vec(100.0f)), random.vec(20.0f),
+                               random.chance(0.5) ? Vec3(0) : random.vec(5.0f)};
+        const std::size_t capacity = static_cast<std::size_t>(random.integer(0, 4));
+
+        std::array<FiringSolution, kMaxFiringSolutions> cpp;
+        std::size_t cppCount = 0;
+        const Status s = aimProjectile(shot, target, std::span(cpp.data(), capacity), cppCount);
+
+        const fs_aim_shot cShot{toCPosition(shot.from),
+                                static_cast<std::int32_t>(shot.constraint),
+                                shot.speed,
+                                shot.apexHeight,
+                                toC(shot.gravity),
+                                shot.maxTime,
+                                0.0f};
+        const fs_aim_target cTarget{toCPosition(target.position), toC(target.velocity), toC(target.acceleration)};
+        std::array<fs_firing_solution, FS_MAX_FIRING_SOLUTIONS> c{};
+        std::size_t cCount = 0;
+        ASSERT_EQ(fs_aim_projectile(&cShot, &cTarget, c.data(), capacity, &cCount), static_cast<fs_status>(s)) << i;
+        if (s != Status::Ok) continue;
+        ASSERT_EQ(cCount, cppCount) << i;
+        for (std::size_t k = 0; k < cCount; ++k) {
+            EXPECT_TRUE(same(c[k].velocity, cpp[k].velocity)) << i;
+            EXPECT_TRUE(same(c[k].time, cpp[k].time)) << i;
+            EXPECT_TRUE(samePosition(c[k].hit, cpp[k].hit)) << i;
+            EXPECT_TRUE(same(c[k].elevation, cpp[k].elevation)) << i;
+        }
+    }
+}
