@@ -1474,17 +1474,29 @@ private:
                 normal = glm::normalize(p - corner);
                 touch = corner + normal * mRadius;
             }
-            // The same corner measured earlier (from where the step started, with another normal)
-            // is the same contact: Box2D keeps one manifold point per corner, its normal from the
-            // corner to the centre where the contact is updated.
+            // Box2D keeps one manifold point per polygon (b2CollidePolygonAndCircle), in a vertex
+            // region with the normal from the corner to the centre where the contact is updated.
+            // The same corner measured earlier (from where the step started, with another normal),
+            // or a face through that corner known from earlier, is that one contact.
             bool merged = false;
-            for (int i = 0; vertex && i < mCount; ++i) {
+            for (int i = 0; vertex && i < mCount;) {
                 Surface& o = mSurfaces[i];
-                // 0.1 mm: both corners come from float casts (rounding of about 1e-6 of the coordinates).
-                if (glm::length(o.touch - o.normal * mRadius - corner) > 1e-4) continue;
+                const DVec3 point = o.touch - o.normal * mRadius;
+                // 0.1 mm: both come from float casts (rounding of about 1e-6 of the coordinates).
+                const bool sameCorner = glm::length(point - corner) <= 1e-4;
+                const bool throughCorner = std::abs(glm::dot(corner - point, o.normal)) <= 1e-4;
+                if (!sameCorner && !throughCorner) {
+                    ++i;
+                    continue;
+                }
+                if (merged) {  // a second surface of the same polygon: gone
+                    o = mSurfaces[--mCount];
+                    continue;
+                }
                 o.normal = normal;
                 o.touch = touch;
                 merged = true;
+                ++i;
             }
             if (!merged && !isKnown(normal, touch, mCount) && mCount < kMaxSurfaces) {
                 Surface& s = mSurfaces[mCount++];
