@@ -43,6 +43,9 @@ constexpr int kSolverIterations = 10;
 constexpr int kPhysXFrictionSkip = 0;
 // Points of one Bullet contact manifold (btPersistentManifold's cache).
 constexpr int kManifoldPoints = 4;
+// Two probes' normals agree when their dot product is above 1 minus this: a float cast's
+// rounding of the normal (the Bullet profiles' closest points).
+constexpr double kNormalSettle = 1e-8;
 // Bullet's warm-starting factor (btContactSolverInfo::m_warmstartingFactor) for normal impulses.
 constexpr double kBulletWarmStart = 0.85;
 
@@ -493,7 +496,7 @@ private:
             DVec3 touch = toD(hit.position) - off - clear;
             if (mProfile.engine == PhysicsEngine::PhysX) nearestOnEdge(normal, touch);
             if (isKnown(normal, touch, kept)) continue;  // two probes found the same surface
-            s.settled = glm::dot(normal, s.normal) > 1.0 - 1e-8;
+            s.settled = glm::dot(normal, s.normal) > 1.0 - kNormalSettle;
             s.normal = normal;
             s.touch = touch;
             s.gap = glm::dot(mPosition - s.touch, s.normal);
@@ -521,11 +524,10 @@ private:
         // Bullet's narrow phase (GJK between the sphere's centre and the box's inner box, the
         // margins added) measures a contact at the closest points where the step starts, as
         // Jolt's does: on a rounded edge the normal there differs from the one a cast meets.
-        // A surface whose probe from the centre found its normal again is measured there already
-        // (1e-8: within a float cast's rounding of the normal).
+        // A surface whose probe from the centre found its normal again is measured there already.
         if (mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet)
             for (int i = 0; i < mCount; ++i)
-                if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, 1e-8);
+                if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);

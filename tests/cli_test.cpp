@@ -1291,6 +1291,18 @@ bool isOnPath(const std::string& program) {
     return false;
 }
 
+// A lob from (0, 1.5, 0) with `velocity` (a JSON array) over a floor towards a wall 7 m ahead,
+// 1.6 m high, whose edges are rounded by `rounding` (a JSON number): the compare --engine tests'
+// scenario.
+std::string lobAtAWall(const std::string& velocity, const std::string& rounding) {
+    return scenarioWith(
+        R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": )" + velocity +
+            R"(, "time": 3, "radius": 0.1, "restitution": 0.5, "friction": 0.3})",
+        R"({"planes": [{"normal": [0, 1, 0], "distance": 0}],
+            "boxes": [{"center": [0.4, 0.6, 7], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": )" +
+            rounding + "}]}");
+}
+
 // Jolt (through Node.js) builds the boxes the scenario describes: its convex radius is the
 // box's rounding, sharp (0) unless given. A lob that meets a sharp wall's top edge ends within
 // 2 cm of Jolt's (built with Jolt's default radius whatever the scenario said, as before, it
@@ -1301,14 +1313,7 @@ TEST_F(cli, CompareEngineBuildsJoltBoxesWithTheirRounding) {
         GTEST_SKIP() << "Node.js or npm jolt-physics is not installed";
     const std::pair<const char*, const char*> cases[] = {{"0", "[1, 5, 7]"}, {"0.05", "[1, 6, 8]"}};
     for (const auto& [rounding, velocity] : cases) {
-        const std::string scenario = scenarioWith(
-            std::string(
-                R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": )") +
-                velocity + R"(, "time": 3, "radius": 0.1, "restitution": 0.5, "friction": 0.3})",
-            std::string(R"({"planes": [{"normal": [0, 1, 0], "distance": 0}],
-                "boxes": [{"center": [0.4, 0.6, 7], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": )") +
-                rounding + "}]}");
-        const fs::path file = write(std::string("jolt-") + rounding + ".json", scenario);
+        const fs::path file = write(std::string("jolt-") + rounding + ".json", lobAtAWall(velocity, rounding));
         const CliRun run = runCli({"compare", file.string(), "--engine", "jolt", "--json", "-"});
         ASSERT_EQ(run.status, 0) << run.err;
         const Json lob = Json::parse(run.out).at("projectiles").at(0);
@@ -1326,13 +1331,7 @@ TEST_F(cli, CompareEngineBuildsBulletBoxesWithTheirRounding) {
 #else
     std::vector<std::array<double, 3>> ends;
     for (const char* rounding : {"0", "0.04"}) {
-        const std::string scenario = scenarioWith(
-            R"({"id": "lob", "model": "projectile", "method": "exact", "position": [0, 1.5, 0], "velocity": [1, 5, 7],
-                "time": 3, "radius": 0.1, "restitution": 0.5, "friction": 0.3})",
-            std::string(R"({"planes": [{"normal": [0, 1, 0], "distance": 0}],
-                "boxes": [{"center": [0.4, 0.6, 7], "half_extents": [3, 1, 0.25], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "rounding": )") +
-                rounding + "}]}");
-        const fs::path file = write(std::string("bullet-") + rounding + ".json", scenario);
+        const fs::path file = write(std::string("bullet-") + rounding + ".json", lobAtAWall("[1, 5, 7]", rounding));
         const CliRun run = runCli({"compare", file.string(), "--engine", "bullet", "--json", "-"});
         ASSERT_EQ(run.status, 0) << run.err;
         const Json lob = Json::parse(run.out).at("projectiles").at(0);
