@@ -20,7 +20,9 @@ fi
 # then libraries, then the HTML viewer's: Node.js and npm to bundle it (only when
 # `node`/`npm` are not already on PATH, e.g. from nodesource) and chromium for its browser tests;
 # then the real engines the engine-matched predictions are tested against: headless Godot 3 and
-# Box2D (Bullet is already among the libraries; the wasm engines come from npm).
+# Box2D (Bullet is already among the libraries; the wasm engines come from npm); then the language
+# bindings' toolchains (bindings/): Debian's Python with pip, venv, pybind11, NumPy and pytest;
+# mono for C#; emscripten for WebAssembly.
 # Keep in sync with CONTRIBUTING.md.
 packages=(
     cmake ninja-build g++ pkg-config
@@ -30,6 +32,8 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     chromium
     godot3-server libbox2d-dev
+    python3 python3-pip python3-venv python3-pybind11 pybind11-dev python3-numpy python3-pytest
+    mono-devel emscripten
 )
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
 if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
