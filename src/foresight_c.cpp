@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <span>
 
 using namespace foresight;
@@ -117,9 +118,18 @@ static_assert(FS_AIM_SPEED == static_cast<int>(AimConstraint::Speed) &&
               FS_AIM_APEX_ABOVE_TARGET == static_cast<int>(AimConstraint::ApexAboveTarget));
 static_assert(FS_MAX_FIRING_SOLUTIONS == kMaxFiringSolutions);
 
-// The handle is the C++ world itself.
+static_assert(sizeof(fs_segment_cast) == 40 && alignof(fs_segment_cast) == 8);
+static_assert(offsetof(fs_segment_cast, displacement) == 24 && offsetof(fs_segment_cast, radius) == 36);
+static_assert(sizeof(fs_cast_hit) == 48 && alignof(fs_cast_hit) == 8);
+static_assert(offsetof(fs_cast_hit, restitution) == 4 && offsetof(fs_cast_hit, position) == 8 &&
+              offsetof(fs_cast_hit, normal) == 32 && offsetof(fs_cast_hit, friction) == 44);
+
+// The handle: a StaticWorld, or (cast != nullptr) a callback world, whose casts go to the
+// caller's function through a CheckedCallbackWorld made for each prediction.
 struct fs_world {
     StaticWorld world;
+    fs_cast_function cast = nullptr;
+    void* context = nullptr;
 };
 
 namespace {
@@ -211,10 +221,63 @@ fs_trajectory_point toC(const TrajectoryPoint& p) {
                                toC(p.normal)};
 }
 
+// A callback world's casts for one prediction: each hit the caller's function returns is checked
+// (a hostile or buggy callback must not make the prediction read NaN or loop on nonsense). The
+// first invalid hit is remembered; from then on every cast misses, so the prediction ends
+// quickly, and the caller returns FS_STATUS_INVALID_CALLBACK_HIT instead of its result.
+class CheckedCallbackWorld final : public CollisionWorld {
+public:
+    CheckedCallbackWorld(fs_cast_function cast, void* context) : mCast(cast), mContext(context) {}
+
+    bool castSegment(const SegmentCast& cast, CastHit& hit) const override {
+        if (mInvalid) return false;
+        const fs_segment_cast c{fs_dvec3{static_cast<double>(cast.origin.x), static_cast<double>(cast.origin.y),
+                                         static_cast<double>(cast.origin.z)},
+                                fs_vec3{cast.displacement.x, cast.displacement.y, cast.displacement.z}, cast.radius};
+        fs_cast_hit h{1.0f, -1.0f,
+                      fs_dvec3{c.origin.x + static_cast<double>(c.displacement.x),
+                               c.origin.y + static_cast<double>(c.displacement.y),
+                               c.origin.z + static_cast<double>(c.displacement.z)},
+                      fs_vec3{0.0f, 1.0f, 0.0f}, -1.0f};
+        if (mCast(mContext, &c, &h) == 0) return false;
+        const double nx = h.normal.x, ny = h.normal.y, nz = h.normal.z;
+        const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
+        const RVec3 position = toCpp(h.position);  // beyond float's range: infinite, refused below
+        const bool valid = std::isfinite(h.fraction) && h.fraction >= 0.0f && h.fraction <= 1.0f &&
+                           std::isfinite(position.x) && std::isfinite(position.y) && std::isfinite(position.z) &&
+                           std::isfinite(length) && length > 0.0 && !std::isnan(h.restitution) &&
+                           h.restitution <= 1.0f && !std::isnan(h.friction);
+        if (!valid) {
+            mInvalid = true;
+            return false;
+        }
+        hit.fraction = h.fraction;
+        hit.position = position;
+        // A unit normal (to float rounding) is kept as it is, so that a callback forwarding to a
+        // foresight world gives that world's results bit for bit.
+        hit.normal = std::abs(length - 1.0) <= 1e-6
+                         ? Vec3(h.normal.x, h.normal.y, h.normal.z)
+                         : Vec3(static_cast<float>(nx / length), static_cast<float>(ny / length),
+                                static_cast<float>(nz / length));
+        hit.restitution = h.restitution < 0.0f ? -1.0f : h.restitution;
+        hit.friction = h.friction < 0.0f ? -1.0f : h.friction;
+        return true;
+    }
+
+    /// Whether a cast returned an invalid hit.
+    bool invalid() const { return mInvalid; }
+
+private:
+    fs_cast_function mCast;
+    void* mContext;
+    mutable bool mInvalid = false;
+};
+
 // Adds a shape; a failed allocation empties the world (StaticWorld may have grown one of its
 // two vectors and not the other) and is reported.
 template <class Shape>
 fs_status addShape(fs_world* world, const Shape& shape, const fs_material* material) noexcept {
+    if (world->cast != nullptr) return FS_STATUS_INVALID_SETTING;  // a callback world holds no shapes
     try {
         return toC(world->world.add(shape, toCpp(material)));
     } catch (...) {
@@ -237,6 +300,9 @@ const char* fs_status_message(fs_status status) noexcept {
             return "a required pointer is NULL";
         case FS_STATUS_OUT_OF_MEMORY:
             return "out of memory";
+        case FS_STATUS_INVALID_CALLBACK_HIT:
+            return "the world's cast callback returned an invalid hit (fraction outside 0..1, a non-finite position, "
+                   "a zero or non-finite normal, or an invalid material)";
         default:
             break;
     }
@@ -289,6 +355,15 @@ fs_status fs_predict_vehicle_exact(const fs_vehicle_state* start, float time, co
 }
 
 fs_world* fs_world_create(void) noexcept { return new (std::nothrow) fs_world; }
+
+fs_world* fs_world_create_callback(fs_cast_function cast, void* context) noexcept {
+    if (cast == nullptr) return nullptr;
+    fs_world* world = new (std::nothrow) fs_world;
+    if (world == nullptr) return nullptr;
+    world->cast = cast;
+    world->context = context;
+    return world;
+}
 
 void fs_world_destroy(fs_world* world) noexcept { delete world; }
 
@@ -352,7 +427,13 @@ fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
     // No allocation.
     static_assert(sizeof(TrajectoryPoint) <= sizeof(fs_trajectory_point));
     static_assert(alignof(TrajectoryPoint) <= alignof(fs_trajectory_point));
-    const CollisionWorld* cppWorld = world != nullptr ? &world->world : nullptr;
+    std::optional<CheckedCallbackWorld> callbackWorld;
+    const CollisionWorld* cppWorld = nullptr;
+    if (world != nullptr && world->cast != nullptr) {
+        cppWorld = &callbackWorld.emplace(world->cast, world->context);
+    } else if (world != nullptr) {
+        cppWorld = &world->world;
+    }
     std::span<TrajectoryPoint> trajectory;
     if (capacity > 0) {
         auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
@@ -362,6 +443,7 @@ fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
     ProjectileResult result;
     const Status s =
         predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
+    if (callbackWorld && callbackWorld->invalid()) return FS_STATUS_INVALID_CALLBACK_HIT;
     if (s != Status::Ok) return toC(s);
     for (std::size_t i = result.trajectorySize; i-- > 0;) {
         const fs_trajectory_point p = toC(trajectory[i]);

@@ -256,6 +256,42 @@ TEST(CApi, ProjectilesMatchCpp) {
                 EXPECT_TRUE(same(a.normal, b.normal)) << i << " point " << k;
             }
         }
+        // A callback world forwarding to the same StaticWorld's casts, against the C++
+        // CallbackWorld doing the same: the casts cross the boundary (double positions, hits
+        // checked) and must come back unchanged.
+        if (withWorld && capacity == 4096 && i % 4 == 0) {
+            const auto forward = [](void* context, const fs_segment_cast* cast, fs_cast_hit* hit) -> int32_t {
+                const auto* target = static_cast<const StaticWorld*>(context);
+                SegmentCast cppCast;
+                cppCast.origin = RVec3(static_cast<Real>(cast->origin.x), static_cast<Real>(cast->origin.y),
+                                       static_cast<Real>(cast->origin.z));
+                cppCast.displacement = Vec3(cast->displacement.x, cast->displacement.y, cast->displacement.z);
+                cppCast.radius = cast->radius;
+                CastHit cppHit;
+                if (!target->castSegment(cppCast, cppHit)) return 0;
+                hit->fraction = cppHit.fraction;
+                hit->position = toCPosition(cppHit.position);
+                hit->normal = toC(cppHit.normal);
+                hit->restitution = cppHit.restitution;
+                hit->friction = cppHit.friction;
+                return 1;
+            };
+            auto cppForward = [&world](const SegmentCast& cast, CastHit& hit) { return world.castSegment(cast, hit); };
+            const CallbackWorld cppCallback = CallbackWorld::wrap(cppForward);
+            fs_world* cCallback = fs_world_create_callback(forward, &world);
+            ASSERT_NE(cCallback, nullptr);
+            const Status sb = predictProjectile(position, velocity, time, settings, &cppCallback, cppPoints, cpp);
+            const fs_status cb = fs_predict_projectile(toCPosition(position), toC(velocity), time, &cSettings,
+                                                       cCallback, cPoints.data(), cPoints.size(), &c);
+            fs_world_destroy(cCallback);
+            ASSERT_EQ(cb, static_cast<fs_status>(sb)) << i << " (callback world)";
+            if (sb == Status::Ok) {
+                EXPECT_TRUE(samePosition(c.position, cpp.position)) << i << " (callback world)";
+                EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i << " (callback world)";
+                EXPECT_EQ(c.bounces, cpp.bounces) << i << " (callback world)";
+                EXPECT_EQ(c.trajectory_size, cpp.trajectorySize) << i << " (callback world)";
+            }
+        }
         EXPECT_EQ(fs_trajectory_capacity(time, &cSettings),
                   validateProjectileSettings(settings) == Status::Ok && time >= 0.0f
                       ? trajectoryCapacity(time, settings)

@@ -78,14 +78,14 @@ static void test_version_and_statuses(void) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
-    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_OUT_OF_MEMORY; ++s) {
+    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_INVALID_CALLBACK_HIT; ++s) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
     CHECK(strcmp(fs_status_message(-1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(FS_STATUS_OUT_OF_RANGE + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(999), "unknown status") == 0);
-    CHECK(strcmp(fs_status_message(FS_STATUS_OUT_OF_MEMORY + 1), "unknown status") == 0);
+    CHECK(strcmp(fs_status_message(FS_STATUS_INVALID_CALLBACK_HIT + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MIN), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MAX), "unknown status") == 0);
 }
@@ -512,6 +512,124 @@ static void test_projectile_floor(void) {
     fs_world_destroy(world);
 }
 
+/* ---- Callback worlds ------------------------------------------------------------------------ */
+
+/* What a callback does to its hits, to test the library's checks. */
+enum {
+    kHitGood,
+    kHitLongNormal,
+    kHitNanFraction,
+    kHitFractionAbove1,
+    kHitZeroNormal,
+    kHitNanPosition,
+    kHitRestitution2
+};
+
+typedef struct floor_context {
+    int calls;
+    int mode; /* kHit* */
+} floor_context;
+
+/* A game's own cast: the floor y = 0, for a point or a swept sphere. */
+static int32_t cast_floor(void* context, const fs_segment_cast* cast, fs_cast_hit* hit) {
+    floor_context* floor_ctx = (floor_context*)context;
+    const double start = cast->origin.y - cast->radius; /* the sphere's lowest point */
+    const double dy = cast->displacement.y;
+    double fraction;
+    ++floor_ctx->calls;
+    if (dy >= 0.0 || start < -1e-4) return 0; /* moving up, or already below */
+    fraction = start <= 0.0 ? 0.0 : start / -dy;
+    if (fraction > 1.0) return 0;
+    hit->fraction = (float)fraction;
+    hit->position.x = cast->origin.x + fraction * cast->displacement.x;
+    hit->position.y = cast->origin.y + fraction * cast->displacement.y;
+    hit->position.z = cast->origin.z + fraction * cast->displacement.z;
+    hit->normal = vec3(0.0f, 1.0f, 0.0f);
+    switch (floor_ctx->mode) {
+        case kHitLongNormal:
+            hit->normal = vec3(0.0f, 3.0f, 0.0f);
+            break; /* normalised by the library */
+        case kHitNanFraction:
+            hit->fraction = NAN;
+            break;
+        case kHitFractionAbove1:
+            hit->fraction = 1.5f;
+            break;
+        case kHitZeroNormal:
+            hit->normal = vec3(0.0f, 0.0f, 0.0f);
+            break;
+        case kHitNanPosition:
+            hit->position.y = NAN;
+            break;
+        case kHitRestitution2:
+            hit->restitution = 2.0f;
+            break;
+        default:
+            break;
+    }
+    return 1;
+}
+
+static void test_callback_world(void) {
+    floor_context floor_ctx = {0, kHitGood};
+    fs_world* world = fs_world_create_callback(cast_floor, &floor_ctx);
+    const fs_plane plane = floor_plane();
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result, first;
+    const double y0 = 2.0, vx = 3.0, vy = 5.0;
+    const double root = impact_time(y0, vy, 0.0);
+    int mode;
+    CHECK(fs_world_create_callback(NULL, &floor_ctx) == NULL);
+    CHECK(world != NULL);
+    if (world == NULL) return;
+    /* It holds no shapes. */
+    CHECK_STATUS(fs_world_add_plane(world, &plane, NULL), FS_STATUS_INVALID_SETTING);
+
+    /* The first impact, where the parabola meets y = 0, found through the caller's cast. */
+    settings.max_bounces = 0;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 5.0f, &settings, world,
+                                       points, 512, &result),
+                 FS_STATUS_OK);
+    CHECK(floor_ctx.calls > 0);
+    CHECK(result.stopped_at_hit == 1);
+    CHECK_NEAR(result.time, root, kTol);
+    CHECK_NEAR(result.position.x, vx * root, kTol);
+    CHECK_NEAR(result.position.y, 0.0, kTol);
+    CHECK(result.hit_normal.y == 1.0f);
+
+    /* Bouncing with a 5 cm sphere, every method; a normal of length 3 means the same surface. */
+    settings.max_bounces = UINT32_MAX;
+    settings.radius = 0.05f;
+    for (settings.method = FS_METHOD_EXACT; settings.method <= FS_METHOD_ENGINE; ++settings.method) {
+        floor_ctx.mode = kHitGood;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &first),
+                     FS_STATUS_OK);
+        CHECK(first.bounces >= 1);
+        CHECK(first.position.y >= 0.05 - 1e-3); /* the sphere stays on the floor */
+        floor_ctx.mode = kHitLongNormal;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &result),
+                     FS_STATUS_OK);
+        CHECK(result.position.x == first.position.x && result.position.y == first.position.y);
+        CHECK(result.bounces == first.bounces);
+    }
+
+    /* Invalid hits end the prediction with INVALID_CALLBACK_HIT and leave the result alone. */
+    settings.method = FS_METHOD_EXACT;
+    for (mode = kHitNanFraction; mode <= kHitRestitution2; ++mode) {
+        floor_ctx.mode = mode;
+        result.bounces = 12345u;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &result),
+                     FS_STATUS_INVALID_CALLBACK_HIT);
+        CHECK(result.bounces == 12345u);
+    }
+    CHECK(strlen(fs_status_message(FS_STATUS_INVALID_CALLBACK_HIT)) > 10);
+    fs_world_destroy(world);
+}
+
 /* Dropped from y = 5 onto a sphere, a box and a triangle whose tops are at y = 1. */
 static void test_projectile_shapes(void) {
     fs_projectile_settings settings = fs_projectile_settings_default();
@@ -801,6 +919,7 @@ int main(void) {
     test_projectile_shapes();
     test_projectile_buffers_and_refusals();
     test_projectile_event_cap();
+    test_callback_world();
     test_aim();
     if (failures != 0) {
         fprintf(stderr, "c_api_test: %d check(s) failed\n", failures);

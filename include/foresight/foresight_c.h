@@ -101,6 +101,11 @@ enum {
     FS_STATUS_NULL_POINTER = 1001,
     /// C API only: memory ran out while adding a shape; the world is then emptied (as if new).
     FS_STATUS_OUT_OF_MEMORY = 1002,
+    /// C API only: a callback world's cast function (fs_world_create_callback) returned a hit
+    /// that is not one: a fraction outside [0, 1] or not finite, a position that is not finite,
+    /// a normal that is zero or not finite, a restitution above 1 or NaN, or a NaN friction.
+    /// The prediction is abandoned: nothing is written.
+    FS_STATUS_INVALID_CALLBACK_HIT = 1003,
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never NULL: values that
@@ -254,7 +259,8 @@ FS_API void fs_world_destroy(fs_world* world) FS_NOEXCEPT;
 /// Adds a plane after checking it as the C++ StaticWorld does; nothing is added unless OK.
 /// @param material  the surface's material, or NULL for none.
 /// @return OK, NULL_POINTER (world, plane), NON_FINITE_INPUT (also a material's NaN),
-///         ZERO_VECTOR, INVALID_RESTITUTION (material above 1) or OUT_OF_MEMORY.
+///         ZERO_VECTOR, INVALID_RESTITUTION (material above 1), INVALID_SETTING (a callback
+///         world, which holds no shapes) or OUT_OF_MEMORY.
 FS_API fs_status fs_world_add_plane(fs_world* world, const fs_plane* plane, const fs_material* material) FS_NOEXCEPT;
 
 /// Adds a sphere (see fs_world_add_plane).
@@ -272,6 +278,46 @@ FS_API fs_status fs_world_add_box(fs_world* world, const fs_box* box, const fs_m
 ///         OUT_OF_MEMORY.
 FS_API fs_status fs_world_add_triangle(fs_world* world, const fs_triangle* triangle,
                                        const fs_material* material) FS_NOEXCEPT;
+
+/// A cast that a callback world answers: a segment, or a sphere swept along it, from `origin`
+/// to `origin + displacement`. 40 bytes, alignment 8: origin at 0, displacement at 24, radius
+/// at 36.
+typedef struct fs_segment_cast {
+    fs_dvec3 origin;       ///< start, the sphere's centre [Units: m].
+    fs_vec3 displacement;  ///< end minus start [Units: m]; never zero-length in a call.
+    float radius;          ///< swept sphere radius [Units: m]; 0 casts a point (a ray).
+} fs_segment_cast;
+
+/// The first hit of an fs_segment_cast, filled by a callback world's function. Before the call
+/// it holds: fraction 1, position the segment's end, normal {0, 1, 0}, restitution and friction
+/// -1 (the surface has no material of its own); a function that has no material leaves them.
+/// 48 bytes, alignment 8: fraction at 0, restitution at 4, position at 8, normal at 32,
+/// friction at 44.
+typedef struct fs_cast_hit {
+    float fraction;     ///< where along the segment [Limit: 0 .. 1]: origin + fraction * displacement.
+    float restitution;  ///< the surface's own restitution [Limit: 0 .. 1, or negative: none].
+    fs_dvec3 position;  ///< the sphere's centre (the ray's point) at the hit [Units: m] [Limit: finite].
+    fs_vec3 normal;     ///< surface normal facing against the motion [Limit: non-zero, finite];
+                        ///< normalised by the library.
+    float friction;     ///< the surface's own friction coefficient [Limit: >= 0, or negative: none].
+} fs_cast_hit;
+
+/// A game's own ray or sphere cast, e.g. its physics engine's (Unity's Physics.SphereCast,
+/// Godot's PhysicsDirectSpaceState, PhysX, Jolt). Return non-zero and fill `hit` on a hit, zero
+/// when the cast hits nothing. The rules (world.h, CollisionWorld): report the closest surface
+/// the segment enters (moving against its normal); a segment that starts on a surface and moves
+/// into it hits at fraction 0; a segment that starts deep inside a solid, or moves away from a
+/// surface, does not hit it. It is called on the thread that predicts, many times per
+/// prediction (about one call per step), and must not throw, longjmp or unwind across the call.
+typedef int32_t (*fs_cast_function)(void* context, const fs_segment_cast* cast, fs_cast_hit* hit);
+
+/// A world whose casts are answered by `cast(context, ...)` (foresight::CallbackWorld): how a
+/// game lets its own physics engine answer. Nothing is copied: `context` must stay valid while
+/// the world is used. Shapes cannot be added to it (fs_world_add_* return INVALID_SETTING).
+/// Every hit is checked: a prediction that receives an invalid one returns
+/// FS_STATUS_INVALID_CALLBACK_HIT. Free it with fs_world_destroy.
+/// @return the world; NULL when `cast` is NULL or memory runs out.
+FS_API fs_world* fs_world_create_callback(fs_cast_function cast, void* context) FS_NOEXCEPT;
 
 /* ---- Projectiles ------------------------------------------------------------------------ */
 
@@ -374,7 +420,8 @@ FS_API size_t fs_trajectory_capacity(float time, const fs_projectile_settings* s
 ///         NULL_POINTER (settings, out, or points with capacity > 0); INVALID_SETTING (method,
 ///         engine); NON_FINITE_INPUT, INVALID_STEP, INVALID_RESTITUTION, INVALID_FRICTION,
 ///         INVALID_RADIUS, NEGATIVE_TIME, OUT_OF_RANGE, TOO_MANY_STEPS, TOO_MANY_EVENTS or
-///         NON_FINITE_RESULT (`out` untouched; the buffer's contents are then unspecified).
+///         NON_FINITE_RESULT, or INVALID_CALLBACK_HIT (a callback world's function returned an
+///         invalid hit) (`out` untouched; the buffer's contents are then unspecified).
 FS_API fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
                                        const fs_projectile_settings* settings, const fs_world* world,
                                        fs_trajectory_point* points, size_t capacity,
