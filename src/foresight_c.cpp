@@ -4,9 +4,11 @@
 
 #include <foresight/aim.h>
 #include <foresight/character.h>
+#include <foresight/danger.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
+#include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <new>
 #include <optional>
 #include <span>
+#include <vector>
 
 using namespace foresight;
 
@@ -70,6 +73,46 @@ static_assert(offsetof(fs_aim_target, velocity) == 24 && offsetof(fs_aim_target,
 static_assert(sizeof(fs_firing_solution) == 48 && alignof(fs_firing_solution) == 8);
 static_assert(offsetof(fs_firing_solution, time) == 12 && offsetof(fs_firing_solution, hit) == 16 &&
               offsetof(fs_firing_solution, elevation) == 40 && offsetof(fs_firing_solution, reserved) == 44);
+
+static_assert(sizeof(fs_projectile_danger) == 12 && offsetof(fs_projectile_danger, contact_radius) == 8);
+static_assert(sizeof(fs_danger_zone) == 32 && alignof(fs_danger_zone) == 8);
+static_assert(offsetof(fs_danger_zone, radius) == 24 && offsetof(fs_danger_zone, time) == 28);
+static_assert(sizeof(fs_danger_start) == 8 && offsetof(fs_danger_start, time) == 4);
+static_assert(sizeof(fs_closest_approach) == 8 && offsetof(fs_closest_approach, time) == 4);
+static_assert(sizeof(fs_vehicle_body) == 104 && alignof(fs_vehicle_body) == 8);
+static_assert(offsetof(fs_vehicle_body, settings) == 64 && offsetof(fs_vehicle_body, half_extents) == 80 &&
+              offsetof(fs_vehicle_body, box_center) == 92);
+static_assert(sizeof(fs_character_body) == 64 && alignof(fs_character_body) == 8);
+static_assert(offsetof(fs_character_body, velocity) == 24 && offsetof(fs_character_body, acceleration) == 36 &&
+              offsetof(fs_character_body, radius) == 48 && offsetof(fs_character_body, half_axis) == 52);
+static_assert(sizeof(fs_approach_settings) == 8 && offsetof(fs_approach_settings, max_evaluations) == 4);
+static_assert(sizeof(fs_vehicle_contact) == 16 && offsetof(fs_vehicle_contact, time) == 4 &&
+              offsetof(fs_vehicle_contact, separation) == 8 && offsetof(fs_vehicle_contact, evaluations) == 12);
+static_assert(sizeof(fs_throw_plan_budget) == 56 && alignof(fs_throw_plan_budget) == 8);
+static_assert(offsetof(fs_throw_plan_budget, elevation_samples) == 4 &&
+              offsetof(fs_throw_plan_budget, speed_samples) == 8 && offsetof(fs_throw_plan_budget, refinements) == 12 &&
+              offsetof(fs_throw_plan_budget, refinement_predictions) == 16 &&
+              offsetof(fs_throw_plan_budget, max_predictions) == 20 &&
+              offsetof(fs_throw_plan_budget, max_total_steps) == 24 &&
+              offsetof(fs_throw_plan_budget, grid_step) == 32 &&
+              offsetof(fs_throw_plan_budget, seed_landing_fractions) == 36);
+static_assert(sizeof(fs_throw_plan_request) == 176 && alignof(fs_throw_plan_request) == 8);
+static_assert(offsetof(fs_throw_plan_request, target) == 24 &&
+              offsetof(fs_throw_plan_request, acceptance_radius) == 48 &&
+              offsetof(fs_throw_plan_request, fuse_time) == 52 && offsetof(fs_throw_plan_request, max_speed) == 56 &&
+              offsetof(fs_throw_plan_request, min_speed) == 60 && offsetof(fs_throw_plan_request, settings) == 64 &&
+              offsetof(fs_throw_plan_request, max_plans) == 112 &&
+              offsetof(fs_throw_plan_request, distinct_angle) == 116 && offsetof(fs_throw_plan_request, budget) == 120);
+static_assert(sizeof(fs_throw_plan) == 88 && alignof(fs_throw_plan) == 8);
+static_assert(offsetof(fs_throw_plan, distance) == 12 && offsetof(fs_throw_plan, final_position) == 16 &&
+              offsetof(fs_throw_plan, bounces) == 40 && offsetof(fs_throw_plan, at_rest) == 44 &&
+              offsetof(fs_throw_plan, first_impact_time) == 48 && offsetof(fs_throw_plan, first_impact_normal) == 52 &&
+              offsetof(fs_throw_plan, first_impact_position) == 64);
+static_assert(sizeof(fs_throw_plan_result) == 32 && alignof(fs_throw_plan_result) == 8);
+static_assert(offsetof(fs_throw_plan_result, predictions) == 8 &&
+              offsetof(fs_throw_plan_result, closest_distance) == 12 &&
+              offsetof(fs_throw_plan_result, closest_velocity) == 16 && offsetof(fs_throw_plan_result, reserved) == 28);
+static_assert(std::tuple_size_v<decltype(ThrowPlanBudget::seedLandingFractions)> == 5);
 
 // ---- The enumerations mirror the C++ ones value for value. ----------------------------------
 static_assert(FS_STATUS_OK == static_cast<int>(Status::Ok));
@@ -286,6 +329,101 @@ fs_status addShape(fs_world* world, const Shape& shape, const fs_material* mater
     }
 }
 
+// A world handle as the C++ world a prediction uses: a StaticWorld, or a checked callback world
+// made in `callback` for this call; nullptr for no world.
+const CollisionWorld* worldFor(const fs_world* world, std::optional<CheckedCallbackWorld>& callback) {
+    if (world == nullptr) return nullptr;
+    if (world->cast != nullptr) return &callback.emplace(world->cast, world->context);
+    return &world->world;
+}
+
+// The calling thread's trajectory in C++ layout (see "Danger" in foresight_c.h): it keeps the
+// largest size it was given.
+thread_local std::vector<TrajectoryPoint> tTrajectory;
+
+// Converts a C trajectory into tTrajectory; OK, NULL_POINTER, INVALID_SETTING (an event) or
+// OUT_OF_MEMORY. An empty trajectory converts to an empty span (which the C++ refuses).
+fs_status toCpp(const fs_trajectory_point* points, size_t count, std::span<const TrajectoryPoint>& out) noexcept {
+    if (points == nullptr && count > 0) return FS_STATUS_NULL_POINTER;
+    try {
+        if (tTrajectory.size() < count) tTrajectory.resize(count);
+    } catch (...) {
+        return FS_STATUS_OUT_OF_MEMORY;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const fs_trajectory_point& p = points[i];
+        if (p.event < FS_EVENT_START || p.event > FS_EVENT_END) return FS_STATUS_INVALID_SETTING;
+        TrajectoryPoint& q = tTrajectory[i];
+        q.time = p.time;
+        q.event = static_cast<TrajectoryEvent>(p.event);
+        q.position = toCpp(p.position);
+        q.velocity = toCpp(p.velocity);
+        q.normal = toCpp(p.normal);
+    }
+    out = std::span<const TrajectoryPoint>(tTrajectory.data(), count);
+    return FS_STATUS_OK;
+}
+
+ProjectileDanger toCpp(std::span<const TrajectoryPoint> trajectory, const fs_projectile_danger& d) {
+    ProjectileDanger r;
+    r.trajectory = trajectory;
+    r.fuseTime = d.fuse_time;
+    r.blastRadius = d.blast_radius;
+    r.contactRadius = d.contact_radius;
+    return r;
+}
+
+// False for a frame outside the enumeration.
+bool toCpp(const fs_vehicle_body& b, VehicleBody& out) {
+    out.state = toCpp(b.state);
+    if (!toCpp(b.settings, out.settings)) return false;
+    out.halfExtents = toCpp(b.half_extents);
+    out.boxCenter = toCpp(b.box_center);
+    return true;
+}
+
+CharacterBody toCpp(const fs_character_body& c) {
+    CharacterBody r;
+    r.position = toCpp(c.position);
+    r.velocity = toCpp(c.velocity);
+    r.acceleration = toCpp(c.acceleration);
+    r.radius = c.radius;
+    r.halfAxis = toCpp(c.half_axis);
+    return r;
+}
+
+ApproachSettings toCpp(const fs_approach_settings& s) {
+    ApproachSettings r;
+    r.tolerance = s.tolerance;
+    r.maxEvaluations = s.max_evaluations;
+    return r;
+}
+
+// False for an enumeration outside its values.
+bool toCpp(const fs_throw_plan_request& q, ThrowPlanRequest& out) {
+    out.start = toCpp(q.start);
+    out.target = toCpp(q.target);
+    out.acceptanceRadius = q.acceptance_radius;
+    out.fuseTime = q.fuse_time;
+    out.maxSpeed = q.max_speed;
+    out.minSpeed = q.min_speed;
+    if (!toCpp(q.settings, out.settings)) return false;
+    out.maxPlans = q.max_plans;
+    out.distinctAngle = q.distinct_angle;
+    const fs_throw_plan_budget& b = q.budget;
+    out.budget.azimuthSamples = b.azimuth_samples;
+    out.budget.elevationSamples = b.elevation_samples;
+    out.budget.speedSamples = b.speed_samples;
+    out.budget.refinements = b.refinements;
+    out.budget.refinementPredictions = b.refinement_predictions;
+    out.budget.maxPredictions = b.max_predictions;
+    out.budget.maxTotalSteps = b.max_total_steps;
+    out.budget.gridStep = b.grid_step;
+    std::copy(std::begin(b.seed_landing_fractions), std::end(b.seed_landing_fractions),
+              out.budget.seedLandingFractions.begin());
+    return true;
+}
+
 }  // namespace
 
 extern "C" {
@@ -428,12 +566,7 @@ fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
     static_assert(sizeof(TrajectoryPoint) <= sizeof(fs_trajectory_point));
     static_assert(alignof(TrajectoryPoint) <= alignof(fs_trajectory_point));
     std::optional<CheckedCallbackWorld> callbackWorld;
-    const CollisionWorld* cppWorld = nullptr;
-    if (world != nullptr && world->cast != nullptr) {
-        cppWorld = &callbackWorld.emplace(world->cast, world->context);
-    } else if (world != nullptr) {
-        cppWorld = &world->world;
-    }
+    const CollisionWorld* cppWorld = worldFor(world, callbackWorld);
     std::span<TrajectoryPoint> trajectory;
     if (capacity > 0) {
         auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
@@ -500,6 +633,199 @@ fs_status fs_aim_projectile(const fs_aim_shot* shot, const fs_aim_target* target
         solutions[i] = fs_firing_solution{toC(found[i].velocity), found[i].time, toCPosition(found[i].hit),
                                           found[i].elevation, 0.0f};
     *count = n;
+    return FS_STATUS_OK;
+}
+
+fs_status fs_position_on_trajectory(const fs_trajectory_point* trajectory, size_t count, float time,
+                                    fs_dvec3* out) noexcept {
+    if (out == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    RVec3 position;
+    const Status s = positionOnTrajectory(points, time, position);
+    if (s == Status::Ok) *out = toCPosition(position);
+    return toC(s);
+}
+
+fs_status fs_compute_danger_zone(const fs_trajectory_point* trajectory, size_t count,
+                                 const fs_projectile_danger* danger, fs_danger_zone* out) noexcept {
+    if (danger == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    DangerZone zone;
+    const Status s = computeDangerZone(toCpp(points, *danger), zone);
+    if (s == Status::Ok) *out = fs_danger_zone{toCPosition(zone.center), zone.radius, zone.time};
+    return toC(s);
+}
+
+fs_status fs_is_point_safe(const fs_trajectory_point* trajectory, size_t count, const fs_projectile_danger* danger,
+                           fs_dvec3 point, float time, int32_t* safe) noexcept {
+    if (danger == nullptr || safe == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    bool isSafe = false;
+    const Status s = isPointSafe(toCpp(points, *danger), toCpp(point), time, isSafe);
+    if (s == Status::Ok) *safe = isSafe ? 1 : 0;
+    return toC(s);
+}
+
+fs_status fs_find_danger_start(const fs_trajectory_point* trajectory, size_t count, const fs_projectile_danger* danger,
+                               fs_dvec3 point, fs_danger_start* out) noexcept {
+    if (danger == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    DangerStart start;
+    const Status s = findDangerStart(toCpp(points, *danger), toCpp(point), start);
+    if (s == Status::Ok) *out = fs_danger_start{start.ever ? 1 : 0, start.time};
+    return toC(s);
+}
+
+fs_status fs_find_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point, float distance,
+                                float from_time, float until_time, fs_danger_start* out) noexcept {
+    if (out == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    DangerStart start;
+    const Status s = findPathApproach(points, toCpp(point), distance, from_time, until_time, start);
+    if (s == Status::Ok) *out = fs_danger_start{start.ever ? 1 : 0, start.time};
+    return toC(s);
+}
+
+fs_status fs_find_closest_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point,
+                                        float from_time, float until_time, fs_closest_approach* out) noexcept {
+    if (out == nullptr) return FS_STATUS_NULL_POINTER;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    ClosestApproach approach;
+    const Status s = findClosestPathApproach(points, toCpp(point), from_time, until_time, approach);
+    if (s == Status::Ok) *out = fs_closest_approach{approach.distance, approach.time};
+    return toC(s);
+}
+
+fs_vehicle_body fs_vehicle_body_default(void) noexcept {
+    const VehicleBody d;
+    const VehicleSettings& vs = d.settings;
+    return fs_vehicle_body{toC(d.state), fs_vehicle_settings{static_cast<int32_t>(vs.frame), toC(vs.forward)},
+                           toC(d.halfExtents), toC(d.boxCenter)};
+}
+
+fs_character_body fs_character_body_default(void) noexcept {
+    const CharacterBody d;
+    return fs_character_body{toCPosition(d.position), toC(d.velocity), toC(d.acceleration), d.radius, toC(d.halfAxis)};
+}
+
+fs_approach_settings fs_approach_settings_default(void) noexcept {
+    const ApproachSettings d;
+    return fs_approach_settings{d.tolerance, d.maxEvaluations};
+}
+
+fs_status fs_compute_vehicle_separation(const fs_vehicle_body* vehicle, const fs_character_body* character, float time,
+                                        float* separation) noexcept {
+    if (vehicle == nullptr || character == nullptr || separation == nullptr) return FS_STATUS_NULL_POINTER;
+    VehicleBody body;
+    if (!toCpp(*vehicle, body)) return FS_STATUS_INVALID_SETTING;
+    float result = 0.0f;
+    const Status s = computeVehicleSeparation(body, toCpp(*character), time, result);
+    if (s == Status::Ok) *separation = result;
+    return toC(s);
+}
+
+fs_status fs_find_vehicle_contact(const fs_vehicle_body* vehicle, const fs_character_body* character, float horizon,
+                                  const fs_approach_settings* settings, fs_vehicle_contact* out) noexcept {
+    if (vehicle == nullptr || character == nullptr || settings == nullptr || out == nullptr)
+        return FS_STATUS_NULL_POINTER;
+    VehicleBody body;
+    if (!toCpp(*vehicle, body)) return FS_STATUS_INVALID_SETTING;
+    VehicleContact contact;
+    const Status s = findVehicleContact(body, toCpp(*character), horizon, toCpp(*settings), contact);
+    if (s == Status::Ok)
+        *out = fs_vehicle_contact{contact.contact ? 1 : 0, contact.time, contact.separation, contact.evaluations};
+    return toC(s);
+}
+
+fs_status fs_find_closest_vehicle_approach(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                           float horizon, const fs_approach_settings* settings,
+                                           fs_closest_approach* out) noexcept {
+    if (vehicle == nullptr || character == nullptr || settings == nullptr || out == nullptr)
+        return FS_STATUS_NULL_POINTER;
+    VehicleBody body;
+    if (!toCpp(*vehicle, body)) return FS_STATUS_INVALID_SETTING;
+    ClosestApproach approach;
+    const Status s = findClosestVehicleApproach(body, toCpp(*character), horizon, toCpp(*settings), approach);
+    if (s == Status::Ok) *out = fs_closest_approach{approach.distance, approach.time};
+    return toC(s);
+}
+
+fs_throw_plan_request fs_throw_plan_request_default(void) noexcept {
+    const ThrowPlanRequest d;
+    fs_throw_plan_request r;
+    r.start = toCPosition(d.start);
+    r.target = toCPosition(d.target);
+    r.acceptance_radius = d.acceptanceRadius;
+    r.fuse_time = d.fuseTime;
+    r.max_speed = d.maxSpeed;
+    r.min_speed = d.minSpeed;
+    r.settings = fs_projectile_settings_default();
+    r.max_plans = d.maxPlans;
+    r.distinct_angle = d.distinctAngle;
+    const ThrowPlanBudget& b = d.budget;
+    r.budget.azimuth_samples = b.azimuthSamples;
+    r.budget.elevation_samples = b.elevationSamples;
+    r.budget.speed_samples = b.speedSamples;
+    r.budget.refinements = b.refinements;
+    r.budget.refinement_predictions = b.refinementPredictions;
+    r.budget.max_predictions = b.maxPredictions;
+    r.budget.max_total_steps = b.maxTotalSteps;
+    r.budget.grid_step = b.gridStep;
+    std::copy(b.seedLandingFractions.begin(), b.seedLandingFractions.end(),
+              std::begin(r.budget.seed_landing_fractions));
+    return r;
+}
+
+size_t fs_throw_plan_scratch_size(const fs_throw_plan_request* request) noexcept {
+    if (request == nullptr) return 0;
+    ThrowPlanRequest cppRequest;
+    if (!toCpp(*request, cppRequest)) return 0;
+    return throwPlanScratchSize(cppRequest);
+}
+
+fs_status fs_plan_throw(const fs_throw_plan_request* request, const fs_world* world, fs_throw_plan* plans,
+                        size_t capacity, fs_trajectory_point* scratch, size_t scratch_capacity,
+                        fs_throw_plan_result* out) noexcept {
+    if (request == nullptr || out == nullptr || (plans == nullptr && capacity > 0) ||
+        (scratch == nullptr && scratch_capacity > 0))
+        return FS_STATUS_NULL_POINTER;
+    ThrowPlanRequest cppRequest;
+    if (!toCpp(*request, cppRequest)) return FS_STATUS_INVALID_SETTING;
+    // The plans are made in C++ layout on the stack, at most maxPlans of them up to a bound,
+    // then converted. The scratch is the caller's buffer reused as C++ points (it is only
+    // scratch: its contents are unspecified afterwards), as in fs_predict_projectile.
+    constexpr std::size_t kMaxPlansAtOnce = 64;
+    std::array<ThrowPlan, kMaxPlansAtOnce> found;
+    const std::size_t wanted = std::min({capacity, found.size(), static_cast<std::size_t>(cppRequest.maxPlans)});
+    std::span<TrajectoryPoint> cppScratch;
+    if (scratch_capacity > 0) {
+        auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(scratch));
+        std::uninitialized_default_construct_n(first, scratch_capacity);
+        cppScratch = std::span<TrajectoryPoint>(first, scratch_capacity);
+    }
+    std::optional<CheckedCallbackWorld> callbackWorld;
+    const CollisionWorld* cppWorld = worldFor(world, callbackWorld);
+    ThrowPlanResult result;
+    const Status s = planThrow(cppRequest, cppWorld, std::span<ThrowPlan>(found.data(), wanted), cppScratch, result);
+    if (callbackWorld && callbackWorld->invalid()) return FS_STATUS_INVALID_CALLBACK_HIT;
+    if (s != Status::Ok) return toC(s);
+    for (std::size_t i = 0; i < result.planCount; ++i) {
+        const ThrowPlan& p = found[i];
+        plans[i] = fs_throw_plan{
+            toC(p.launchVelocity), p.distance,        toCPosition(p.finalPosition), p.bounces,
+            p.atRest ? 1 : 0,      p.firstImpactTime, toC(p.firstImpactNormal),     toCPosition(p.firstImpactPosition)};
+    }
+    out->plan_count = result.planCount;
+    out->predictions = result.predictions;
+    out->closest_distance = result.closestDistance;
+    out->closest_velocity = toC(result.closestVelocity);
+    out->reserved = 0.0f;
     return FS_STATUS_OK;
 }
 

@@ -4,9 +4,11 @@
 // against closed forms.
 #include <foresight/aim.h>
 #include <foresight/character.h>
+#include <foresight/danger.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
 #include <foresight/static_world.h>
+#include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
 #include <gtest/gtest.h>
 
@@ -345,4 +347,226 @@ TEST(CApi, AimMatchesCpp) {
             EXPECT_TRUE(same(c[k].elevation, cpp[k].elevation)) << i;
         }
     }
+}
+
+TEST(CApi, DangerMatchesCpp) {
+    Random random(29);
+    std::vector<TrajectoryPoint> cppPoints(4096);
+    std::vector<fs_trajectory_point> cPoints(4096);
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    fs_world* cWorld = fs_world_create();
+    ASSERT_NE(cWorld, nullptr);
+    const fs_plane cPlane{{0, 1, 0}, 0.0f, 0.0};
+    ASSERT_EQ(fs_world_add_plane(cWorld, &cPlane, nullptr), FS_STATUS_OK);
+    for (int i = 0; i < kCases; ++i) {
+        // A grenade's trajectory, predicted both ways (ProjectilesMatchCpp checks they agree).
+        ProjectileSettings settings;
+        settings.friction = random.uniform(0, 0.6f);
+        fs_projectile_settings cSettings = fs_projectile_settings_default();
+        cSettings.friction = settings.friction;
+        const RVec3 start(random.uniform(-3, 3), random.uniform(0.5f, 4), random.uniform(-3, 3));
+        const Vec3 velocity = random.vec(12.0f);
+        const float fuse = random.uniform(0.5f, 4.0f);
+        ProjectileResult cpp;
+        fs_projectile_result c{};
+        ASSERT_EQ(predictProjectile(start, velocity, fuse, settings, &world, cppPoints, cpp), Status::Ok);
+        ASSERT_EQ(fs_predict_projectile(toCPosition(start), toC(velocity), fuse, &cSettings, cWorld, cPoints.data(),
+                                        cPoints.size(), &c),
+                  FS_STATUS_OK);
+        const std::span<const TrajectoryPoint> trajectory(cppPoints.data(), cpp.trajectorySize);
+        const std::size_t n = c.trajectory_size;
+
+        ProjectileDanger danger;
+        danger.trajectory = trajectory;
+        danger.fuseTime = random.chance(0.05) ? -1.0f : fuse;
+        danger.blastRadius = random.uniform(0, 6);
+        danger.contactRadius = random.chance(0.5) ? 0.0f : random.uniform(0, 1);
+        const fs_projectile_danger cDanger{danger.fuseTime, danger.blastRadius, danger.contactRadius};
+        const RVec3 point(random.uniform(-10, 10), random.uniform(0, 4), random.uniform(-10, 10));
+        const float time = random.uniform(-0.5f, fuse + 0.5f);
+        const float from = random.uniform(0, fuse), until = random.uniform(0, fuse);
+        const float distance = random.chance(0.05) ? -1.0f : random.uniform(0, 3);
+
+        RVec3 position;
+        fs_dvec3 cPosition;
+        Status st = positionOnTrajectory(trajectory, time, position);
+        ASSERT_EQ(fs_position_on_trajectory(cPoints.data(), n, time, &cPosition), static_cast<fs_status>(st)) << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(samePosition(cPosition, position)) << i;
+        }
+
+        DangerZone zone;
+        fs_danger_zone cZone{};
+        st = computeDangerZone(danger, zone);
+        ASSERT_EQ(fs_compute_danger_zone(cPoints.data(), n, &cDanger, &cZone), static_cast<fs_status>(st)) << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(samePosition(cZone.center, zone.center) && same(cZone.radius, zone.radius) &&
+                        same(cZone.time, zone.time))
+                << i;
+        }
+
+        bool safe = false;
+        int32_t cSafe = -1;
+        st = isPointSafe(danger, point, time, safe);
+        ASSERT_EQ(fs_is_point_safe(cPoints.data(), n, &cDanger, toCPosition(point), time, &cSafe),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_EQ(cSafe, safe ? 1 : 0) << i;
+        }
+
+        DangerStart begin;
+        fs_danger_start cBegin{};
+        st = findDangerStart(danger, point, begin);
+        ASSERT_EQ(fs_find_danger_start(cPoints.data(), n, &cDanger, toCPosition(point), &cBegin),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(cBegin.ever == (begin.ever ? 1 : 0) && same(cBegin.time, begin.time)) << i;
+        }
+
+        st = findPathApproach(trajectory, point, distance, from, until, begin);
+        ASSERT_EQ(fs_find_path_approach(cPoints.data(), n, toCPosition(point), distance, from, until, &cBegin),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(cBegin.ever == (begin.ever ? 1 : 0) && same(cBegin.time, begin.time)) << i;
+        }
+
+        ClosestApproach approach;
+        fs_closest_approach cApproach{};
+        st = findClosestPathApproach(trajectory, point, from, until, approach);
+        ASSERT_EQ(fs_find_closest_path_approach(cPoints.data(), n, toCPosition(point), from, until, &cApproach),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(same(cApproach.distance, approach.distance) && same(cApproach.time, approach.time)) << i;
+        }
+
+        // A vehicle and a character.
+        VehicleBody vehicle;
+        vehicle.state.position = RVec3(random.vec(10.0f));
+        vehicle.state.velocity = random.vec(15.0f);
+        vehicle.state.orientation = quat(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1), 1.0f);
+        vehicle.state.angularVelocity = random.vec(1.0f);
+        vehicle.settings.frame = random.chance(0.5) ? AngularFrame::Body : AngularFrame::World;
+        vehicle.halfExtents = Vec3(random.uniform(0.3f, 2), random.uniform(0.3f, 2), random.uniform(0.3f, 3));
+        vehicle.boxCenter = random.vec(0.5f);
+        CharacterBody character;
+        character.position = RVec3(random.vec(10.0f));
+        character.velocity = random.vec(3.0f);
+        character.acceleration = random.vec(1.0f);
+        character.radius = random.uniform(0, 0.6f);
+        character.halfAxis = random.chance(0.5) ? Vec3(0) : Vec3(0, random.uniform(0, 0.9f), 0);
+        ApproachSettings approachSettings;
+        approachSettings.tolerance = random.chance(0.05) ? 0.0f : random.uniform(1e-3f, 0.05f);
+        const fs_vehicle_body cVehicle{
+            fs_vehicle_state{toCPosition(vehicle.state.position), toC(vehicle.state.velocity),
+                             toC(vehicle.state.orientation), toC(vehicle.state.angularVelocity)},
+            fs_vehicle_settings{static_cast<int32_t>(vehicle.settings.frame), toC(vehicle.settings.forward)},
+            toC(vehicle.halfExtents), toC(vehicle.boxCenter)};
+        const fs_character_body cCharacter{toCPosition(character.position), toC(character.velocity),
+                                           toC(character.acceleration), character.radius, toC(character.halfAxis)};
+        const fs_approach_settings cApproachSettings{approachSettings.tolerance, approachSettings.maxEvaluations};
+        const float horizon = random.time(4.0f);
+
+        float separation = 0.0f, cSeparation = 0.0f;
+        st = computeVehicleSeparation(vehicle, character, horizon, separation);
+        ASSERT_EQ(fs_compute_vehicle_separation(&cVehicle, &cCharacter, horizon, &cSeparation),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(same(cSeparation, separation)) << i;
+        }
+
+        VehicleContact contact;
+        fs_vehicle_contact cContact{};
+        st = findVehicleContact(vehicle, character, horizon, approachSettings, contact);
+        ASSERT_EQ(fs_find_vehicle_contact(&cVehicle, &cCharacter, horizon, &cApproachSettings, &cContact),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(cContact.contact == (contact.contact ? 1 : 0) && same(cContact.time, contact.time) &&
+                        same(cContact.separation, contact.separation) && cContact.evaluations == contact.evaluations)
+                << i;
+        }
+
+        st = findClosestVehicleApproach(vehicle, character, horizon, approachSettings, approach);
+        ASSERT_EQ(fs_find_closest_vehicle_approach(&cVehicle, &cCharacter, horizon, &cApproachSettings, &cApproach),
+                  static_cast<fs_status>(st))
+            << i;
+        if (st == Status::Ok) {
+            EXPECT_TRUE(same(cApproach.distance, approach.distance) && same(cApproach.time, approach.time)) << i;
+        }
+    }
+    fs_world_destroy(cWorld);
+}
+
+TEST(CApi, PlanThrowMatchesCpp) {
+    Random random(31);
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    OrientedBox wall;
+    wall.center = RVec3(0, 1.5f, 6);
+    wall.halfExtents = Vec3(4, 1.5f, 0.25f);
+    ASSERT_EQ(world.add(wall), Status::Ok);
+    fs_world* cWorld = fs_world_create();
+    ASSERT_NE(cWorld, nullptr);
+    const fs_plane cPlane{{0, 1, 0}, 0.0f, 0.0};
+    const fs_box cWall{toCPosition(wall.center), toC(wall.halfExtents), fs_quat{0, 0, 0, 1}, 0.0f};
+    ASSERT_EQ(fs_world_add_plane(cWorld, &cPlane, nullptr), FS_STATUS_OK);
+    ASSERT_EQ(fs_world_add_box(cWorld, &cWall, nullptr), FS_STATUS_OK);
+    std::vector<TrajectoryPoint> scratch(1024);
+    std::vector<fs_trajectory_point> cScratch(1024);
+    std::size_t plansCompared = 0;
+    for (int i = 0; i < 12; ++i) {
+        ThrowPlanRequest request;
+        request.start = RVec3(random.uniform(-3, 3), 1.5f, random.uniform(-3, 3));
+        request.target = RVec3(random.uniform(-8, 8), 0.0f, random.uniform(-8, 12));
+        request.acceptanceRadius = random.chance(0.05) ? -1.0f : random.uniform(0.3f, 1.0f);
+        request.settings.friction = random.uniform(0, 0.6f);
+        request.settings.restitution = random.uniform(0.2f, 0.7f);
+        request.maxPlans = static_cast<std::uint32_t>(random.integer(1, 4));
+        request.budget.maxPredictions = 120;
+        fs_throw_plan_request cRequest = fs_throw_plan_request_default();
+        cRequest.start = toCPosition(request.start);
+        cRequest.target = toCPosition(request.target);
+        cRequest.acceptance_radius = request.acceptanceRadius;
+        cRequest.settings.friction = request.settings.friction;
+        cRequest.settings.restitution = request.settings.restitution;
+        cRequest.max_plans = request.maxPlans;
+        cRequest.budget.max_predictions = request.budget.maxPredictions;
+        EXPECT_EQ(fs_throw_plan_scratch_size(&cRequest), throwPlanScratchSize(request)) << i;
+
+        std::array<ThrowPlan, 4> plans;
+        std::array<fs_throw_plan, 4> cPlans{};
+        ThrowPlanResult result;
+        fs_throw_plan_result cResult{};
+        const Status st = planThrow(request, &world, plans, scratch, result);
+        ASSERT_EQ(
+            fs_plan_throw(&cRequest, cWorld, cPlans.data(), cPlans.size(), cScratch.data(), cScratch.size(), &cResult),
+            static_cast<fs_status>(st))
+            << i;
+        if (st != Status::Ok) continue;
+        ASSERT_EQ(cResult.plan_count, result.planCount) << i;
+        plansCompared += result.planCount;
+        EXPECT_EQ(cResult.predictions, result.predictions) << i;
+        EXPECT_TRUE(same(cResult.closest_distance, result.closestDistance)) << i;
+        EXPECT_TRUE(same(cResult.closest_velocity, result.closestVelocity)) << i;
+        for (std::size_t k = 0; k < result.planCount; ++k) {
+            const ThrowPlan& a = plans[k];
+            const fs_throw_plan& b = cPlans[k];
+            EXPECT_TRUE(same(b.launch_velocity, a.launchVelocity)) << i << " plan " << k;
+            EXPECT_TRUE(samePosition(b.final_position, a.finalPosition)) << i << " plan " << k;
+            EXPECT_TRUE(same(b.distance, a.distance) && b.bounces == a.bounces && b.at_rest == (a.atRest ? 1 : 0))
+                << i << " plan " << k;
+            EXPECT_TRUE(same(b.first_impact_time, a.firstImpactTime) &&
+                        same(b.first_impact_normal, a.firstImpactNormal) &&
+                        samePosition(b.first_impact_position, a.firstImpactPosition))
+                << i << " plan " << k;
+        }
+    }
+    EXPECT_GE(plansCompared, 12u);  // most requests are reachable: plans were compared, not only refusals
+    fs_world_destroy(cWorld);
 }

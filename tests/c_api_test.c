@@ -630,6 +630,192 @@ static void test_callback_world(void) {
     fs_world_destroy(world);
 }
 
+/* ---- Danger --------------------------------------------------------------------------------- */
+
+/* A grenade in free flight from (0, 10, 0) at (3, 0, 0) m/s: on the parabola at every time. */
+static void test_danger_projectile(void) {
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result;
+    fs_projectile_danger danger;
+    fs_danger_zone zone;
+    fs_danger_start start;
+    fs_closest_approach approach;
+    fs_dvec3 at;
+    int32_t safe = -1;
+    const double fuse = 2.0, g = kGravity;
+    size_t n;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, 10.0, 0.0), vec3(3.0f, 0.0f, 0.0f), (float)fuse, &settings, NULL,
+                                       points, 512, &result),
+                 FS_STATUS_OK);
+    n = (size_t)result.trajectory_size;
+    danger.fuse_time = (float)fuse;
+    danger.blast_radius = 4.0f;
+    danger.contact_radius = 0.0f;
+
+    /* Between the points: the parabola itself. */
+    CHECK_STATUS(fs_position_on_trajectory(points, n, 0.7f, &at), FS_STATUS_OK);
+    CHECK_NEAR(at.x, 3.0 * 0.7, kTol);
+    CHECK_NEAR(at.y, 10.0 - 0.5 * g * 0.7 * 0.7, kTol);
+
+    /* The blast: centred where the grenade is at the fuse time. */
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_OK);
+    CHECK_NEAR(zone.center.x, 3.0 * fuse, kTol);
+    CHECK_NEAR(zone.center.y, 10.0 - 0.5 * g * fuse * fuse, kTol);
+    CHECK(zone.radius == 4.0f && zone.time == 2.0f);
+
+    /* 3.9 m from the centre: unsafe from the fuse time on, safe before (no contact radius). */
+    CHECK_STATUS(fs_is_point_safe(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), 2.0f, &safe),
+                 FS_STATUS_OK);
+    CHECK(safe == 0);
+    CHECK_STATUS(fs_is_point_safe(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), 1.9f, &safe),
+                 FS_STATUS_OK);
+    CHECK(safe == 1);
+    CHECK_STATUS(fs_find_danger_start(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 1 && start.time == 2.0f);
+    CHECK_STATUS(fs_find_danger_start(points, n, &danger, dvec3(zone.center.x, zone.center.y + 4.1, 0.0), &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 0);
+
+    /* The path passes through the point where it is at t = 0.5: reached then, not before. */
+    CHECK_STATUS(fs_find_path_approach(points, n, dvec3(1.5, 10.0 - 0.5 * g * 0.25, 0.0), 0.0f, 0.0f, 2.0f, &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 1);
+    CHECK_NEAR(start.time, 0.5, 1e-4); /* a float point on the path: its rounding, over the speed */
+    /* 1 m beside the path (across the plane of flight) at t = 0.7: closest there, 1 m away. */
+    CHECK_STATUS(
+        fs_find_closest_path_approach(points, n, dvec3(2.1, 10.0 - 0.5 * g * 0.49, 1.0), 0.0f, 2.0f, &approach),
+        FS_STATUS_OK);
+    CHECK_NEAR(approach.distance, 1.0, kTol);
+    CHECK_NEAR(approach.time, 0.7, 1e-3); /* the distance is flat (quadratic) at its minimum */
+
+    /* Refusals. */
+    CHECK_STATUS(fs_position_on_trajectory(NULL, 3, 0.5f, &at), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_position_on_trajectory(points, 0, 0.5f, &at), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_compute_danger_zone(points, n, NULL, &zone), FS_STATUS_NULL_POINTER);
+    danger.fuse_time = -1.0f;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_FUSE);
+    danger.fuse_time = (float)fuse;
+    danger.blast_radius = NAN;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_NON_FINITE_INPUT);
+    danger.blast_radius = 4.0f;
+    CHECK_STATUS(fs_find_path_approach(points, n, dvec3(0.0, 0.0, 0.0), -1.0f, 0.0f, 2.0f, &start),
+                 FS_STATUS_INVALID_RADIUS);
+    points[1].event = 99;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_SETTING);
+    points[1].event = FS_EVENT_STEP;
+    points[1].time = -5.0f; /* times must not decrease */
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_STEP);
+}
+
+/* A car (the default 1.8 x 1.4 x 4.4 m box) driving along +Z at 10 m/s, towards characters. */
+static void test_danger_vehicle(void) {
+    fs_vehicle_body car = fs_vehicle_body_default();
+    fs_character_body person = fs_character_body_default();
+    const fs_approach_settings settings = fs_approach_settings_default();
+    fs_approach_settings bad = settings;
+    fs_vehicle_contact contact;
+    fs_closest_approach approach;
+    float separation = 0.0f;
+    CHECK(car.half_extents.x == 0.9f && car.half_extents.y == 0.7f && car.half_extents.z == 2.2f);
+    CHECK(person.radius == 0.4f && settings.tolerance == 1e-3f && settings.max_evaluations == 65536u);
+    car.state.velocity = vec3(0.0f, 0.0f, 10.0f);
+    person.position = dvec3(0.0, 0.0, 20.0);
+
+    /* Gap at t = 0: 20 - 2.2 (the box's front) - 0.4 (the radius). */
+    CHECK_STATUS(fs_compute_vehicle_separation(&car, &person, 0.0f, &separation), FS_STATUS_OK);
+    CHECK_NEAR(separation, 17.4, kTol);
+    /* Contact when the front reaches 19.6: t = 1.74 s, never later, within the tolerance. */
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_OK);
+    CHECK(contact.contact == 1);
+    CHECK(contact.time <= 1.74f + 1e-6f && contact.time >= 1.74f - 1.1e-4f); /* tolerance 1 mm at 10 m/s */
+    CHECK(contact.separation <= 1e-3f && contact.evaluations > 0);
+
+    /* A character 5 m to the side: closest 5 - 0.9 - 0.4 = 3.7 m, first when the box's front
+     * passes it: 10 t + 2.2 = 20, t = 1.78 s. */
+    person.position = dvec3(5.0, 0.0, 20.0);
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_OK);
+    CHECK(contact.contact == 0);
+    CHECK_STATUS(fs_find_closest_vehicle_approach(&car, &person, 5.0f, &settings, &approach), FS_STATUS_OK);
+    CHECK(approach.distance >= 3.7f - 1e-5f && approach.distance <= 3.7f + 1e-3f);
+    /* Not later than 1.78 s, not earlier than when the separation first comes within the 1 mm
+     * tolerance of 3.7: sqrt(4.1^2 + d^2) - 4.1 <= 1e-3 with the front d = 0.0906 m short. */
+    CHECK(approach.time <= 1.78f + 1e-5f && approach.time >= 1.78f - 0.0091f);
+
+    /* Refusals. */
+    CHECK_STATUS(fs_compute_vehicle_separation(&car, &person, -1.0f, &separation), FS_STATUS_NEGATIVE_TIME);
+    CHECK_STATUS(fs_compute_vehicle_separation(NULL, &person, 0.0f, &separation), FS_STATUS_NULL_POINTER);
+    bad.tolerance = 0.0f;
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &bad, &contact), FS_STATUS_INVALID_STEP);
+    car.settings.frame = 7;
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_INVALID_SETTING);
+    car.settings.frame = FS_FRAME_BODY;
+    car.half_extents.y = 0.0f;
+    CHECK_STATUS(fs_find_closest_vehicle_approach(&car, &person, 5.0f, &settings, &approach),
+                 FS_STATUS_DEGENERATE_SHAPE);
+}
+
+/* ---- Throw planning ---------------------------------------------------------------------------- */
+
+static void test_plan_throw(void) {
+    fs_world* world = fs_world_create();
+    const fs_plane plane = floor_plane();
+    fs_throw_plan_request request = fs_throw_plan_request_default();
+    fs_throw_plan plans[4];
+    fs_trajectory_point scratch[1024];
+    fs_trajectory_point points[1024];
+    fs_throw_plan_result result;
+    fs_projectile_result check;
+    size_t i, scratch_size;
+    CHECK(world != NULL);
+    if (world == NULL) return;
+    CHECK_STATUS(fs_world_add_plane(world, &plane, NULL), FS_STATUS_OK);
+    CHECK(request.fuse_time == 3.0f && request.max_speed == 20.0f && request.max_plans == 3u);
+    CHECK(request.budget.max_predictions == 400u && request.budget.seed_landing_fractions[4] == 1.0f);
+    request.settings.friction = 0.4f;
+    request.start = dvec3(0.0, 1.5, 0.0);
+    request.target = dvec3(8.0, 0.0, 6.0);
+    scratch_size = fs_throw_plan_scratch_size(&request);
+    CHECK(scratch_size > 0 && scratch_size <= 1024);
+
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_OK);
+    CHECK(result.plan_count >= 1 && result.plan_count <= 3);
+    CHECK(result.predictions >= result.plan_count);
+    for (i = 0; i < result.plan_count; ++i) {
+        const fs_throw_plan* plan = &plans[i];
+        const double dx = plan->final_position.x - 8.0, dy = plan->final_position.y, dz = plan->final_position.z - 6.0;
+        const double speed =
+            sqrt(plan->launch_velocity.x * plan->launch_velocity.x + plan->launch_velocity.y * plan->launch_velocity.y +
+                 plan->launch_velocity.z * plan->launch_velocity.z);
+        /* Within the acceptance radius, at a launch speed within the cap... */
+        CHECK(plan->distance <= request.acceptance_radius);
+        CHECK_NEAR(sqrt(dx * dx + dy * dy + dz * dz), plan->distance, kTol);
+        CHECK(speed <= 20.0 + 1e-4);
+        /* ... and the forward model agrees: predicting the plan ends where it says. */
+        CHECK_STATUS(fs_predict_projectile(request.start, plan->launch_velocity, request.fuse_time, &request.settings,
+                                           world, points, 1024, &check),
+                     FS_STATUS_OK);
+        CHECK(check.position.x == plan->final_position.x && check.position.y == plan->final_position.y &&
+              check.position.z == plan->final_position.z);
+        CHECK(check.bounces == plan->bounces);
+    }
+
+    /* Refusals. */
+    CHECK_STATUS(fs_plan_throw(NULL, world, plans, 4, scratch, 1024, &result), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_plan_throw(&request, world, NULL, 4, scratch, 1024, &result), FS_STATUS_NULL_POINTER);
+    request.fuse_time = 0.0f;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_FUSE);
+    CHECK(fs_throw_plan_scratch_size(&request) == 0);
+    request.fuse_time = 3.0f;
+    request.settings.method = 9;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_SETTING);
+    request.settings.method = FS_METHOD_EXACT;
+    request.budget.refinements = 33;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_ITERATIONS);
+    fs_world_destroy(world);
+}
+
 /* Dropped from y = 5 onto a sphere, a box and a triangle whose tops are at y = 1. */
 static void test_projectile_shapes(void) {
     fs_projectile_settings settings = fs_projectile_settings_default();
@@ -920,6 +1106,9 @@ int main(void) {
     test_projectile_buffers_and_refusals();
     test_projectile_event_cap();
     test_callback_world();
+    test_danger_projectile();
+    test_danger_vehicle();
+    test_plan_throw();
     test_aim();
     if (failures != 0) {
         fprintf(stderr, "c_api_test: %d check(s) failed\n", failures);

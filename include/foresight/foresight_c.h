@@ -498,6 +498,244 @@ FS_API fs_aim_shot fs_aim_shot_default(void) FS_NOEXCEPT;
 FS_API fs_status fs_aim_projectile(const fs_aim_shot* shot, const fs_aim_target* target, fs_firing_solution* solutions,
                                    size_t capacity, size_t* count) FS_NOEXCEPT;
 
+/* ---- Danger: where and when a grenade is dangerous -------------------------------------- */
+
+/* These functions read a trajectory that fs_predict_projectile wrote (points[0 .. trajectory_size))
+ * and model it as danger.h explains: between two points, the parabola that joins them. The
+ * trajectory is passed as a pointer and a count: at least one point, times finite and
+ * non-decreasing, events FS_EVENT_*. Each call converts it to the C++ layout in a buffer of the
+ * calling thread that keeps its size: the first call with N points on a thread allocates it,
+ * later calls with at most N points allocate nothing (OUT_OF_MEMORY if that allocation fails).
+ * Common refusals: NULL_POINTER (the trajectory with a count above 0, or an output),
+ * INVALID_STEP (no points, or times that decrease), NON_FINITE_INPUT, INVALID_SETTING (an
+ * event outside FS_EVENT_*). */
+
+/// A predicted grenade as a danger (foresight::ProjectileDanger without its trajectory). 12
+/// bytes, alignment 4: fuse_time 0, blast_radius 4, contact_radius 8.
+typedef struct fs_projectile_danger {
+    float fuse_time;     ///< when it explodes [Units: s] [Limit: >= 0].
+    float blast_radius;  ///< radius of the blast around its centre [Units: m] [Limit: >= 0].
+    /// Before the fuse, a point this close to the projectile is unsafe (include the projectile's
+    /// own radius); 0: nothing is dangerous before the fuse [Units: m] [Limit: >= 0].
+    float contact_radius;
+} fs_projectile_danger;
+
+/// Where and when a projectile explodes. 32 bytes, alignment 8: center 0, radius 24, time 28.
+typedef struct fs_danger_zone {
+    fs_dvec3 center;  ///< the projectile's position at the fuse time [Units: m].
+    float radius;     ///< the blast radius [Units: m].
+    float time;       ///< the fuse time; dangerous from then on [Units: s].
+} fs_danger_zone;
+
+/// When something starts (danger at a point, a path coming close). 8 bytes, alignment 4: ever 0,
+/// time 4.
+typedef struct fs_danger_start {
+    int32_t ever;  ///< 1: it happens, at `time`; 0: never (then `time` is 0).
+    float time;    ///< the earliest time [Units: s].
+} fs_danger_start;
+
+/// A closest approach. 8 bytes, alignment 4: distance 0, time 4.
+typedef struct fs_closest_approach {
+    /// The smallest distance [Units: m]; for vehicles the separation (negative when overlapping,
+    /// down to minus the character's radius).
+    float distance;
+    float time;  ///< when it happens [Units: s] (danger.h says which time of equal minima).
+} fs_closest_approach;
+
+/// The projectile's position at `time` [Units: s] (before the first point: the first point;
+/// after the last: the last) (foresight::positionOnTrajectory).
+/// @return OK, the common refusals, NON_FINITE_RESULT; `out` is written only on OK.
+FS_API fs_status fs_position_on_trajectory(const fs_trajectory_point* trajectory, size_t count, float time,
+                                           fs_dvec3* out) FS_NOEXCEPT;
+
+/// The danger zone: the position at the fuse time, the blast radius, the fuse time
+/// (foresight::computeDangerZone).
+/// @return OK, the common refusals, INVALID_FUSE (fuse_time < 0), INVALID_RADIUS (a negative
+///         radius), NON_FINITE_RESULT.
+FS_API fs_status fs_compute_danger_zone(const fs_trajectory_point* trajectory, size_t count,
+                                        const fs_projectile_danger* danger, fs_danger_zone* out) FS_NOEXCEPT;
+
+/// Whether `point` [Units: m] is safe at `time` [Units: s]: outside the blast from the fuse time
+/// on (a point at exactly blast_radius is unsafe), farther than contact_radius from the
+/// projectile before it (foresight::isPointSafe).
+/// @param safe  receives 1 (safe) or 0.
+/// @return OK or fs_compute_danger_zone's refusals.
+FS_API fs_status fs_is_point_safe(const fs_trajectory_point* trajectory, size_t count,
+                                  const fs_projectile_danger* danger, fs_dvec3 point, float time,
+                                  int32_t* safe) FS_NOEXCEPT;
+
+/// When danger starts at `point` [Units: m]: the earliest time fs_is_point_safe says 0
+/// (foresight::findDangerStart).
+/// @return OK or fs_compute_danger_zone's refusals.
+FS_API fs_status fs_find_danger_start(const fs_trajectory_point* trajectory, size_t count,
+                                      const fs_projectile_danger* danger, fs_dvec3 point,
+                                      fs_danger_start* out) FS_NOEXCEPT;
+
+/// The earliest time in [from_time, until_time] [Units: s] at which the projectile comes within
+/// `distance` [Units: m] [Limit: >= 0] of `point`, exact per segment (foresight::findPathApproach).
+/// @return OK, the common refusals or INVALID_RADIUS (distance < 0).
+FS_API fs_status fs_find_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point,
+                                       float distance, float from_time, float until_time,
+                                       fs_danger_start* out) FS_NOEXCEPT;
+
+/// The closest approach of the projectile to `point` over [from_time, until_time] [Units: s],
+/// exact per segment (foresight::findClosestPathApproach).
+/// @return OK, the common refusals or NON_FINITE_RESULT.
+FS_API fs_status fs_find_closest_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point,
+                                               float from_time, float until_time, fs_closest_approach* out) FS_NOEXCEPT;
+
+/* ---- Danger: a vehicle and a character ---------------------------------------------------- */
+
+/// A vehicle as an oriented box on the exact path of fs_predict_vehicle_exact
+/// (foresight::VehicleBody); fs_vehicle_body_default() gives the C++ defaults. 104 bytes,
+/// alignment 8: state 0, settings 64, half_extents 80, box_center 92.
+typedef struct fs_vehicle_body {
+    fs_vehicle_state state;        ///< at t = 0.
+    fs_vehicle_settings settings;  ///< frame of the angular velocity, forward axis.
+    fs_vec3 half_extents;          ///< the box, local axes [Units: m] [Limit: each > 0] (default {0.9, 0.7, 2.2}).
+    fs_vec3 box_center;            ///< the box's centre from state.position, local axes [Units: m] (default 0).
+} fs_vehicle_body;
+
+/// A character: a sphere, or a capsule of constant direction, moving as `p + v t + a t^2 / 2`
+/// (foresight::CharacterBody). 64 bytes, alignment 8: position 0, velocity 24, acceleration 36,
+/// radius 48, half_axis 52.
+typedef struct fs_character_body {
+    fs_dvec3 position;     ///< the centre at t = 0 [Units: m].
+    fs_vec3 velocity;      ///< [Units: m/s].
+    fs_vec3 acceleration;  ///< [Units: m/s^2]; 0 for constant velocity.
+    float radius;          ///< [Units: m] [Limit: >= 0] (default 0.4).
+    /// Half of the capsule's inner segment, world axes [Units: m]; zero for a sphere.
+    fs_vec3 half_axis;
+} fs_character_body;
+
+/// Tolerance and work cap of the vehicle queries (foresight::ApproachSettings). 8 bytes,
+/// alignment 4: tolerance 0, max_evaluations 4.
+typedef struct fs_approach_settings {
+    float tolerance;           ///< distance tolerance [Units: m] [Limit: > 0, finite] (default 1e-3).
+    uint32_t max_evaluations;  ///< separations computed per query at most [Limit: >= 1] (default 65536).
+} fs_approach_settings;
+
+/// The first contact of a vehicle and a character. 16 bytes, alignment 4: contact 0, time 4,
+/// separation 8, evaluations 12.
+typedef struct fs_vehicle_contact {
+    int32_t contact;       ///< 1: they come within the tolerance before the horizon; else 0.
+    float time;            ///< time of first contact [Units: s], valid when contact is 1.
+    float separation;      ///< the separation at `time` (at the horizon if none) [Units: m].
+    uint32_t evaluations;  ///< separations computed.
+} fs_vehicle_contact;
+
+/// The defaults of foresight::VehicleBody (identity orientation, at rest, the default box).
+FS_API fs_vehicle_body fs_vehicle_body_default(void) FS_NOEXCEPT;
+/// The defaults of foresight::CharacterBody (a sphere of radius 0.4 m at rest at the origin).
+FS_API fs_character_body fs_character_body_default(void) FS_NOEXCEPT;
+/// The defaults of foresight::ApproachSettings.
+FS_API fs_approach_settings fs_approach_settings_default(void) FS_NOEXCEPT;
+
+/// The separation of the vehicle and the character at `time` [Units: s] [Limit: >= 0]: exact,
+/// <= 0 when they overlap (foresight::computeVehicleSeparation).
+/// @return OK, NULL_POINTER, INVALID_SETTING (the vehicle's frame), NON_FINITE_INPUT,
+///         ZERO_QUATERNION, ZERO_VECTOR, DEGENERATE_SHAPE, INVALID_RADIUS, NEGATIVE_TIME or
+///         NON_FINITE_RESULT.
+FS_API fs_status fs_compute_vehicle_separation(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                               float time, float* separation) FS_NOEXCEPT;
+
+/// The first time in [0, horizon] [Units: s] at which the vehicle and the character touch
+/// (foresight::findVehicleContact: never later than the true first overlap).
+/// @return as fs_compute_vehicle_separation, INVALID_STEP (settings), TOO_MANY_STEPS
+///         (max_evaluations reached).
+FS_API fs_status fs_find_vehicle_contact(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                         float horizon, const fs_approach_settings* settings,
+                                         fs_vehicle_contact* out) FS_NOEXCEPT;
+
+/// The closest approach in [0, horizon] [Units: s] (foresight::findClosestVehicleApproach).
+/// @return as fs_find_vehicle_contact.
+FS_API fs_status fs_find_closest_vehicle_approach(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                                  float horizon, const fs_approach_settings* settings,
+                                                  fs_closest_approach* out) FS_NOEXCEPT;
+
+/* ---- Throw planning ----------------------------------------------------------------------- */
+
+/// Caps on the work of fs_plan_throw (foresight::ThrowPlanBudget). 56 bytes, alignment 8:
+/// azimuth_samples 0, elevation_samples 4, speed_samples 8, refinements 12,
+/// refinement_predictions 16, max_predictions 20, max_total_steps 24, grid_step 32,
+/// seed_landing_fractions 36.
+typedef struct fs_throw_plan_budget {
+    uint32_t azimuth_samples;         ///< grid: directions around the up axis (default 16).
+    uint32_t elevation_samples;       ///< grid: elevations from -30 to +75 degrees (default 5).
+    uint32_t speed_samples;           ///< grid: speeds (default 3).
+    uint32_t refinements;             ///< candidates refined at most [Limit: 1 .. 32] (default 6).
+    uint32_t refinement_predictions;  ///< predictions per refinement at most (default 24).
+    uint32_t max_predictions;         ///< predictions per call at most (default 400).
+    uint64_t max_total_steps;         ///< max_predictions x steps per prediction at most (default 2^24).
+    float grid_step;  ///< the grid's time step (Exact method) [Units: s] [Limit: >= 0; 0: the request's] (default 0.1).
+    /// Seeds: first landing at these fractions of the fuse time [Limit: (0, 1]; others skipped].
+    float seed_landing_fractions[5];
+} fs_throw_plan_budget;
+
+/// What to plan (foresight::ThrowPlanRequest); fs_throw_plan_request_default() gives the C++
+/// defaults. 176 bytes, alignment 8: start 0, target 24, acceptance_radius 48, fuse_time 52,
+/// max_speed 56, min_speed 60, settings 64, max_plans 112, distinct_angle 116, budget 120.
+typedef struct fs_throw_plan_request {
+    fs_dvec3 start;                   ///< launch position (the sphere's centre) [Units: m].
+    fs_dvec3 target;                  ///< where the grenade should be at the fuse time [Units: m].
+    float acceptance_radius;          ///< a plan ends within this of target [Units: m] [Limit: > 0] (default 0.5).
+    float fuse_time;                  ///< launch to blast [Units: s] [Limit: > 0] (default 3).
+    float max_speed;                  ///< launch speed cap [Units: m/s] [Limit: > 0] (default 20).
+    float min_speed;                  ///< lowest launch speed [Units: m/s] [Limit: 0 .. max_speed] (default 0).
+    fs_projectile_settings settings;  ///< the forward model (method, gravity, materials, radius, step, caps).
+    uint32_t max_plans;               ///< plans wanted [Limit: >= 1] (default 3).
+    float distinct_angle;         ///< plans differ by this angle at least [Units: rad] [Limit: 0 .. pi] (default 0.1).
+    fs_throw_plan_budget budget;  ///< caps on the work.
+} fs_throw_plan_request;
+
+/// One throw that works (foresight::ThrowPlan). 88 bytes, alignment 8: launch_velocity 0,
+/// distance 12, final_position 16, bounces 40, at_rest 44, first_impact_time 48,
+/// first_impact_normal 52, first_impact_position 64.
+typedef struct fs_throw_plan {
+    fs_vec3 launch_velocity;         ///< [Units: m/s]; speed within [min_speed, max_speed].
+    float distance;                  ///< from the final position to the target [Units: m].
+    fs_dvec3 final_position;         ///< where the grenade is at the fuse time [Units: m].
+    uint32_t bounces;                ///< bounces until the fuse time.
+    int32_t at_rest;                 ///< 1: resting on a surface at the fuse time.
+    float first_impact_time;         ///< [Units: s]; < 0 when none (or not recorded: scratch too small).
+    fs_vec3 first_impact_normal;     ///< unit normal of the first impact; zero when none.
+    fs_dvec3 first_impact_position;  ///< [Units: m]; the start when none.
+} fs_throw_plan;
+
+/// What fs_plan_throw did (foresight::ThrowPlanResult). 32 bytes, alignment 8: plan_count 0,
+/// predictions 8, closest_distance 12, closest_velocity 16, reserved 28.
+typedef struct fs_throw_plan_result {
+    uint64_t plan_count;       ///< plans written, closest first.
+    uint32_t predictions;      ///< forward predictions run.
+    float closest_distance;    ///< closest any tried throw came [Units: m]; FLT_MAX when none finished.
+    fs_vec3 closest_velocity;  ///< the launch velocity of that throw [Units: m/s].
+    float reserved;            ///< padding: written as 0.
+} fs_throw_plan_result;
+
+/// The defaults of foresight::ThrowPlanRequest (its settings: fs_projectile_settings_default()).
+FS_API fs_throw_plan_request fs_throw_plan_request_default(void) FS_NOEXCEPT;
+
+/// Scratch points that let fs_plan_throw record every first impact (0 for a refused request).
+FS_API size_t fs_throw_plan_scratch_size(const fs_throw_plan_request* request) FS_NOEXCEPT;
+
+/// Plans throws that put a grenade within acceptance_radius of the target when its fuse ends,
+/// bank shots included (foresight::planThrow; throw_planner.h explains the search). Allocates
+/// nothing. To draw a plan: fs_predict_projectile(request->start, plan.launch_velocity,
+/// request->fuse_time, &request->settings, world, ...).
+/// @param world             what the grenade bounces off (a static or callback world); NULL: nothing.
+/// @param plans             receives up to min(max_plans, capacity) plans, closest first.
+/// @param scratch           trajectory scratch of fs_throw_plan_scratch_size() points to record
+///                          every first impact; may be smaller (even NULL with 0).
+/// @param out               what was done.
+/// @return OK (also when nothing was found: plan_count 0), NULL_POINTER, INVALID_SETTING (an
+///         enumeration), the refusals of foresight::validateThrowPlanRequest (NON_FINITE_INPUT,
+///         INVALID_FUSE, INVALID_RADIUS, INVALID_SPEED, INVALID_ITERATIONS, INVALID_STEP, the
+///         settings' refusals, TOO_MANY_STEPS) or INVALID_CALLBACK_HIT; outputs are written only
+///         on OK.
+FS_API fs_status fs_plan_throw(const fs_throw_plan_request* request, const fs_world* world, fs_throw_plan* plans,
+                               size_t capacity, fs_trajectory_point* scratch, size_t scratch_capacity,
+                               fs_throw_plan_result* out) FS_NOEXCEPT;
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif
