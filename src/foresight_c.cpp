@@ -11,16 +11,27 @@
 #include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
 
+#if FORESIGHT_C_WITH_EMBREE
+#include <foresight/embree_world.h>
+#endif
+
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <cstddef>
 #include <limits>
 #include <memory>
 #include <new>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
+
+#ifndef FORESIGHT_C_WITH_EMBREE
+#define FORESIGHT_C_WITH_EMBREE 0  // 1 when CMake links the Embree backend (EmbreeWorld) in
+#endif
 
 using namespace foresight;
 
@@ -169,10 +180,19 @@ static_assert(offsetof(fs_cast_hit, restitution) == 4 && offsetof(fs_cast_hit, p
 
 // The handle: a StaticWorld, or (cast != nullptr) a callback world, whose casts go to the
 // caller's function through a CheckedCallbackWorld made for each prediction.
+static_assert(sizeof(fs_mesh_report) == 24 && offsetof(fs_mesh_report, degenerate_triangles) == 8 &&
+              offsetof(fs_mesh_report, first_degenerate_triangle) == 16);
+
+// The handle: a StaticWorld; or (cast != nullptr) a callback world, whose casts go to the
+// caller's function through a CheckedCallbackWorld made for each prediction; or (embree) an
+// EmbreeWorld.
 struct fs_world {
     StaticWorld world;
     fs_cast_function cast = nullptr;
     void* context = nullptr;
+#if FORESIGHT_C_WITH_EMBREE
+    std::unique_ptr<EmbreeWorld> embree;
+#endif
 };
 
 namespace {
@@ -321,6 +341,16 @@ private:
 template <class Shape>
 fs_status addShape(fs_world* world, const Shape& shape, const fs_material* material) noexcept {
     if (world->cast != nullptr) return FS_STATUS_INVALID_SETTING;  // a callback world holds no shapes
+#if FORESIGHT_C_WITH_EMBREE
+    if (world->embree) {
+        try {
+            return toC(world->embree->add(shape, toCpp(material)));
+        } catch (...) {
+            world->embree.reset(new (std::nothrow) EmbreeWorld);
+            return FS_STATUS_OUT_OF_MEMORY;
+        }
+    }
+#endif
     try {
         return toC(world->world.add(shape, toCpp(material)));
     } catch (...) {
@@ -334,7 +364,41 @@ fs_status addShape(fs_world* world, const Shape& shape, const fs_material* mater
 const CollisionWorld* worldFor(const fs_world* world, std::optional<CheckedCallbackWorld>& callback) {
     if (world == nullptr) return nullptr;
     if (world->cast != nullptr) return &callback.emplace(world->cast, world->context);
+#if FORESIGHT_C_WITH_EMBREE
+    if (world->embree) return world->embree.get();
+#endif
     return &world->world;
+}
+
+// Writes `text` into the caller's error buffer, cut to fit and NUL-terminated.
+void copyError(char* error, size_t capacity, const std::string& text) {
+    if (error == nullptr || capacity == 0) return;
+    const std::size_t n = std::min(text.size(), capacity - 1);
+    std::memcpy(error, text.data(), n);
+    error[n] = '\0';
+}
+
+// A StaticWorld's part of fs_world_add_mesh, with EmbreeWorld::addMesh's rules: the whole mesh is
+// checked before anything is added.
+fs_status addStaticMesh(StaticWorld& world, std::span<const RVec3> vertices, const uint32_t* indices, size_t indexCount,
+                        fs_mesh_report& report) {
+    for (const RVec3& v : vertices)
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return FS_STATUS_NON_FINITE_INPUT;
+    if (indexCount % 3 != 0) return FS_STATUS_DEGENERATE_SHAPE;
+    for (std::size_t i = 0; i < indexCount; ++i)
+        if (indices[i] >= vertices.size()) return FS_STATUS_DEGENERATE_SHAPE;
+    report = fs_mesh_report{0, 0, 0};
+    const auto triangle = [&](std::size_t t) {
+        return Triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
+    };
+    for (std::size_t t = 0; t < indexCount / 3; ++t) {
+        if (validateTriangle(triangle(t)) == Status::Ok) continue;
+        if (report.degenerate_triangles++ == 0) report.first_degenerate_triangle = t;
+    }
+    if (report.degenerate_triangles == indexCount / 3) return FS_STATUS_DEGENERATE_SHAPE;
+    for (std::size_t t = 0; t < indexCount / 3; ++t)
+        if (world.add(triangle(t)) == Status::Ok) ++report.triangles;
+    return FS_STATUS_OK;
 }
 
 // The calling thread's trajectory in C++ layout (see "Danger" in foresight_c.h): it keeps the
@@ -438,6 +502,8 @@ const char* fs_status_message(fs_status status) noexcept {
             return "a required pointer is NULL";
         case FS_STATUS_OUT_OF_MEMORY:
             return "out of memory";
+        case FS_STATUS_BACKEND_FAILED:
+            return "the Embree backend failed: a mesh file could not be loaded, or the BVH could not be built";
         case FS_STATUS_INVALID_CALLBACK_HIT:
             return "the world's cast callback returned an invalid hit (fraction outside 0..1, a non-finite position, "
                    "a zero or non-finite normal, or an invalid material)";
@@ -504,6 +570,120 @@ fs_world* fs_world_create_callback(fs_cast_function cast, void* context) noexcep
 }
 
 void fs_world_destroy(fs_world* world) noexcept { delete world; }
+
+fs_status fs_world_add_mesh(fs_world* world, const fs_dvec3* vertices, size_t vertex_count, const uint32_t* indices,
+                            size_t index_count, fs_mesh_report* report) noexcept {
+    if (world == nullptr || (vertices == nullptr && vertex_count > 0) || (indices == nullptr && index_count > 0))
+        return FS_STATUS_NULL_POINTER;
+    if (world->cast != nullptr) return FS_STATUS_INVALID_SETTING;
+    fs_mesh_report counts{0, 0, 0};
+    try {
+        std::vector<RVec3> points(vertex_count);
+        for (std::size_t i = 0; i < vertex_count; ++i) points[i] = toCpp(vertices[i]);
+#if FORESIGHT_C_WITH_EMBREE
+        if (world->embree) {
+            MeshReport meshReport;
+            const Status s =
+                world->embree->addMesh(points, std::span<const std::uint32_t>(indices, index_count), &meshReport);
+            if (s != Status::Ok) return toC(s);
+            counts = fs_mesh_report{meshReport.triangles, meshReport.degenerateTriangles,
+                                    meshReport.firstDegenerateTriangle};
+            if (report != nullptr) *report = counts;
+            return FS_STATUS_OK;
+        }
+#endif
+        const fs_status s = addStaticMesh(world->world, points, indices, index_count, counts);
+        if (s == FS_STATUS_OK && report != nullptr) *report = counts;
+        return s;
+    } catch (...) {
+        // A StaticWorld that ran out of memory midway is emptied, as fs_world_add_* do.
+#if FORESIGHT_C_WITH_EMBREE
+        if (world->embree) {
+            world->embree.reset(new (std::nothrow) EmbreeWorld);
+            return FS_STATUS_OUT_OF_MEMORY;
+        }
+#endif
+        world->world.clear();
+        return FS_STATUS_OUT_OF_MEMORY;
+    }
+}
+
+int32_t fs_embree_available(void) noexcept { return FORESIGHT_C_WITH_EMBREE ? 1 : 0; }
+
+fs_world* fs_world_create_embree(void) noexcept {
+#if FORESIGHT_C_WITH_EMBREE
+    fs_world* world = new (std::nothrow) fs_world;
+    if (world == nullptr) return nullptr;
+    world->embree.reset(new (std::nothrow) EmbreeWorld);
+    if (!world->embree) {
+        delete world;
+        return nullptr;
+    }
+    return world;
+#else
+    return nullptr;
+#endif
+}
+
+fs_status fs_world_load_mesh(fs_world* world, const char* path, fs_mesh_report* report, char* error,
+                             size_t error_capacity) noexcept {
+    if (world == nullptr || path == nullptr || (error == nullptr && error_capacity > 0)) return FS_STATUS_NULL_POINTER;
+#if FORESIGHT_C_WITH_EMBREE
+    if (!world->embree) return FS_STATUS_INVALID_SETTING;
+    try {
+        std::string extension;
+        if (const char* dot = std::strrchr(path, '.'); dot != nullptr)
+            for (const char* c = dot; *c != '\0'; ++c)
+                extension += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+        MeshLoadResult loaded;
+        if (extension == ".obj") {
+            loaded = world->embree->loadObj(std::filesystem::u8path(path));
+        } else if (extension == ".gltf" || extension == ".glb") {
+            loaded = world->embree->loadGltf(std::filesystem::u8path(path));
+        } else {
+            return FS_STATUS_INVALID_SETTING;
+        }
+        if (!loaded.ok) {
+            copyError(error, error_capacity, loaded.error);
+            return FS_STATUS_BACKEND_FAILED;
+        }
+        if (report != nullptr)
+            *report = fs_mesh_report{loaded.report.triangles, loaded.report.degenerateTriangles,
+                                     loaded.report.firstDegenerateTriangle};
+        return FS_STATUS_OK;
+    } catch (const std::bad_alloc&) {
+        return FS_STATUS_OUT_OF_MEMORY;
+    } catch (const std::exception& e) {
+        copyError(error, error_capacity, std::string(path) + ": " + e.what());
+        return FS_STATUS_BACKEND_FAILED;
+    } catch (...) {
+        copyError(error, error_capacity, std::string(path) + ": could not be loaded");
+        return FS_STATUS_BACKEND_FAILED;
+    }
+#else
+    (void)report;
+    return FS_STATUS_INVALID_SETTING;  // no Embree world exists in this build
+#endif
+}
+
+fs_status fs_world_commit(fs_world* world, char* error, size_t error_capacity) noexcept {
+    if (world == nullptr || (error == nullptr && error_capacity > 0)) return FS_STATUS_NULL_POINTER;
+#if FORESIGHT_C_WITH_EMBREE
+    if (world->embree) {
+        try {
+            std::string why;
+            if (!world->embree->commit(&why)) {
+                copyError(error, error_capacity, why);
+                return FS_STATUS_BACKEND_FAILED;
+            }
+        } catch (...) {
+            copyError(error, error_capacity, "the Embree BVH could not be built (out of memory)");
+            return FS_STATUS_BACKEND_FAILED;
+        }
+    }
+#endif
+    return FS_STATUS_OK;
+}
 
 fs_status fs_world_add_plane(fs_world* world, const fs_plane* plane, const fs_material* material) noexcept {
     if (world == nullptr || plane == nullptr) return FS_STATUS_NULL_POINTER;

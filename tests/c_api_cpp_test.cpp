@@ -11,6 +11,9 @@
 #include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
 #include <gtest/gtest.h>
+#if FORESIGHT_TEST_EMBREE
+#include <foresight/embree_world.h>
+#endif
 
 #include <array>
 #include <bit>
@@ -569,4 +572,85 @@ TEST(CApi, PlanThrowMatchesCpp) {
     }
     EXPECT_GE(plansCompared, 12u);  // most requests are reachable: plans were compared, not only refusals
     fs_world_destroy(cWorld);
+}
+
+// Meshes: a bumpy terrain of 2 x 16 x 16 triangles, in a StaticWorld and (when built) an
+// EmbreeWorld, through fs_world_add_mesh against the C++ worlds.
+TEST(CApi, MeshWorldsMatchCpp) {
+    Random random(37);
+    std::vector<RVec3> vertices;
+    std::vector<fs_dvec3> cVertices;
+    std::vector<std::uint32_t> indices;
+    constexpr int kCells = 16;
+    for (int z = 0; z <= kCells; ++z)
+        for (int x = 0; x <= kCells; ++x) {
+            vertices.emplace_back(static_cast<float>(x - kCells / 2), random.uniform(-0.3f, 0.3f),
+                                  static_cast<float>(z - kCells / 2));
+            cVertices.push_back(toCPosition(vertices.back()));
+        }
+    for (int z = 0; z < kCells; ++z)
+        for (int x = 0; x < kCells; ++x) {
+            const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kCells + 1) + i); };
+            indices.insert(indices.end(),
+                           {at(x, z), at(x, z + 1), at(x + 1, z + 1), at(x, z), at(x + 1, z + 1), at(x + 1, z)});
+        }
+    StaticWorld world;
+    for (std::size_t t = 0; t < indices.size(); t += 3)
+        ASSERT_EQ(world.add(Triangle{vertices[indices[t]], vertices[indices[t + 1]], vertices[indices[t + 2]]}),
+                  Status::Ok);
+    fs_world* cWorld = fs_world_create();
+    ASSERT_NE(cWorld, nullptr);
+    fs_mesh_report report{};
+    ASSERT_EQ(fs_world_add_mesh(cWorld, cVertices.data(), cVertices.size(), indices.data(), indices.size(), &report),
+              FS_STATUS_OK);
+    EXPECT_EQ(report.triangles, indices.size() / 3);
+    std::vector<const CollisionWorld*> cppWorlds{&world};
+    std::vector<fs_world*> cWorlds{cWorld};
+#if FORESIGHT_TEST_EMBREE
+    EmbreeWorld embree;
+    ASSERT_EQ(embree.addMesh(vertices, indices), Status::Ok);
+    ASSERT_TRUE(embree.commit());
+    fs_world* cEmbree = fs_world_create_embree();
+    ASSERT_NE(cEmbree, nullptr);
+    ASSERT_EQ(fs_world_add_mesh(cEmbree, cVertices.data(), cVertices.size(), indices.data(), indices.size(), nullptr),
+              FS_STATUS_OK);
+    ASSERT_EQ(fs_world_commit(cEmbree, nullptr, 0), FS_STATUS_OK);
+    cppWorlds.push_back(&embree);
+    cWorlds.push_back(cEmbree);
+#else
+    EXPECT_EQ(fs_embree_available(), 0);
+#endif
+    std::vector<TrajectoryPoint> cppPoints(4096);
+    std::vector<fs_trajectory_point> cPoints(4096);
+    int bounced = 0;
+    for (int i = 0; i < 60; ++i) {
+        ProjectileSettings settings;
+        const int method = random.integer(0, 2);
+        settings.method = static_cast<ProjectileMethod>(method);
+        settings.friction = random.uniform(0, 0.6f);
+        settings.radius = random.chance(0.5) ? 0.0f : random.uniform(0.02f, 0.3f);
+        fs_projectile_settings cSettings = fs_projectile_settings_default();
+        cSettings.method = method;
+        cSettings.friction = settings.friction;
+        cSettings.radius = settings.radius;
+        const RVec3 start(random.uniform(-4, 4), random.uniform(1, 4), random.uniform(-4, 4));
+        const Vec3 velocity(random.uniform(-5, 5), random.uniform(-2, 6), random.uniform(-5, 5));
+        for (std::size_t w = 0; w < cppWorlds.size(); ++w) {
+            ProjectileResult cpp;
+            fs_projectile_result c{};
+            const Status st = predictProjectile(start, velocity, 2.0f, settings, cppWorlds[w], cppPoints, cpp);
+            ASSERT_EQ(fs_predict_projectile(toCPosition(start), toC(velocity), 2.0f, &cSettings, cWorlds[w],
+                                            cPoints.data(), cPoints.size(), &c),
+                      static_cast<fs_status>(st))
+                << i << " world " << w;
+            if (st != Status::Ok) continue;
+            bounced += cpp.bounces > 0 ? 1 : 0;
+            EXPECT_TRUE(samePosition(c.position, cpp.position)) << i << " world " << w;
+            EXPECT_TRUE(same(c.velocity, cpp.velocity)) << i << " world " << w;
+            EXPECT_EQ(c.bounces, cpp.bounces) << i << " world " << w;
+            EXPECT_EQ(c.trajectory_size, cpp.trajectorySize) << i << " world " << w;
+        }
+    }
+    EXPECT_GT(bounced, 30);  // the throws do meet the terrain
+    for (fs_world* w : cWorlds) fs_world_destroy(w);
 }

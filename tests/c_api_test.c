@@ -78,14 +78,14 @@ static void test_version_and_statuses(void) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
-    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_INVALID_CALLBACK_HIT; ++s) {
+    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_BACKEND_FAILED; ++s) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
     CHECK(strcmp(fs_status_message(-1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(FS_STATUS_OUT_OF_RANGE + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(999), "unknown status") == 0);
-    CHECK(strcmp(fs_status_message(FS_STATUS_INVALID_CALLBACK_HIT + 1), "unknown status") == 0);
+    CHECK(strcmp(fs_status_message(FS_STATUS_BACKEND_FAILED + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MIN), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MAX), "unknown status") == 0);
 }
@@ -630,6 +630,101 @@ static void test_callback_world(void) {
     fs_world_destroy(world);
 }
 
+/* ---- Meshes and Embree worlds ------------------------------------------------------------------ */
+
+/* A floor y = 0 as a 40 m square of two triangles (the second one repeated degenerate). */
+static const fs_dvec3 kFloorVertices[4] = {
+    {-20.0, 0.0, -20.0}, {20.0, 0.0, -20.0}, {20.0, 0.0, 20.0}, {-20.0, 0.0, 20.0}};
+static const uint32_t kFloorIndices[9] = {0, 2, 1, 0, 3, 2, 1, 1, 2};
+
+/* Dropped from y = 5 with (1, 0, 0) m/s and stopped at the first impact: at t = sqrt(10 / g). */
+static void check_floor_drop(const fs_world* world) {
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result;
+    const double root = sqrt(2.0 * 5.0 / kGravity);
+    settings.max_bounces = 0;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.5, 5.0, 0.5), vec3(1.0f, 0.0f, 0.0f), 3.0f, &settings, world, points,
+                                       512, &result),
+                 FS_STATUS_OK);
+    CHECK(result.stopped_at_hit == 1);
+    CHECK_NEAR(result.time, root, kTol);
+    CHECK_NEAR(result.position.x, 0.5 + root, kTol);
+    CHECK_NEAR(result.position.y, 0.0, kTol);
+    CHECK(result.hit_normal.y == 1.0f);
+}
+
+static void test_meshes(void) {
+    fs_world* world = fs_world_create();
+    fs_world* embree = fs_world_create_embree();
+    fs_mesh_report report = {99, 99, 99};
+    const fs_dvec3 bad_vertex[3] = {{0.0, 0.0, 0.0}, {1.0, NAN, 0.0}, {0.0, 0.0, 1.0}};
+    const uint32_t out_of_range[3] = {0, 1, 7};
+    char error[256];
+    FILE* file;
+    CHECK(world != NULL);
+    if (world == NULL) return;
+
+    /* A static world: the triangles tested one by one. */
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices, 9, &report), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 1 && report.first_degenerate_triangle == 2);
+    CHECK_STATUS(fs_world_commit(world, NULL, 0), FS_STATUS_OK); /* nothing to build */
+    check_floor_drop(world);
+    /* Refused whole. */
+    CHECK_STATUS(fs_world_add_mesh(world, bad_vertex, 3, kFloorIndices, 3, NULL), FS_STATUS_NON_FINITE_INPUT);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, out_of_range, 3, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices, 8, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices + 6, 3, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, NULL, 4, kFloorIndices, 9, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_world_load_mesh(world, "level.obj", NULL, NULL, 0), FS_STATUS_INVALID_SETTING);
+    fs_world_destroy(world);
+
+    if (!fs_embree_available()) {
+        CHECK(embree == NULL);
+        return;
+    }
+    CHECK(embree != NULL);
+    if (embree == NULL) return;
+    /* The same floor in an Embree BVH. */
+    CHECK_STATUS(fs_world_add_mesh(embree, kFloorVertices, 4, kFloorIndices, 9, &report), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 1 && report.first_degenerate_triangle == 2);
+    CHECK_STATUS(fs_world_commit(embree, error, sizeof error), FS_STATUS_OK);
+    check_floor_drop(embree);
+    fs_world_destroy(embree);
+
+    /* The floor from an OBJ file (written beside the test), and files that are refused. */
+    file = fopen("c_api_test_floor.obj", "w");
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    fputs("v -20 0 -20\nv 20 0 -20\nv 20 0 20\nv -20 0 20\nf 1 3 2\nf 1 4 3\n", file);
+    fclose(file);
+    file = fopen("c_api_test_broken.obj", "w");
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    fputs("v -20 0 -20\nv 20 zero -20\nv 20 0 20\nf 1 3 2\n", file);
+    fclose(file);
+    embree = fs_world_create_embree();
+    CHECK(embree != NULL);
+    if (embree == NULL) return;
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.OBJ", &report, error, sizeof error),
+                 FS_STATUS_BACKEND_FAILED); /* no such file (the extension's case does not matter) */
+    CHECK(strstr(error, "c_api_test_floor.OBJ") != NULL);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_broken.obj", &report, error, sizeof error),
+                 FS_STATUS_BACKEND_FAILED);
+    CHECK(strstr(error, "c_api_test_broken.obj") != NULL);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_broken.obj", &report, error, 8), FS_STATUS_BACKEND_FAILED);
+    CHECK(strlen(error) == 7); /* cut to the buffer */
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.stl", &report, error, sizeof error),
+                 FS_STATUS_INVALID_SETTING);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.obj", &report, error, sizeof error), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 0);
+    CHECK_STATUS(fs_world_commit(embree, error, sizeof error), FS_STATUS_OK);
+    check_floor_drop(embree);
+    fs_world_destroy(embree);
+    remove("c_api_test_floor.obj");
+    remove("c_api_test_broken.obj");
+}
+
 /* ---- Danger --------------------------------------------------------------------------------- */
 
 /* A grenade in free flight from (0, 10, 0) at (3, 0, 0) m/s: on the parabola at every time. */
@@ -1106,6 +1201,7 @@ int main(void) {
     test_projectile_buffers_and_refusals();
     test_projectile_event_cap();
     test_callback_world();
+    test_meshes();
     test_danger_projectile();
     test_danger_vehicle();
     test_plan_throw();

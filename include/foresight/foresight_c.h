@@ -106,6 +106,10 @@ enum {
     /// a normal that is zero or not finite, a restitution above 1 or NaN, or a NaN friction.
     /// The prediction is abandoned: nothing is written.
     FS_STATUS_INVALID_CALLBACK_HIT = 1003,
+    /// C API only: the Embree backend refused: a mesh file could not be read or is not a valid
+    /// mesh (fs_world_load_mesh), or the BVH could not be built (fs_world_commit). The error
+    /// text those functions write says why, naming the file.
+    FS_STATUS_BACKEND_FAILED = 1004,
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never NULL: values that
@@ -278,6 +282,56 @@ FS_API fs_status fs_world_add_box(fs_world* world, const fs_box* box, const fs_m
 ///         OUT_OF_MEMORY.
 FS_API fs_status fs_world_add_triangle(fs_world* world, const fs_triangle* triangle,
                                        const fs_material* material) FS_NOEXCEPT;
+
+/// What fs_world_add_mesh or fs_world_load_mesh did with a mesh. 24 bytes, alignment 8:
+/// triangles 0, degenerate_triangles 8, first_degenerate_triangle 16.
+typedef struct fs_mesh_report {
+    uint64_t triangles;                  ///< triangles added.
+    uint64_t degenerate_triangles;       ///< triangles skipped (no area, or a sliver).
+    uint64_t first_degenerate_triangle;  ///< 0-based index in the mesh of the first skipped one.
+} fs_mesh_report;
+
+/// Adds an indexed triangle mesh (three indices per triangle, two-sided triangles). In a world
+/// from fs_world_create every triangle is tested by brute force (up to a few thousand); in an
+/// Embree world they go into its BVH (millions; call fs_world_commit afterwards). The whole
+/// mesh is refused (nothing added) for a non-finite vertex (NON_FINITE_INPUT), an index count
+/// that is not a multiple of 3, an index out of range or no usable triangle (DEGENERATE_SHAPE);
+/// degenerate triangles are skipped and counted. Mesh triangles have no material of their own.
+/// @param report  receives the counts (may be NULL); written on OK.
+/// @return OK, NULL_POINTER (world, vertices or indices with a count above 0), NON_FINITE_INPUT,
+///         DEGENERATE_SHAPE, INVALID_SETTING (a callback world) or OUT_OF_MEMORY.
+FS_API fs_status fs_world_add_mesh(fs_world* world, const fs_dvec3* vertices, size_t vertex_count,
+                                   const uint32_t* indices, size_t index_count, fs_mesh_report* report) FS_NOEXCEPT;
+
+/// 1 when this library was built with the Embree backend (fs_world_create_embree works), else 0.
+FS_API int32_t fs_embree_available(void) FS_NOEXCEPT;
+
+/// A world for large levels (foresight::EmbreeWorld): triangle meshes in an Embree BVH plus the
+/// built-in shapes. Add shapes (fs_world_add_*) and meshes (fs_world_add_mesh,
+/// fs_world_load_mesh), then call fs_world_commit once before predicting (and again after adding
+/// more). Free it with fs_world_destroy.
+/// @return the world; NULL when the library has no Embree backend or memory runs out.
+FS_API fs_world* fs_world_create_embree(void) FS_NOEXCEPT;
+
+/// Loads a mesh file into an Embree world: Wavefront OBJ (`.obj`) or glTF 2.0 (`.gltf` with its
+/// buffers, or `.glb`), chosen by the extension (any case). Files are checked strictly (a damaged
+/// number or index is refused, never read as 0; glTF buffers must lie inside the file's folder;
+/// at most 2^24 vertices and triangles): foresight's embree_world.h has the rules.
+/// @param path            the file, UTF-8.
+/// @param report          receives the counts (may be NULL); written on OK.
+/// @param error           receives a one-line reason on BACKEND_FAILED, NUL-terminated and cut
+///                        to `error_capacity` bytes (may be NULL when error_capacity is 0).
+/// @return OK, NULL_POINTER, INVALID_SETTING (not an Embree world, or an extension that is none
+///         of the three) or BACKEND_FAILED.
+FS_API fs_status fs_world_load_mesh(fs_world* world, const char* path, fs_mesh_report* report, char* error,
+                                    size_t error_capacity) FS_NOEXCEPT;
+
+/// Builds an Embree world's BVH over its meshes; needed before predicting, after the last add.
+/// Other worlds have nothing to build: OK. Not thread-safe with predictions in the same world.
+/// @param error  as fs_world_load_mesh's.
+/// @return OK, NULL_POINTER or BACKEND_FAILED (the world then answers by brute force: correct,
+///         slow).
+FS_API fs_status fs_world_commit(fs_world* world, char* error, size_t error_capacity) FS_NOEXCEPT;
 
 /// A cast that a callback world answers: a segment, or a sphere swept along it, from `origin`
 /// to `origin + displacement`. 40 bytes, alignment 8: origin at 0, displacement at 24, radius
