@@ -124,6 +124,38 @@ static_assert(offsetof(fs_throw_plan_result, predictions) == 8 &&
               offsetof(fs_throw_plan_result, closest_distance) == 12 &&
               offsetof(fs_throw_plan_result, closest_velocity) == 16 && offsetof(fs_throw_plan_result, reserved) == 28);
 static_assert(std::tuple_size_v<decltype(ThrowPlanBudget::seedLandingFractions)> == 5);
+static_assert(sizeof(fs_engine_profile) == 100 && alignof(fs_engine_profile) == 4);
+static_assert(
+    offsetof(fs_engine_profile, timestep) == 4 && offsetof(fs_engine_profile, substeps) == 8 &&
+    offsetof(fs_engine_profile, order) == 12 && offsetof(fs_engine_profile, damping) == 16 &&
+    offsetof(fs_engine_profile, linear_damping) == 20 && offsetof(fs_engine_profile, added_linear_damping) == 24 &&
+    offsetof(fs_engine_profile, angular_damping) == 28 && offsetof(fs_engine_profile, first_step) == 32 &&
+    offsetof(fs_engine_profile, restitution_threshold) == 36 && offsetof(fs_engine_profile, restitution_base) == 40 &&
+    offsetof(fs_engine_profile, restitution_combine) == 44 && offsetof(fs_engine_profile, friction_combine) == 48 &&
+    offsetof(fs_engine_profile, contact) == 52 && offsetof(fs_engine_profile, contact_distance) == 56 &&
+    offsetof(fs_engine_profile, penetration_slop) == 60 && offsetof(fs_engine_profile, position_correction) == 64 &&
+    offsetof(fs_engine_profile, correction_is_velocity) == 68 &&
+    offsetof(fs_engine_profile, split_impulse_correction) == 72 &&
+    offsetof(fs_engine_profile, friction_warm_start) == 76 && offsetof(fs_engine_profile, max_linear_speed) == 80 &&
+    offsetof(fs_engine_profile, max_step_distance) == 84 && offsetof(fs_engine_profile, planar) == 88 &&
+    offsetof(fs_engine_profile, rotates) == 92 && offsetof(fs_engine_profile, triangle_mesh) == 96);
+static_assert(FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY == static_cast<int>(DampingOrder::DampingThenGravity) &&
+              FS_DAMPING_LAW_POWER == static_cast<int>(DampingLaw::Power) &&
+              FS_DAMPING_LAW_RATIONAL == static_cast<int>(DampingLaw::Rational) &&
+              FS_DAMPING_LAW_LINEAR_CLAMPED == static_cast<int>(DampingLaw::LinearClamped) &&
+              FS_COMBINE_AVERAGE == static_cast<int>(CombineRule::Average) &&
+              FS_COMBINE_MIN == static_cast<int>(CombineRule::Min) &&
+              FS_COMBINE_MAX == static_cast<int>(CombineRule::Max) &&
+              FS_COMBINE_MULTIPLY == static_cast<int>(CombineRule::Multiply) &&
+              FS_COMBINE_GEOMETRIC_MEAN == static_cast<int>(CombineRule::GeometricMean) &&
+              FS_COMBINE_SUM_CLAMPED == static_cast<int>(CombineRule::SumClamped) &&
+              FS_RESTITUTION_BASE_AFTER_GRAVITY == static_cast<int>(RestitutionBase::AfterGravity) &&
+              FS_FIRST_STEP_NO_GRAVITY == static_cast<int>(FirstStepRule::NoGravity) &&
+              FS_FIRST_STEP_DAMPING_ONLY == static_cast<int>(FirstStepRule::DampingOnly) &&
+              FS_CONTACT_PENETRATION == static_cast<int>(ContactMethod::Penetration) &&
+              FS_RENDER_NONE == static_cast<int>(RenderSmoothing::None) &&
+              FS_RENDER_INTERPOLATE == static_cast<int>(RenderSmoothing::Interpolate) &&
+              FS_RENDER_EXTRAPOLATE == static_cast<int>(RenderSmoothing::Extrapolate));
 
 // ---- The enumerations mirror the C++ ones value for value. ----------------------------------
 static_assert(FS_STATUS_OK == static_cast<int>(Status::Ok));
@@ -488,6 +520,114 @@ bool toCpp(const fs_throw_plan_request& q, ThrowPlanRequest& out) {
     return true;
 }
 
+// False for an enumeration or flag outside its values.
+bool toCpp(const fs_engine_profile& p, EngineProfile& out) {
+    const auto within = [](int32_t value, int32_t last) { return value >= 0 && value <= last; };
+    if (!within(p.engine, FS_ENGINE_BOX2D) || !within(p.order, FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY) ||
+        !within(p.damping, FS_DAMPING_LAW_POWER) || !within(p.first_step, FS_FIRST_STEP_DAMPING_ONLY) ||
+        !within(p.restitution_base, FS_RESTITUTION_BASE_AFTER_GRAVITY) ||
+        !within(p.restitution_combine, FS_COMBINE_SUM_CLAMPED) || !within(p.friction_combine, FS_COMBINE_SUM_CLAMPED) ||
+        !within(p.contact, FS_CONTACT_PENETRATION) || !within(p.correction_is_velocity, 1) || !within(p.planar, 1) ||
+        !within(p.rotates, 1) || !within(p.triangle_mesh, 1))
+        return false;
+    out.engine = static_cast<PhysicsEngine>(p.engine);
+    out.timestep = p.timestep;
+    out.substeps = p.substeps;
+    out.order = static_cast<DampingOrder>(p.order);
+    out.damping = static_cast<DampingLaw>(p.damping);
+    out.linearDamping = p.linear_damping;
+    out.addedLinearDamping = p.added_linear_damping;
+    out.angularDamping = p.angular_damping;
+    out.firstStep = static_cast<FirstStepRule>(p.first_step);
+    out.restitutionThreshold = p.restitution_threshold;
+    out.restitutionBase = static_cast<RestitutionBase>(p.restitution_base);
+    out.restitutionCombine = static_cast<CombineRule>(p.restitution_combine);
+    out.frictionCombine = static_cast<CombineRule>(p.friction_combine);
+    out.contact = static_cast<ContactMethod>(p.contact);
+    out.contactDistance = p.contact_distance;
+    out.penetrationSlop = p.penetration_slop;
+    out.positionCorrection = p.position_correction;
+    out.correctionIsVelocity = p.correction_is_velocity != 0;
+    out.splitImpulseCorrection = p.split_impulse_correction;
+    out.frictionWarmStart = p.friction_warm_start;
+    out.maxLinearSpeed = p.max_linear_speed;
+    out.maxStepDistance = p.max_step_distance;
+    out.planar = p.planar != 0;
+    out.rotates = p.rotates != 0;
+    out.triangleMesh = p.triangle_mesh != 0;
+    return true;
+}
+
+fs_engine_profile toC(const EngineProfile& p) {
+    fs_engine_profile r;
+    r.engine = static_cast<int32_t>(p.engine);
+    r.timestep = p.timestep;
+    r.substeps = p.substeps;
+    r.order = static_cast<int32_t>(p.order);
+    r.damping = static_cast<int32_t>(p.damping);
+    r.linear_damping = p.linearDamping;
+    r.added_linear_damping = p.addedLinearDamping;
+    r.angular_damping = p.angularDamping;
+    r.first_step = static_cast<int32_t>(p.firstStep);
+    r.restitution_threshold = p.restitutionThreshold;
+    r.restitution_base = static_cast<int32_t>(p.restitutionBase);
+    r.restitution_combine = static_cast<int32_t>(p.restitutionCombine);
+    r.friction_combine = static_cast<int32_t>(p.frictionCombine);
+    r.contact = static_cast<int32_t>(p.contact);
+    r.contact_distance = p.contactDistance;
+    r.penetration_slop = p.penetrationSlop;
+    r.position_correction = p.positionCorrection;
+    r.correction_is_velocity = p.correctionIsVelocity ? 1 : 0;
+    r.split_impulse_correction = p.splitImpulseCorrection;
+    r.friction_warm_start = p.frictionWarmStart;
+    r.max_linear_speed = p.maxLinearSpeed;
+    r.max_step_distance = p.maxStepDistance;
+    r.planar = p.planar ? 1 : 0;
+    r.rotates = p.rotates ? 1 : 0;
+    r.triangle_mesh = p.triangleMesh ? 1 : 0;
+    return r;
+}
+
+// fs_predict_projectile's work once the settings are in C++ form.
+fs_status predictInto(fs_dvec3 position, fs_vec3 velocity, float time, const ProjectileSettings& cppSettings,
+                      const fs_world* world, fs_trajectory_point* points, size_t capacity,
+                      fs_projectile_result* out) noexcept {
+    // The trajectory is predicted in C++ layout into the caller's buffer, then converted in
+    // place, last point first: an fs_trajectory_point is at least as large as a TrajectoryPoint,
+    // so C point i covers only C++ points i and later (already converted, or read just before).
+    // No allocation.
+    static_assert(sizeof(TrajectoryPoint) <= sizeof(fs_trajectory_point));
+    static_assert(alignof(TrajectoryPoint) <= alignof(fs_trajectory_point));
+    std::optional<CheckedCallbackWorld> callbackWorld;
+    const CollisionWorld* cppWorld = worldFor(world, callbackWorld);
+    std::span<TrajectoryPoint> trajectory;
+    if (capacity > 0) {
+        auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
+        std::uninitialized_default_construct_n(first, capacity);
+        trajectory = std::span<TrajectoryPoint>(first, capacity);
+    }
+    ProjectileResult result;
+    const Status s =
+        predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
+    if (callbackWorld && callbackWorld->invalid()) return FS_STATUS_INVALID_CALLBACK_HIT;
+    if (s != Status::Ok) return toC(s);
+    for (std::size_t i = result.trajectorySize; i-- > 0;) {
+        const fs_trajectory_point p = toC(trajectory[i]);
+        ::new (static_cast<void*>(points + i)) fs_trajectory_point(p);
+    }
+    out->position = toCPosition(result.position);
+    out->velocity = toC(result.velocity);
+    out->time = result.time;
+    out->bounces = result.bounces;
+    out->at_rest = result.atRest ? 1 : 0;
+    out->stopped_at_hit = result.stoppedAtHit ? 1 : 0;
+    out->hit_normal = toC(result.hitNormal);
+    out->trajectory_size = result.trajectorySize;
+    out->trajectory_needed = result.trajectoryNeeded;
+    if (capacity > 0 && result.trajectoryNeeded > result.trajectorySize) return FS_STATUS_BUFFER_TOO_SMALL;
+    return FS_STATUS_OK;
+}
+
 }  // namespace
 
 extern "C" {
@@ -739,40 +879,21 @@ fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
     if (settings == nullptr || out == nullptr || (points == nullptr && capacity > 0)) return FS_STATUS_NULL_POINTER;
     ProjectileSettings cppSettings;
     if (!toCpp(*settings, cppSettings)) return FS_STATUS_INVALID_SETTING;
-    // The trajectory is predicted in C++ layout into the caller's buffer, then converted in
-    // place, last point first: an fs_trajectory_point is at least as large as a TrajectoryPoint,
-    // so C point i covers only C++ points i and later (already converted, or read just before).
-    // No allocation.
-    static_assert(sizeof(TrajectoryPoint) <= sizeof(fs_trajectory_point));
-    static_assert(alignof(TrajectoryPoint) <= alignof(fs_trajectory_point));
-    std::optional<CheckedCallbackWorld> callbackWorld;
-    const CollisionWorld* cppWorld = worldFor(world, callbackWorld);
-    std::span<TrajectoryPoint> trajectory;
-    if (capacity > 0) {
-        auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
-        std::uninitialized_default_construct_n(first, capacity);
-        trajectory = std::span<TrajectoryPoint>(first, capacity);
-    }
-    ProjectileResult result;
-    const Status s =
-        predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
-    if (callbackWorld && callbackWorld->invalid()) return FS_STATUS_INVALID_CALLBACK_HIT;
-    if (s != Status::Ok) return toC(s);
-    for (std::size_t i = result.trajectorySize; i-- > 0;) {
-        const fs_trajectory_point p = toC(trajectory[i]);
-        ::new (static_cast<void*>(points + i)) fs_trajectory_point(p);
-    }
-    out->position = toCPosition(result.position);
-    out->velocity = toC(result.velocity);
-    out->time = result.time;
-    out->bounces = result.bounces;
-    out->at_rest = result.atRest ? 1 : 0;
-    out->stopped_at_hit = result.stoppedAtHit ? 1 : 0;
-    out->hit_normal = toC(result.hitNormal);
-    out->trajectory_size = result.trajectorySize;
-    out->trajectory_needed = result.trajectoryNeeded;
-    if (capacity > 0 && result.trajectoryNeeded > result.trajectorySize) return FS_STATUS_BUFFER_TOO_SMALL;
-    return FS_STATUS_OK;
+    return predictInto(position, velocity, time, cppSettings, world, points, capacity, out);
+}
+
+fs_status fs_predict_projectile_with_profile(fs_dvec3 position, fs_vec3 velocity, float time,
+                                             const fs_projectile_settings* settings, const fs_engine_profile* profile,
+                                             const fs_world* world, fs_trajectory_point* points, size_t capacity,
+                                             fs_projectile_result* out) noexcept {
+    if (settings == nullptr || profile == nullptr || out == nullptr || (points == nullptr && capacity > 0))
+        return FS_STATUS_NULL_POINTER;
+    ProjectileSettings cppSettings;
+    if (!toCpp(*settings, cppSettings) || !toCpp(*profile, cppSettings.engine)) return FS_STATUS_INVALID_SETTING;
+    // The profile is checked whatever the method (validateProjectileSettings checks it only for
+    // the Engine method).
+    if (const Status s = validateEngineProfile(cppSettings.engine); s != Status::Ok) return toC(s);
+    return predictInto(position, velocity, time, cppSettings, world, points, capacity, out);
 }
 
 fs_aim_shot fs_aim_shot_default(void) noexcept {
@@ -1006,6 +1127,45 @@ fs_status fs_plan_throw(const fs_throw_plan_request* request, const fs_world* wo
     out->closest_distance = result.closestDistance;
     out->closest_velocity = toC(result.closestVelocity);
     out->reserved = 0.0f;
+    return FS_STATUS_OK;
+}
+
+fs_engine_profile fs_engine_profile_default(int32_t engine) noexcept {
+    if (engine < FS_ENGINE_CUSTOM || engine > FS_ENGINE_BOX2D) engine = FS_ENGINE_CUSTOM;
+    return toC(engineProfile(static_cast<PhysicsEngine>(engine)));
+}
+
+fs_status fs_validate_engine_profile(const fs_engine_profile* profile) noexcept {
+    if (profile == nullptr) return FS_STATUS_NULL_POINTER;
+    EngineProfile cppProfile;
+    if (!toCpp(*profile, cppProfile)) return FS_STATUS_INVALID_SETTING;
+    return toC(validateEngineProfile(cppProfile));
+}
+
+size_t fs_trajectory_capacity_with_profile(float time, const fs_projectile_settings* settings,
+                                           const fs_engine_profile* profile) noexcept {
+    if (settings == nullptr || profile == nullptr || !std::isfinite(time) || time < 0.0f) return 0;
+    ProjectileSettings cppSettings;
+    if (!toCpp(*settings, cppSettings) || !toCpp(*profile, cppSettings.engine)) return 0;
+    if (validateEngineProfile(cppSettings.engine) != Status::Ok ||
+        validateProjectileSettings(cppSettings) != Status::Ok)
+        return 0;
+    return trajectoryCapacity(time, cppSettings);
+}
+
+fs_status fs_rendered_position(const fs_trajectory_point* trajectory, size_t count, float step, float render_time,
+                               int32_t smoothing, fs_dvec3* out) noexcept {
+    if (out == nullptr) return FS_STATUS_NULL_POINTER;
+    if (smoothing < FS_RENDER_NONE || smoothing > FS_RENDER_EXTRAPOLATE) return FS_STATUS_INVALID_SETTING;
+    if (!std::isfinite(step) || step <= 0.0f) return FS_STATUS_INVALID_STEP;
+    if (!std::isfinite(render_time)) return FS_STATUS_NON_FINITE_INPUT;
+    if (count == 0) return FS_STATUS_INVALID_STEP;
+    std::span<const TrajectoryPoint> points;
+    if (const fs_status c = toCpp(trajectory, count, points); c != FS_STATUS_OK) return c;
+    const RVec3 position = renderedPosition(points, step, render_time, static_cast<RenderSmoothing>(smoothing));
+    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
+        return FS_STATUS_NON_FINITE_RESULT;
+    *out = toCPosition(position);
     return FS_STATUS_OK;
 }
 

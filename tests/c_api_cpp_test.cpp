@@ -654,3 +654,125 @@ TEST(CApi, MeshWorldsMatchCpp) {
     EXPECT_GT(bounced, 30);  // the throws do meet the terrain
     for (fs_world* w : cWorlds) fs_world_destroy(w);
 }
+
+// Every field of an engine profile crosses the boundary: random profiles (each field in its
+// range) predict the same flights bit for bit, and the drawn positions between steps agree.
+TEST(CApi, EngineProfilesMatchCpp) {
+    Random random(41);
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    OrientedBox box;
+    box.center = RVec3(3, 1, 0);
+    box.halfExtents = Vec3(0.5f, 1, 2);
+    ASSERT_EQ(world.add(box, SurfaceMaterial{0.7f, 0.2f}), Status::Ok);
+    fs_world* cWorld = fs_world_create();
+    ASSERT_NE(cWorld, nullptr);
+    const fs_plane cPlane{{0, 1, 0}, 0.0f, 0.0};
+    const fs_box cBox{toCPosition(box.center), toC(box.halfExtents), fs_quat{0, 0, 0, 1}, 0.0f};
+    const fs_material cMaterial{0.7f, 0.2f};
+    ASSERT_EQ(fs_world_add_plane(cWorld, &cPlane, nullptr), FS_STATUS_OK);
+    ASSERT_EQ(fs_world_add_box(cWorld, &cBox, &cMaterial), FS_STATUS_OK);
+    std::vector<TrajectoryPoint> cppPoints(4096);
+    std::vector<fs_trajectory_point> cPoints(4096);
+    for (int i = 0; i < kCases; ++i) {
+        const int named = random.integer(0, 7);
+        EngineProfile profile = engineProfile(static_cast<PhysicsEngine>(named));
+        fs_engine_profile c = fs_engine_profile_default(named);
+        // Now and then change every field (valid ranges, a bad value 1 time in 20).
+        if (random.chance(0.7)) {
+            profile.timestep = random.chance(0.05) ? 0.0f : random.uniform(1.0f / 240, 1.0f / 20);
+            profile.substeps = static_cast<std::uint32_t>(random.integer(1, 6));
+            profile.order = static_cast<DampingOrder>(random.integer(0, 1));
+            profile.damping = static_cast<DampingLaw>(random.integer(0, 3));
+            profile.linearDamping = random.uniform(0, 2);
+            profile.addedLinearDamping = random.chance(0.5) ? 0.0f : random.uniform(0, 0.5f);
+            profile.angularDamping = random.uniform(0, 1);
+            profile.firstStep = static_cast<FirstStepRule>(random.integer(0, 2));
+            profile.restitutionThreshold = random.uniform(0, 2);
+            profile.restitutionBase = static_cast<RestitutionBase>(random.integer(0, 1));
+            profile.restitutionCombine = static_cast<CombineRule>(random.integer(0, 5));
+            profile.frictionCombine = static_cast<CombineRule>(random.integer(0, 5));
+            profile.contact = static_cast<ContactMethod>(random.integer(0, 1));
+            profile.contactDistance = random.uniform(0, 0.05f);
+            profile.penetrationSlop = random.uniform(0, 0.01f);
+            profile.positionCorrection = random.uniform(0, 1);
+            profile.correctionIsVelocity = random.chance(0.5);
+            profile.splitImpulseCorrection = random.uniform(0, 1);
+            profile.frictionWarmStart = random.chance(0.5) ? 0.0f : random.uniform(0, 1);
+            profile.maxLinearSpeed = random.uniform(5, 600);
+            profile.maxStepDistance = random.uniform(0.5f, 5);
+            profile.planar = random.chance(0.2);
+            profile.rotates = random.chance(0.7);
+            profile.triangleMesh = random.chance(0.2);
+            c = fs_engine_profile{static_cast<int32_t>(profile.engine),
+                                  profile.timestep,
+                                  profile.substeps,
+                                  static_cast<int32_t>(profile.order),
+                                  static_cast<int32_t>(profile.damping),
+                                  profile.linearDamping,
+                                  profile.addedLinearDamping,
+                                  profile.angularDamping,
+                                  static_cast<int32_t>(profile.firstStep),
+                                  profile.restitutionThreshold,
+                                  static_cast<int32_t>(profile.restitutionBase),
+                                  static_cast<int32_t>(profile.restitutionCombine),
+                                  static_cast<int32_t>(profile.frictionCombine),
+                                  static_cast<int32_t>(profile.contact),
+                                  profile.contactDistance,
+                                  profile.penetrationSlop,
+                                  profile.positionCorrection,
+                                  profile.correctionIsVelocity ? 1 : 0,
+                                  profile.splitImpulseCorrection,
+                                  profile.frictionWarmStart,
+                                  profile.maxLinearSpeed,
+                                  profile.maxStepDistance,
+                                  profile.planar ? 1 : 0,
+                                  profile.rotates ? 1 : 0,
+                                  profile.triangleMesh ? 1 : 0};
+        }
+        EXPECT_EQ(fs_validate_engine_profile(&c), static_cast<fs_status>(validateEngineProfile(profile))) << i;
+        ProjectileSettings settings;
+        settings.method = ProjectileMethod::Engine;
+        settings.engine = profile;
+        settings.restitution = random.uniform(0, 1);
+        settings.friction = random.uniform(0, 0.8f);
+        settings.radius = random.uniform(0.02f, 0.3f);
+        fs_projectile_settings cSettings = fs_projectile_settings_default();
+        cSettings.method = FS_METHOD_ENGINE;
+        cSettings.restitution = settings.restitution;
+        cSettings.friction = settings.friction;
+        cSettings.radius = settings.radius;
+        const RVec3 start(random.uniform(-2, 2), random.uniform(0.5f, 3), random.uniform(-2, 2));
+        const Vec3 velocity(random.uniform(-3, 8), random.uniform(-2, 6), random.uniform(-3, 3));
+        const float time = random.uniform(0.2f, 3.0f);
+        ProjectileResult cpp;
+        fs_projectile_result cResult{};
+        const Status st = validateEngineProfile(profile) == Status::Ok
+                              ? predictProjectile(start, velocity, time, settings, &world, cppPoints, cpp)
+                              : validateEngineProfile(profile);
+        ASSERT_EQ(fs_predict_projectile_with_profile(toCPosition(start), toC(velocity), time, &cSettings, &c, cWorld,
+                                                     cPoints.data(), cPoints.size(), &cResult),
+                  static_cast<fs_status>(st))
+            << i;
+        EXPECT_EQ(fs_trajectory_capacity_with_profile(time, &cSettings, &c),
+                  st == Status::Ok ? trajectoryCapacity(time, settings) : std::size_t{0})
+            << i;
+        if (st != Status::Ok) continue;
+        EXPECT_TRUE(samePosition(cResult.position, cpp.position)) << i;
+        EXPECT_TRUE(same(cResult.velocity, cpp.velocity)) << i;
+        EXPECT_EQ(cResult.bounces, cpp.bounces) << i;
+        ASSERT_EQ(cResult.trajectory_size, cpp.trajectorySize) << i;
+        const float renderTime = random.uniform(-0.1f, time + 0.1f);
+        const int smoothing = random.integer(0, 2);
+        fs_dvec3 drawn{};
+        ASSERT_EQ(fs_rendered_position(cPoints.data(), cResult.trajectory_size, profile.timestep, renderTime, smoothing,
+                                       &drawn),
+                  FS_STATUS_OK)
+            << i;
+        EXPECT_TRUE(samePosition(
+            drawn, renderedPosition(std::span<const TrajectoryPoint>(cppPoints.data(), cpp.trajectorySize),
+                                    profile.timestep, renderTime, static_cast<RenderSmoothing>(smoothing))))
+            << i;
+    }
+    fs_world_destroy(cWorld);
+}

@@ -725,6 +725,100 @@ static void test_meshes(void) {
     remove("c_api_test_broken.obj");
 }
 
+/* ---- Engine profiles and what a game draws between steps --------------------------------------- */
+
+static void test_engine_profiles(void) {
+    fs_engine_profile profile = fs_engine_profile_default(FS_ENGINE_JOLT);
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512], same_points[512];
+    fs_projectile_result result, same;
+    fs_dvec3 drawn;
+    double px = 0.0, py = 2.0, vx = 4.0, vy = 3.0, d;
+    int k;
+    /* The named defaults (docs/engines.md): Jolt bounces above 1 m/s, PhysX above 2 m/s, Rapier
+     * takes 4 sub-steps, Bullet damps before gravity with the power law. */
+    CHECK(profile.engine == FS_ENGINE_JOLT && fabs(profile.timestep - 1.0 / 60.0) < 1e-9);
+    CHECK(profile.restitution_threshold == 1.0f && profile.order == FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING);
+    CHECK(fs_engine_profile_default(FS_ENGINE_PHYSX).restitution_threshold == 2.0f);
+    CHECK(fs_engine_profile_default(FS_ENGINE_RAPIER).substeps == 4u);
+    CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).damping == FS_DAMPING_LAW_POWER);
+    CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).order == FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY);
+    CHECK(fs_engine_profile_default(99).engine == FS_ENGINE_CUSTOM);
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_OK);
+
+    /* The named profile through either door: the same flight, bit for bit. */
+    settings.method = FS_METHOD_ENGINE;
+    settings.engine = FS_ENGINE_JOLT;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings, NULL, same_points,
+                                       512, &same),
+                 FS_STATUS_OK);
+    settings.engine = FS_ENGINE_BOX2D; /* ignored: the profile rules */
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_OK);
+    CHECK(result.position.x == same.position.x && result.position.y == same.position.y);
+    CHECK(result.trajectory_size == same.trajectory_size);
+
+    /* A game's own settings: 100 Hz and a drag of 0.5 per second (Unity's Rigidbody.drag) on a
+     * custom profile, against its recurrence stepped here: v = (v + g dt) max(0, 1 - c dt),
+     * p += v dt. */
+    profile = fs_engine_profile_default(FS_ENGINE_CUSTOM);
+    profile.timestep = 0.01f;
+    profile.damping = FS_DAMPING_LAW_LINEAR_CLAMPED;
+    profile.linear_damping = 0.5f;
+    CHECK(fs_trajectory_capacity_with_profile(1.0f, &settings, &profile) == 100 + 3 + 128);
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_OK);
+    d = 1.0 - 0.5 * (double)0.01f;
+    for (k = 0; k < 100; ++k) {
+        vx = vx * d;
+        vy = (vy - kGravity * (double)0.01f) * d;
+        px += vx * (double)0.01f;
+        py += vy * (double)0.01f;
+    }
+    CHECK(result.trajectory_size == 101);
+    CHECK_NEAR(result.position.x, px, 1e-5); /* float steps against double ones: 1e-6 m per step at most */
+    CHECK_NEAR(result.position.y, py, 1e-5);
+    CHECK_NEAR(result.velocity.y, vy, 1e-5);
+
+    /* What the game draws at 0.255 s: step 25 completed, halfway to step 26. */
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.x, points[25].position.x, 1e-6);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_INTERPOLATE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.x, points[24].position.x + 0.5 * (points[25].position.x - points[24].position.x), 1e-5);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_EXTRAPOLATE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.y, points[25].position.y + 0.005 * points[25].velocity.y, 1e-5);
+
+    /* Refusals. */
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.0f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_rendered_position(points, 0, 0.01f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, NAN, FS_RENDER_NONE, &drawn), FS_STATUS_NON_FINITE_INPUT);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.2f, 3, &drawn), FS_STATUS_INVALID_SETTING);
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings, NULL,
+                                                    NULL, points, 512, &result),
+                 FS_STATUS_NULL_POINTER);
+    profile.timestep = 0.0f;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_STEP);
+    CHECK(fs_trajectory_capacity_with_profile(1.0f, &settings, &profile) == 0);
+    settings.method = FS_METHOD_EXACT; /* a bad profile is refused whatever the method */
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_INVALID_STEP);
+    profile.timestep = 0.01f;
+    profile.order = 5;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.order = FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING;
+    profile.planar = 2;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.planar = 0;
+    profile.substeps = 0;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.substeps = 1;
+    profile.linear_damping = NAN;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_NON_FINITE_INPUT);
+}
+
 /* ---- Danger --------------------------------------------------------------------------------- */
 
 /* A grenade in free flight from (0, 10, 0) at (3, 0, 0) m/s: on the parabola at every time. */
@@ -1202,6 +1296,7 @@ int main(void) {
     test_projectile_event_cap();
     test_callback_world();
     test_meshes();
+    test_engine_profiles();
     test_danger_projectile();
     test_danger_vehicle();
     test_plan_throw();

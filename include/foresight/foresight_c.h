@@ -481,6 +481,130 @@ FS_API fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, floa
                                        fs_trajectory_point* points, size_t capacity,
                                        fs_projectile_result* out) FS_NOEXCEPT;
 
+/* ---- Engine profiles: a game's own engine settings ------------------------------------------ */
+
+/// Where the damping factor goes in an engine step (fs_engine_profile::order).
+enum {
+    FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING = 0,  ///< `v = (v + g dt) d` (Jolt, PhysX, Rapier).
+    FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY = 1,  ///< `v = v d + g dt` (Bullet, Godot 3, Box2D).
+};
+
+/// The damping factor `d` per step for a coefficient `c` (fs_engine_profile::damping).
+enum {
+    FS_DAMPING_LAW_NONE = 0,            ///< `d = 1`.
+    FS_DAMPING_LAW_LINEAR_CLAMPED = 1,  ///< `d = max(0, 1 - c dt)` (Jolt, PhysX, Godot 3).
+    FS_DAMPING_LAW_RATIONAL = 2,        ///< `d = 1 / (1 + c dt)` (Rapier, Box2D).
+    FS_DAMPING_LAW_POWER = 3,           ///< `d = (1 - min(c, 1))^dt` (Bullet).
+};
+
+/// How two materials' coefficients combine (restitution_combine, friction_combine).
+enum {
+    FS_COMBINE_AVERAGE = 0,         ///< `(a + b) / 2`.
+    FS_COMBINE_MIN = 1,             ///< `min(a, b)`.
+    FS_COMBINE_MAX = 2,             ///< `max(a, b)`.
+    FS_COMBINE_MULTIPLY = 3,        ///< `a b`.
+    FS_COMBINE_GEOMETRIC_MEAN = 4,  ///< `sqrt(a b)`.
+    FS_COMBINE_SUM_CLAMPED = 5,     ///< `clamp(a + b, 0, 1)`.
+};
+
+/// Which velocity a bounce reflects (fs_engine_profile::restitution_base).
+enum {
+    FS_RESTITUTION_BASE_STEP_START = 0,     ///< the velocity at the start of the step (Jolt, Rapier, Bullet).
+    FS_RESTITUTION_BASE_AFTER_GRAVITY = 1,  ///< after that step's gravity and damping (PhysX, Godot 3, Box2D).
+};
+
+/// What a body's first step does (fs_engine_profile::first_step).
+enum {
+    FS_FIRST_STEP_NORMAL = 0,        ///< like every other step.
+    FS_FIRST_STEP_NO_GRAVITY = 1,    ///< `p += v dt` only (Godot 3 GodotPhysics).
+    FS_FIRST_STEP_DAMPING_ONLY = 2,  ///< `v = v d; p += v dt` (Godot 3 with Bullet).
+};
+
+/// When a contact starts to act (fs_engine_profile::contact).
+enum {
+    FS_CONTACT_SPECULATIVE = 0,  ///< within contact_distance at a step's start (most engines).
+    FS_CONTACT_PENETRATION = 1,  ///< once overlapping at a step's start (Godot 3 GodotPhysics).
+};
+
+/// How an engine steps a sphere and answers its contacts (foresight::EngineProfile, which
+/// engine_profile.h and docs/engines.md explain field by field): start from
+/// fs_engine_profile_default(FS_ENGINE_*) and set what the game changes, typically `timestep`
+/// (Unity's Time.fixedDeltaTime, Godot's physics_ticks_per_second) and `linear_damping` (Unity's
+/// Rigidbody.drag, Godot's linear_damp). Enumerations are the FS_* constants above, flags 0 or 1.
+/// 100 bytes, alignment 4, every field 4 bytes in this order: engine 0, timestep 4, substeps 8,
+/// order 12, damping 16, linear_damping 20, added_linear_damping 24, angular_damping 28,
+/// first_step 32, restitution_threshold 36, restitution_base 40, restitution_combine 44,
+/// friction_combine 48, contact 52, contact_distance 56, penetration_slop 60,
+/// position_correction 64, correction_is_velocity 68, split_impulse_correction 72,
+/// friction_warm_start 76, max_linear_speed 80, max_step_distance 84, planar 88, rotates 92,
+/// triangle_mesh 96.
+typedef struct fs_engine_profile {
+    int32_t engine;                  ///< FS_ENGINE_*: which engine the values describe.
+    float timestep;                  ///< fixed step [Units: s] [Limit: 1e-5 .. 1].
+    uint32_t substeps;               ///< equal sub-steps per step [Limit: 1 .. 64].
+    int32_t order;                   ///< FS_DAMPING_ORDER_*.
+    int32_t damping;                 ///< FS_DAMPING_LAW_*.
+    float linear_damping;            ///< the body's linear damping [Units: 1/s] [Limit: >= 0].
+    float added_linear_damping;      ///< a project default added to it [Units: 1/s] [Limit: >= 0].
+    float angular_damping;           ///< [Units: 1/s] [Limit: >= 0].
+    int32_t first_step;              ///< FS_FIRST_STEP_*.
+    float restitution_threshold;     ///< no bounce at or below this approach speed [Units: m/s] [Limit: >= 0].
+    int32_t restitution_base;        ///< FS_RESTITUTION_BASE_*.
+    int32_t restitution_combine;     ///< FS_COMBINE_* for a surface's own restitution.
+    int32_t friction_combine;        ///< FS_COMBINE_* for a surface's own friction.
+    int32_t contact;                 ///< FS_CONTACT_*.
+    float contact_distance;          ///< speculative contact distance [Units: m] [Limit: >= 0].
+    float penetration_slop;          ///< penetration left alone [Units: m] [Limit: >= 0].
+    float position_correction;       ///< fraction of the penetration removed per step [Limit: 0 .. 1].
+    int32_t correction_is_velocity;  ///< 1: the correction is a velocity kept by the body (Bullet, Godot 3).
+    float split_impulse_correction;  ///< Bullet's split impulse fraction [Limit: 0 .. 1].
+    float friction_warm_start;       ///< warm-started fraction of friction [Limit: 0 .. 1].
+    float max_linear_speed;          ///< speed cap [Units: m/s] [Limit: > 0].
+    float max_step_distance;         ///< distance cap per step [Units: m] [Limit: > 0].
+    int32_t planar;                  ///< 1: motion in the x-y plane only (Box2D).
+    int32_t rotates;                 ///< 1: a rolling solid sphere; 0: rotation locked.
+    int32_t triangle_mesh;           ///< 1: the world's surfaces are an engine triangle mesh (Bullet).
+} fs_engine_profile;
+
+/// The named profile of `engine` (FS_ENGINE_*) with that engine's own defaults
+/// (foresight::engineProfile); FS_ENGINE_CUSTOM's for a value outside the enumeration.
+FS_API fs_engine_profile fs_engine_profile_default(int32_t engine) FS_NOEXCEPT;
+
+/// Checks a profile (foresight::validateEngineProfile).
+/// @return OK, NULL_POINTER, NON_FINITE_INPUT, INVALID_STEP (timestep) or INVALID_SETTING.
+FS_API fs_status fs_validate_engine_profile(const fs_engine_profile* profile) FS_NOEXCEPT;
+
+/// fs_trajectory_capacity for the Engine method with `profile` instead of settings->engine.
+FS_API size_t fs_trajectory_capacity_with_profile(float time, const fs_projectile_settings* settings,
+                                                  const fs_engine_profile* profile) FS_NOEXCEPT;
+
+/// fs_predict_projectile with `profile` as the engine of the Engine method (settings->engine is
+/// then ignored; other methods ignore the profile, which must still be valid).
+/// @return as fs_predict_projectile, NULL_POINTER (profile), and the refusals of
+///         fs_validate_engine_profile.
+FS_API fs_status fs_predict_projectile_with_profile(fs_dvec3 position, fs_vec3 velocity, float time,
+                                                    const fs_projectile_settings* settings,
+                                                    const fs_engine_profile* profile, const fs_world* world,
+                                                    fs_trajectory_point* points, size_t capacity,
+                                                    fs_projectile_result* out) FS_NOEXCEPT;
+
+/// How a game shows a body between its fixed physics steps (fs_rendered_position).
+enum {
+    FS_RENDER_NONE = 0,         ///< the last completed step.
+    FS_RENDER_INTERPOLATE = 1,  ///< between the last two steps, one step behind (Unity, Godot 4 interpolation).
+    FS_RENDER_EXTRAPOLATE = 2,  ///< the last step moved on with its velocity (Unity's extrapolation).
+};
+
+/// Where a game draws a fixed-step trajectory (Engine or Stepped: Start, then one point per
+/// step) at `render_time` [Units: s] (foresight::renderedPosition, projectile.h).
+/// @param step  the trajectory's step [Units: s] [Limit: > 0, finite]: the profile's timestep
+///              (Engine) or settings.step (Stepped).
+/// @return OK, NULL_POINTER (trajectory with a count above 0, or out), INVALID_STEP (no points,
+///         or a step that is not positive and finite), NON_FINITE_INPUT (render_time) or
+///         INVALID_SETTING (smoothing); `out` is written only on OK.
+FS_API fs_status fs_rendered_position(const fs_trajectory_point* trajectory, size_t count, float step,
+                                      float render_time, int32_t smoothing, fs_dvec3* out) FS_NOEXCEPT;
+
 /* ---- Aim ------------------------------------------------------------------------------------ */
 
 /// What fixes the launch velocity besides meeting the target (fs_aim_shot::constraint).
