@@ -257,9 +257,8 @@ export declare class World {
     addTriangle(triangle: { a: Vec3Like; b: Vec3Like; c: Vec3Like }, material?: Material): this;
     /** Frees the world; a second call does nothing. */
     delete(): void;
-    /** The same as delete(). */
+    /** The same as delete() (also World.prototype[Symbol.dispose] where the runtime has it, for `using`). */
     dispose(): void;
-    [Symbol.dispose](): void;
 }
 
 /** The API on one WebAssembly instance. */
