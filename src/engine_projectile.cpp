@@ -248,7 +248,7 @@ private:
         const CollisionWorld* world = mWorld;
         mWorld = &planeWorld;
         mCoastPositions[0] = mPosition;
-        std::uint64_t taken = 0;
+        std::size_t taken = 0;  // size_t: indexes mCoastPositions (32 bits on wasm32)
         double travel = 0.0;
         bool sunk = false;
         outcome = StepOutcome::Next;
@@ -350,12 +350,13 @@ private:
             --mCoastWait;
             return 0;
         }
-        const std::uint64_t n = std::min<std::uint64_t>(mCoastSteps, steps - k + 1);
+        // size_t: indexes mCoastPositions (32 bits on wasm32); at most kMaxCoastSteps.
+        const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(mCoastSteps, steps - k + 1));
         if (n < 2) return 0;
         const double dt = mRec.dt;
         DVec3 position = mPosition, velocity = mVelocity;
         mCoastPositions[0] = position;
-        for (std::uint64_t j = 1; j <= n; ++j) {
+        for (std::size_t j = 1; j <= n; ++j) {
             DVec3 v, freeMotion;
             freeStep(false, velocity, v, freeMotion);
             if (glm::length(v) * dt > mProfile.maxStepDistance) return 0;  // Box2D's limit acts
@@ -372,7 +373,7 @@ private:
             if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
             return 0;
         }
-        for (std::uint64_t j = 1; j <= n; ++j) {
+        for (std::size_t j = 1; j <= n; ++j) {
             spinDown();
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
