@@ -1638,7 +1638,8 @@ private:
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
         const double maxCorrective = 3.0;         // normalized_max_corrective_velocity [m/s]
         const double maxSpin = 0.25 * M_PI / dt;  // at most 45 degrees of rotation per step
-        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        // Per unit mass; 0 when the sphere does not turn (rotation locked, or a point).
+        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
         const DVec3 start = mPosition;
         DVec3 x = mPosition;
@@ -1944,7 +1945,9 @@ private:
             anchor[i] = start - (s.gap + mRadius) * s.normal;
             arm[i] = rotated(-mRadius * s.normal, turn);
         }
-        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        // Per unit mass; 0 when the sphere does not turn (rotation locked, or a point: radius 0
+        // would divide by zero).
+        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
         for (int iteration = 0; iteration < 2; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 const Surface& s = mSurfaces[i];
