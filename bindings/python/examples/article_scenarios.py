@@ -40,7 +40,7 @@ def grenade(out, name, settings, world):
     result = fs.predict_projectile((0, 1.6, 0), (0, 4, 12), fuse, settings, world)
     trajectory = result.trajectory
     out.append("%s %s: %u bounces, %u points\n" % ("grenade", name, result.bounces, len(trajectory)))
-    bounces = [i for i, event in enumerate(trajectory.events) if event == int(fs.TrajectoryEvent.Bounce)]
+    bounces = [i for i, event in enumerate(trajectory.events) if event == fs.TrajectoryEvent.Bounce]
     for i in bounces[:3]:
         out.append("  bounce t " + number(trajectory.times[i]) + vec(" position", trajectory.positions[i])
                    + vec(" normal", trajectory.normals[i]) + "\n")

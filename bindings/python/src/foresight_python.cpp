@@ -826,13 +826,22 @@ PYBIND11_MODULE(foresight, m) {
         .value("Exact", ProjectileMethod::Exact, "event-driven, exact impact times (default)")
         .value("Stepped", ProjectileMethod::Stepped, "the reference article's fixed-step loop")
         .value("Engine", ProjectileMethod::Engine, "step for step as a physics engine (settings.engine)");
-    py::enum_<TrajectoryEvent>(m, "TrajectoryEvent", "What a trajectory point marks (Trajectory.events).")
-        .value("Start", TrajectoryEvent::Start)
-        .value("Step", TrajectoryEvent::Step)
-        .value("Bounce", TrajectoryEvent::Bounce)
-        .value("Rest", TrajectoryEvent::Rest)
-        .value("Hit", TrajectoryEvent::Hit)
-        .value("End", TrajectoryEvent::End);
+    // An enum.IntEnum (not a pybind11 enum): Trajectory.events is a uint8 array, and NumPy compares
+    // it with an IntEnum member (events == TrajectoryEvent.Bounce) as with the int it is.
+    {
+        py::list members;
+        for (const auto& [name, value] :
+             {std::pair{"Start", TrajectoryEvent::Start}, std::pair{"Step", TrajectoryEvent::Step},
+              std::pair{"Bounce", TrajectoryEvent::Bounce}, std::pair{"Rest", TrajectoryEvent::Rest},
+              std::pair{"Hit", TrajectoryEvent::Hit}, std::pair{"End", TrajectoryEvent::End}})
+            members.append(py::make_tuple(name, static_cast<int>(value)));
+        py::object trajectoryEvent = py::module_::import("enum").attr("IntEnum")("TrajectoryEvent", members);
+        trajectoryEvent.attr("__module__") = "foresight";
+        trajectoryEvent.attr("__doc__") =
+            "What a trajectory point marks (the values of Trajectory.events): Start (t = 0), Step, Bounce\n"
+            "(an impact; has a normal), Rest (came to rest, Exact), Hit (stopped at an impact), End.";
+        m.attr("TrajectoryEvent") = trajectoryEvent;
+    }
     m.attr("UNLIMITED_BOUNCES") = kUnlimitedBounces;
 
     py::class_<ProjectileSettings> projectileSettings(m, "ProjectileSettings",
