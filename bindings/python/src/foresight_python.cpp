@@ -16,6 +16,8 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -163,19 +165,26 @@ py::array_t<float> fromQuat(const Quat& q) {
     return a;
 }
 
-/// "(1, 2, 3)" with Python's float repr of each component.
+/// The shortest text that reads back as `value` (std::to_chars), in Python's style: "2.5", "0.0",
+/// "1e-07", "inf". A float is shown as a float (0.05f is "0.05", not 0.05000000074505806).
+template <typename T>
+std::string floatText(T value) {
+    std::array<char, 64> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    std::string text(buffer.data(), result.ptr);
+    if (text.find_first_of(".ein") == std::string::npos) text += ".0";
+    return text;
+}
+
+/// "(1.0, 2.0, 3.0)": the components of a glm vector.
 template <typename V>
 std::string vecText(const V& v) {
     std::string text = "(";
-    for (int i = 0; i < V::length(); ++i) {
-        text += (i ? ", " : "") + py::repr(py::float_(static_cast<double>(v[i]))).cast<std::string>();
-    }
+    for (int i = 0; i < V::length(); ++i) text += (i ? ", " : "") + floatText(v[i]);
     return text + ")";
 }
 
 std::string quatText(const Quat& q) { return vecText(glm::vec4(q.x, q.y, q.z, q.w)); }
-
-std::string floatText(double value) { return py::repr(py::float_(value)).cast<std::string>(); }
 
 /// A float argument that must be finite is left to the library to check; this only converts.
 float toFloat(double value) { return static_cast<float>(value); }
@@ -269,6 +278,20 @@ PyProjectileResult predictProjectilePy(py::handle position, py::handle velocity,
 
 // ---------------------------------------------------------------------------------------------
 // Dead reckoning
+
+/// The median of `repeats` runs of `run` [Units: s], without the GIL.
+template <typename Run>
+double medianSeconds(int repeats, Run&& run) {
+    std::vector<double> samples;
+    py::gil_scoped_release release;
+    for (int i = 0; i < std::max(repeats, 1); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        run();
+        samples.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::nth_element(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(samples.size() / 2), samples.end());
+    return samples[samples.size() / 2];
+}
 
 /// Reads the batch arrays, checks their shapes, and fills DeadReckoningState values.
 struct BatchInput {
@@ -404,16 +427,7 @@ public:
     /// C++ reference timing: the median of `repeats` calls of DeadReckoningBatch::extrapolate
     /// made from C++ on this batch [Units: s].
     double timeExtrapolate(double time, double limit, int repeats) {
-        std::vector<double> samples;
-        py::gil_scoped_release release;
-        for (int i = 0; i < std::max(repeats, 1); ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            mBatch.extrapolate(time, static_cast<float>(limit), *mResults);
-            samples.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-        std::nth_element(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(samples.size() / 2),
-                         samples.end());
-        return samples[samples.size() / 2];
+        return medianSeconds(repeats, [&] { mBatch.extrapolate(time, static_cast<float>(limit), *mResults); });
     }
 
     const py::tuple& views() const { return mViews; }
@@ -441,6 +455,18 @@ py::tuple predictDeadReckoningBatchPy(py::handle alg, py::handle pos, py::handle
     }
     py::tuple views = resultViews(results, true);
     return py::make_tuple(views[0], views[1], views[2], refused);
+}
+
+/// Benchmark helper: predictDeadReckoningBatch timed from C++ on the states of the arrays
+/// (converted once, not timed) [Units: s], the reference of predict_dead_reckoning_batch.
+double timeCppPredictBatch(py::handle alg, py::handle pos, py::handle vel, py::handle acc, py::handle ori,
+                           py::handle ang, py::handle stamps, double time, int repeats) {
+    const BatchInput in(alg, pos, vel, acc, ori, ang, stamps);
+    std::vector<DeadReckoningState> states(in.count);
+    for (std::size_t i = 0; i < in.count; ++i) states[i] = in.state(i);
+    std::vector<double> timestamps(in.timestamps.data(), in.timestamps.data() + in.count);
+    std::vector<DeadReckoningResult> out(in.count);
+    return medianSeconds(repeats, [&] { predictDeadReckoningBatch(states, timestamps, time, out); });
 }
 
 }  // namespace
@@ -1053,6 +1079,11 @@ PYBIND11_MODULE(foresight, m) {
           "Entity i is extrapolated by max(time - timestamps[i], 0). Returns (positions (N, 3),\n"
           "velocities (N, 3), orientations (N, 4), refused): refused entities (invalid state) keep\n"
           "their update as given and are counted.");
+    m.def("_time_cpp_predict_dead_reckoning_batch", &timeCppPredictBatch, py::arg("algorithms"), py::arg("positions"),
+          py::arg("velocities"), py::arg("accelerations"), py::arg("orientations"), py::arg("angular_velocities"),
+          py::arg("timestamps"), py::arg("time"), py::arg("repeats"),
+          "Benchmark helper: the median time [s] of `repeats` predictDeadReckoningBatch calls made from C++\n"
+          "on these entities (the reference of predict_dead_reckoning_batch; bench/dead_reckoning_overhead.py).");
 
     py::class_<PyDeadReckoningBatch>(
         m, "DeadReckoningBatch",
