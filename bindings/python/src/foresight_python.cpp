@@ -325,17 +325,17 @@ struct BatchInput {
         return a;
     }
 
+    /// Entity i's state, read from the arrays' raw data (shapes checked by the constructor).
     DeadReckoningState state(std::size_t i) const {
-        const auto idx = static_cast<py::ssize_t>(i);
         DeadReckoningState s;
-        const std::int64_t algorithm = algorithms.at(idx);
+        const std::int64_t algorithm = algorithms.data()[i];
         // Out-of-range values become 0, which the library refuses as InvalidAlgorithm.
         s.algorithm = static_cast<DeadReckoningAlgorithm>(algorithm >= 1 && algorithm <= 9 ? algorithm : 0);
-        const double* p = positions.data(idx, 0);
-        const double* v = velocities.data(idx, 0);
-        const double* a = accelerations.data(idx, 0);
-        const double* q = orientations.data(idx, 0);
-        const double* w = angularVelocities.data(idx, 0);
+        const double* p = positions.data() + 3 * i;
+        const double* v = velocities.data() + 3 * i;
+        const double* a = accelerations.data() + 3 * i;
+        const double* q = orientations.data() + 4 * i;
+        const double* w = angularVelocities.data() + 3 * i;
         s.position = RVec3(static_cast<Real>(p[0]), static_cast<Real>(p[1]), static_cast<Real>(p[2]));
         s.velocity = Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
         s.acceleration = Vec3(static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]));
@@ -396,8 +396,7 @@ public:
         // Prepare every entity first, so that a refused one leaves the batch unchanged.
         std::vector<PreparedDeadReckoning> prepared(in.count);
         for (std::size_t i = 0; i < in.count; ++i) {
-            const Status status =
-                prepareDeadReckoning(in.state(i), in.timestamps.at(static_cast<py::ssize_t>(i)), prepared[i]);
+            const Status status = prepareDeadReckoning(in.state(i), in.timestamps.data()[i], prepared[i]);
             check(status, "DeadReckoningBatch.set_all: entity " + std::to_string(i));
         }
         for (std::size_t i = 0; i < in.count; ++i) mBatch.set(i, prepared[i]);
@@ -444,14 +443,23 @@ py::tuple predictDeadReckoningBatchPy(py::handle alg, py::handle pos, py::handle
                                       py::handle ang, py::handle stamps, double time) {
     const BatchInput in(alg, pos, vel, acc, ori, ang, stamps);
     if (std::isnan(time)) check(Status::NonFiniteInput, "predict_dead_reckoning_batch: time");
-    std::vector<DeadReckoningState> states(in.count);
-    for (std::size_t i = 0; i < in.count; ++i) states[i] = in.state(i);
     auto results = std::make_shared<std::vector<DeadReckoningResult>>(in.count);
     std::size_t refused = 0;
     {
         py::gil_scoped_release release;
-        refused =
-            predictDeadReckoningBatch(states, std::span<const double>(in.timestamps.data(), in.count), time, *results);
+        // Converted and extrapolated in chunks small enough to stay in the cache: the library
+        // reads each chunk's states right after they are written (entities are independent, so
+        // the results are those of one call over all of them).
+        constexpr std::size_t kChunk = 512;
+        std::array<DeadReckoningState, kChunk> states;
+        const std::span<const double> timestamps(in.timestamps.data(), in.count);
+        for (std::size_t first = 0; first < in.count; first += kChunk) {
+            const std::size_t size = std::min(kChunk, in.count - first);
+            for (std::size_t i = 0; i < size; ++i) states[i] = in.state(first + i);
+            refused += predictDeadReckoningBatch(std::span<const DeadReckoningState>(states.data(), size),
+                                                 timestamps.subspan(first, size), time,
+                                                 std::span<DeadReckoningResult>(*results).subspan(first, size));
+        }
     }
     py::tuple views = resultViews(results, true);
     return py::make_tuple(views[0], views[1], views[2], refused);
