@@ -1012,6 +1012,248 @@ PYBIND11_MODULE(foresight, m) {
         "unreachable. speed [m/s] for Speed/HorizontalSpeed, apex_height [m] for the apex constraints,\n"
         "gravity [m/s^2], max_time [s].");
 
+    // Danger -------------------------------------------------------------------------------
+    // A projectile danger is a Trajectory (from predict_projectile) with a fuse and a blast.
+    auto danger = [](const Trajectory& trajectory, float fuseTime, float blastRadius, float contactRadius) {
+        ProjectileDanger d;
+        d.trajectory = trajectory.points;
+        d.fuseTime = fuseTime;
+        d.blastRadius = blastRadius;
+        d.contactRadius = contactRadius;
+        return d;
+    };
+    py::class_<DangerZone> dangerZone(m, "DangerZone", "Where and when a projectile explodes.");
+    dangerZone
+        .def_property_readonly(
+            "center", [](const DangerZone& z) { return fromVec(z.center); },
+            "The projectile's position at the fuse time [m].")
+        .def_readonly("radius", &DangerZone::radius, "The blast radius [m].")
+        .def_readonly("time", &DangerZone::time, "The fuse time [s]; dangerous from then on.")
+        .def("__repr__", [](const DangerZone& z) {
+            return "DangerZone(center=" + vecText(z.center) + ", radius=" + floatText(z.radius) +
+                   ", time=" + floatText(z.time) + ")";
+        });
+    m.def(
+        "position_on_trajectory",
+        [](const Trajectory& trajectory, float time) {
+            RVec3 out;
+            check(positionOnTrajectory(trajectory.points, time, out), "position_on_trajectory");
+            return fromVec(out);
+        },
+        py::arg("trajectory"), py::arg("time"),
+        "The projectile's position [m] at time [s] on the trajectory (parabolic segments between points).");
+    m.def(
+        "danger_zone",
+        [danger](const Trajectory& trajectory, float fuseTime, float blastRadius) {
+            DangerZone out;
+            check(computeDangerZone(danger(trajectory, fuseTime, blastRadius, 0.0f), out), "danger_zone");
+            return out;
+        },
+        py::arg("trajectory"), py::arg("fuse_time"), py::arg("blast_radius"),
+        "The blast sphere: the position at fuse_time [s], blast_radius [m], dangerous from fuse_time on.");
+    m.def(
+        "is_point_safe",
+        [danger](const Trajectory& trajectory, py::handle point, float time, float fuseTime, float blastRadius,
+                 float contactRadius) {
+            bool safe = false;
+            check(isPointSafe(danger(trajectory, fuseTime, blastRadius, contactRadius), toRVec3(point, "point"), time,
+                              safe),
+                  "is_point_safe");
+            return safe;
+        },
+        py::arg("trajectory"), py::arg("point"), py::arg("time"), py::arg("fuse_time"), py::arg("blast_radius"),
+        py::arg("contact_radius") = 0.0f,
+        "Whether point [m] is safe at time [s]: outside the blast from fuse_time on; before it, farther\n"
+        "than contact_radius [m] from the projectile (0: always safe before the fuse).");
+    m.def(
+        "find_danger_start",
+        [danger](const Trajectory& trajectory, py::handle point, float fuseTime, float blastRadius,
+                 float contactRadius) -> std::optional<float> {
+            DangerStart out;
+            check(
+                findDangerStart(danger(trajectory, fuseTime, blastRadius, contactRadius), toRVec3(point, "point"), out),
+                "find_danger_start");
+            if (!out.ever) return std::nullopt;
+            return out.time;
+        },
+        py::arg("trajectory"), py::arg("point"), py::arg("fuse_time"), py::arg("blast_radius"),
+        py::arg("contact_radius") = 0.0f,
+        "The earliest time [s] point [m] is unsafe (see is_point_safe), or None: never.");
+    m.def(
+        "find_path_approach",
+        [](const Trajectory& trajectory, py::handle point, float distance, float fromTime,
+           float untilTime) -> std::optional<float> {
+            DangerStart out;
+            check(findPathApproach(trajectory.points, toRVec3(point, "point"), distance, fromTime, untilTime, out),
+                  "find_path_approach");
+            if (!out.ever) return std::nullopt;
+            return out.time;
+        },
+        py::arg("trajectory"), py::arg("point"), py::arg("distance"), py::arg("from_time"), py::arg("until_time"),
+        "The earliest time [s] in [from_time, until_time] the projectile comes within distance [m] of\n"
+        "point [m] (exact per segment), or None.");
+    m.def(
+        "find_closest_path_approach",
+        [](const Trajectory& trajectory, py::handle point, float fromTime, float untilTime) {
+            ClosestApproach out;
+            check(findClosestPathApproach(trajectory.points, toRVec3(point, "point"), fromTime, untilTime, out),
+                  "find_closest_path_approach");
+            return py::make_tuple(out.distance, out.time);
+        },
+        py::arg("trajectory"), py::arg("point"), py::arg("from_time"), py::arg("until_time"),
+        "The closest approach of the projectile to point [m] in [from_time, until_time] [s]:\n"
+        "(distance [m], time [s]).");
+
+    py::class_<VehicleBody> vehicleBody(m, "VehicleBody",
+                                        "A vehicle as an oriented box on predict_vehicle_exact's path.");
+    vehicleBody
+        .def(py::init([](const VehicleState& state, const VehicleSettings& settings, py::handle halfExtents,
+                         py::handle boxCenter) {
+                 VehicleBody b;
+                 b.state = state;
+                 b.settings = settings;
+                 b.halfExtents = toVec3(halfExtents, "half_extents");
+                 b.boxCenter = toVec3(boxCenter, "box_center");
+                 return b;
+             }),
+             py::arg("state"), py::arg("settings") = VehicleSettings(),
+             py::arg("half_extents") = py::make_tuple(0.9f, 0.7f, 2.2f),
+             py::arg("box_center") = py::make_tuple(0, 0, 0))
+        .def_readwrite("state", &VehicleBody::state)
+        .def_readwrite("settings", &VehicleBody::settings);
+    FS_VEC3(vehicleBody, VehicleBody, "half_extents", halfExtents, "The box's half sizes [m], local axes.");
+    FS_VEC3(vehicleBody, VehicleBody, "box_center", boxCenter, "The box's centre in local axes from the position [m].");
+    py::class_<CharacterBody> characterBody(m, "CharacterBody",
+                                            "A character: a sphere or a capsule moving with constant acceleration.");
+    characterBody
+        .def(py::init([](py::handle position, py::handle velocity, py::handle acceleration, float radius,
+                         py::handle halfAxis) {
+                 CharacterBody c;
+                 c.position = toRVec3(position, "position");
+                 c.velocity = toVec3(velocity, "velocity");
+                 c.acceleration = toVec3(acceleration, "acceleration");
+                 c.radius = radius;
+                 c.halfAxis = toVec3(halfAxis, "half_axis");
+                 return c;
+             }),
+             py::arg("position") = py::make_tuple(0, 0, 0), py::arg("velocity") = py::make_tuple(0, 0, 0),
+             py::arg("acceleration") = py::make_tuple(0, 0, 0), py::arg("radius") = 0.4f,
+             py::arg("half_axis") = py::make_tuple(0, 0, 0))
+        .def_readwrite("radius", &CharacterBody::radius, "[m] >= 0");
+    FS_RVEC3(characterBody, CharacterBody, "position", position, "The centre at t = 0 [m].");
+    FS_VEC3(characterBody, CharacterBody, "velocity", velocity, "[m/s], world axes.");
+    FS_VEC3(characterBody, CharacterBody, "acceleration", acceleration, "[m/s^2], world axes.");
+    FS_VEC3(characterBody, CharacterBody, "half_axis", halfAxis, "Half the capsule's segment [m]; 0: a sphere.");
+    py::class_<VehicleContact>(m, "VehicleContact", "The first contact of a vehicle and a character.")
+        .def_readonly("contact", &VehicleContact::contact, "Whether they come within the tolerance.")
+        .def_readonly("time", &VehicleContact::time, "Time of first contact [s] (valid when contact).")
+        .def_readonly("separation", &VehicleContact::separation, "Separation at time [m].")
+        .def_readonly("evaluations", &VehicleContact::evaluations)
+        .def("__repr__", [](const VehicleContact& c) {
+            return std::string("VehicleContact(contact=") + (c.contact ? "True" : "False") +
+                   ", time=" + floatText(c.time) + ", separation=" + floatText(c.separation) + ")";
+        });
+    auto approach = [](float tolerance, std::uint32_t maxEvaluations) {
+        ApproachSettings a;
+        a.tolerance = tolerance;
+        a.maxEvaluations = maxEvaluations;
+        return a;
+    };
+    m.def(
+        "vehicle_separation",
+        [](const VehicleBody& vehicle, const CharacterBody& character, float time) {
+            float separation = 0;
+            check(computeVehicleSeparation(vehicle, character, time, separation), "vehicle_separation");
+            return separation;
+        },
+        py::arg("vehicle"), py::arg("character"), py::arg("time"),
+        "The separation [m] of the vehicle's box and the character at time [s] (<= 0: overlapping).");
+    m.def(
+        "find_vehicle_contact",
+        [approach](const VehicleBody& vehicle, const CharacterBody& character, float horizon, float tolerance,
+                   std::uint32_t maxEvaluations) {
+            VehicleContact out;
+            check(findVehicleContact(vehicle, character, horizon, approach(tolerance, maxEvaluations), out),
+                  "find_vehicle_contact");
+            return out;
+        },
+        py::arg("vehicle"), py::arg("character"), py::arg("horizon"), py::arg("tolerance") = 1e-3f,
+        py::arg("max_evaluations") = 1u << 16,
+        "The first time in [0, horizon] [s] the vehicle and the character come within tolerance [m].");
+    m.def(
+        "find_closest_vehicle_approach",
+        [approach](const VehicleBody& vehicle, const CharacterBody& character, float horizon, float tolerance,
+                   std::uint32_t maxEvaluations) {
+            ClosestApproach out;
+            check(findClosestVehicleApproach(vehicle, character, horizon, approach(tolerance, maxEvaluations), out),
+                  "find_closest_vehicle_approach");
+            return py::make_tuple(out.distance, out.time);
+        },
+        py::arg("vehicle"), py::arg("character"), py::arg("horizon"), py::arg("tolerance") = 1e-3f,
+        py::arg("max_evaluations") = 1u << 16,
+        "The closest approach in [0, horizon] [s]: (separation [m], time [s]), within tolerance [m].");
+
+    // Throw planning -----------------------------------------------------------------------
+    py::class_<ThrowPlan>(m, "ThrowPlan", "A launch velocity that brings the grenade near the target at the fuse.")
+        .def_property_readonly(
+            "launch_velocity", [](const ThrowPlan& p) { return fromVec(p.launchVelocity); }, "[m/s], world axes.")
+        .def_property_readonly(
+            "final_position", [](const ThrowPlan& p) { return fromVec(p.finalPosition); },
+            "Where the grenade is at the fuse time [m].")
+        .def_readonly("distance", &ThrowPlan::distance, "|final_position - target| [m].")
+        .def_readonly("bounces", &ThrowPlan::bounces)
+        .def_readonly("at_rest", &ThrowPlan::atRest)
+        .def_readonly("first_impact_time", &ThrowPlan::firstImpactTime, "[s]; < 0 when none.")
+        .def_property_readonly("first_impact_normal", [](const ThrowPlan& p) { return fromVec(p.firstImpactNormal); })
+        .def_property_readonly("first_impact_position",
+                               [](const ThrowPlan& p) { return fromVec(p.firstImpactPosition); })
+        .def("__repr__", [](const ThrowPlan& p) {
+            return "ThrowPlan(launch_velocity=" + vecText(p.launchVelocity) +
+                   ", final_position=" + vecText(p.finalPosition) + ", distance=" + floatText(p.distance) +
+                   ", bounces=" + std::to_string(p.bounces) + ")";
+        });
+    m.def(
+        "plan_throw",
+        [](py::handle start, py::handle target, const CollisionWorld* world, float acceptanceRadius, float fuseTime,
+           float maxSpeed, float minSpeed, const ProjectileSettings& settings, std::uint32_t maxPlans,
+           float distinctAngle, std::uint32_t maxPredictions) {
+            ThrowPlanRequest request;
+            request.start = toRVec3(start, "start");
+            request.target = toRVec3(target, "target");
+            request.acceptanceRadius = acceptanceRadius;
+            request.fuseTime = fuseTime;
+            request.maxSpeed = maxSpeed;
+            request.minSpeed = minSpeed;
+            request.settings = settings;
+            request.maxPlans = maxPlans;
+            request.distinctAngle = distinctAngle;
+            request.budget.maxPredictions = maxPredictions;
+            check(validateThrowPlanRequest(request), "plan_throw");
+            std::vector<ThrowPlan> plans(maxPlans);
+            std::vector<TrajectoryPoint> scratch(throwPlanScratchSize(request));
+            ThrowPlanResult result;
+            Status planned = Status::Ok;
+            {
+                py::gil_scoped_release release;
+                planned = planThrow(request, world, plans, scratch, result);
+            }
+            check(planned, "plan_throw");
+            plans.resize(result.planCount);
+            py::dict info;
+            info["predictions"] = result.predictions;
+            info["closest_distance"] = result.closestDistance;
+            info["closest_velocity"] = fromVec(result.closestVelocity);
+            return py::make_tuple(plans, info);
+        },
+        py::arg("start"), py::arg("target"), py::arg("world") = nullptr, py::arg("acceptance_radius") = 0.5f,
+        py::arg("fuse_time") = 3.0f, py::arg("max_speed") = 20.0f, py::arg("min_speed") = 0.0f,
+        py::arg("settings") = ProjectileSettings(), py::arg("max_plans") = 3, py::arg("distinct_angle") = 0.1f,
+        py::arg("max_predictions") = 400,
+        "Searches launch velocities (speed <= max_speed [m/s]) from start [m] that bring a grenade within\n"
+        "acceptance_radius [m] of target [m] at fuse_time [s], bouncing off world with `settings`.\n"
+        "Returns (plans, info): plans best first (ThrowPlan), info = {predictions, closest_distance [m],\n"
+        "closest_velocity [m/s]}.");
+
     // Dead reckoning -----------------------------------------------------------------------
     py::enum_<DeadReckoningAlgorithm>(m, "DeadReckoningAlgorithm",
                                       "The DIS dead-reckoning models; values are the DIS enumeration (1 to 9).")
