@@ -2,7 +2,8 @@
 # runs from the installed module. Offline: --no-index (no registry), --no-build-isolation (the
 # interpreter's own setuptools, pybind11 and NumPy, seen through --system-site-packages).
 #
-#   cmake -DPYTHON=python3 -DSOURCE_DIR=bindings/python -DWORK_DIR=dir -P pip_install_test.cmake
+#   cmake -DPYTHON=python3 -DSOURCE_DIR=bindings/python -DWORK_DIR=dir [-DREFERENCE=article_scenarios]
+#         -P pip_install_test.cmake
 if(NOT PYTHON OR NOT SOURCE_DIR OR NOT WORK_DIR)
     message(FATAL_ERROR "pip_install_test.cmake: give -DPYTHON=... -DSOURCE_DIR=... -DWORK_DIR=...")
 endif()
@@ -48,6 +49,13 @@ execute_process(COMMAND "${venv_python}" "${tree}/bindings/python/examples/artic
     WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE error)
 if(NOT status EQUAL 0 OR NOT output MATCHES "^character\n.*grenade jolt: .*car\n")
     message(FATAL_ERROR "the example failed (${status}) from the installed module:\n${output}\n${error}")
+endif()
+# With the C++ program given, the installed module must print its text exactly, as the built one does.
+if(REFERENCE)
+    execute_process(COMMAND "${REFERENCE}" OUTPUT_VARIABLE expected RESULT_VARIABLE status)
+    if(NOT status EQUAL 0 OR NOT output STREQUAL expected)
+        message(FATAL_ERROR "the installed module's output differs from ${REFERENCE}:\n${output}\n---\n${expected}")
+    endif()
 endif()
 message(STATUS "the example ran from the installed module")
 file(REMOVE_RECURSE "${venv}" "${tree}")
