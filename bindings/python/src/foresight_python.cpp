@@ -964,6 +964,33 @@ PYBIND11_MODULE(foresight, m) {
     m.def("stepped_step_count", &steppedStepCount, py::arg("time"), py::arg("step"),
           "ceil(time / step) on the decimal values: the Stepped method's step count.");
 
+    py::enum_<RenderSmoothing>(m, "RenderSmoothing", "How a game shows a body between its fixed physics steps.")
+        .value("None_", RenderSmoothing::None, "the last completed step")
+        .value("Interpolate", RenderSmoothing::Interpolate, "between the last two steps, one step behind")
+        .value("Extrapolate", RenderSmoothing::Extrapolate, "the last step moved on with its velocity");
+    m.def(
+        "rendered_position",
+        [](const Trajectory& trajectory, float step, float renderTime, RenderSmoothing smoothing) {
+            if (!(step > 0.0f) || !std::isfinite(step)) check(Status::InvalidStep, "rendered_position");
+            return fromVec(renderedPosition(trajectory.points, step, renderTime, smoothing));
+        },
+        py::arg("trajectory"), py::arg("step"), py::arg("render_time"), py::arg("smoothing") = RenderSmoothing::None,
+        "The position [m] a game draws at render_time [s] for a fixed-step trajectory (Engine or\n"
+        "Stepped) of `step` [s] (> 0), with the given smoothing.");
+    m.def(
+        "engine_free_flight",
+        [](const EngineProfile& engine, py::handle position, py::handle velocity, py::handle gravity,
+           std::uint64_t steps) {
+            check(validateEngineProfile(engine), "engine_free_flight");
+            const EngineFlightState out = engineFreeFlight(
+                engine, toRVec3(position, "position"), toVec3(velocity, "velocity"), toVec3(gravity, "gravity"), steps);
+            return py::make_tuple(fromVec(out.position), fromVec(out.velocity));
+        },
+        py::arg("profile"), py::arg("position"), py::arg("velocity"),
+        py::arg("gravity") = py::make_tuple(0.0f, -kDefaultGravity, 0.0f), py::arg("steps") = 1,
+        "The state after `steps` engine steps of free flight, in closed form: (position [m], velocity\n"
+        "[m/s]). position [m], velocity [m/s], gravity [m/s^2]. Speed limits are not applied.");
+
     // Aim ----------------------------------------------------------------------------------
     py::enum_<AimConstraint>(m, "AimConstraint", "What fixes the launch velocity besides meeting the target.")
         .value("Speed", AimConstraint::Speed, "|velocity| = speed")

@@ -255,3 +255,25 @@ def test_reprs_are_readable():
     assert repr(fs.StaticWorld()) == "StaticWorld(planes=0, spheres=0, boxes=0, triangles=0)"
     assert "ProjectileSettings(method=Exact" in repr(fs.ProjectileSettings())
     assert "engine=jolt" in repr(fs.ProjectileSettings())
+
+
+def test_engine_free_flight_equals_the_engine_trajectory():
+    # Free flight stepped by the Engine method and the closed form of the same recurrence agree
+    # (engine_profile.h: "equal to stepping ... to within rounding"; float rounding of ~10 m).
+    profile = fs.engine_profile(fs.PhysicsEngine.Rapier)
+    settings = fs.ProjectileSettings(method=fs.ProjectileMethod.Engine, engine=profile)
+    stepped = fs.predict_projectile((0, 2, 0), (1, 5, 8), 1.0, settings)
+    position, velocity = fs.engine_free_flight(profile, (0, 2, 0), (1, 5, 8), steps=60)
+    np.testing.assert_allclose(position, stepped.position, atol=FLOAT_TOL)
+    np.testing.assert_allclose(velocity, stepped.velocity, atol=FLOAT_TOL)
+
+
+def test_rendered_position_interpolates_between_steps():
+    settings = fs.ProjectileSettings(method=fs.ProjectileMethod.Stepped, step=0.1)
+    t = fs.predict_projectile((0, 0, 0), (0, 0, 10), 1.0, settings).trajectory
+    # 0.25 s: two steps done (0.2 s), alpha 0.5. None: p[2]; Interpolate: halfway between p[1] and p[2].
+    np.testing.assert_allclose(fs.rendered_position(t, 0.1, 0.25), t.positions[2], atol=FLOAT_TOL)
+    np.testing.assert_allclose(fs.rendered_position(t, 0.1, 0.25, fs.RenderSmoothing.Interpolate),
+                               (t.positions[1] + t.positions[2]) / 2, atol=FLOAT_TOL)
+    with pytest.raises(fs.Error, match="InvalidStep"):
+        fs.rendered_position(t, 0.0, 0.25)
