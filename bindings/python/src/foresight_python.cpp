@@ -257,20 +257,24 @@ PyProjectileResult predictProjectilePy(py::handle position, py::handle velocity,
     const float t = toFloat(time);
     // Validate first so that the capacity below is computed from valid settings and time.
     check(validateProjectileSettings(settings), "predict_projectile");
-    if (!(t >= 0.0f)) check(std::isnan(t) ? Status::NonFiniteInput : Status::NegativeTime, "predict_projectile");
+    if (std::isnan(t) || std::isinf(t)) check(Status::NonFiniteInput, "predict_projectile");
+    if (t < 0.0f) check(Status::NegativeTime, "predict_projectile");
     std::vector<TrajectoryPoint> points;
     PyProjectileResult r;
+    Status status = Status::Ok;
     {
         py::gil_scoped_release release;
-        points.resize(std::max<std::size_t>(trajectoryCapacity(t, settings), 2));
-        Status status = predictProjectile(p, v, t, settings, world, points, r.result);
+        // The first guess is capped (a long prediction the library will refuse with TooManySteps
+        // allocates nothing big); a trajectory longer than it is predicted again at its full size.
+        constexpr std::size_t kFirstCapacity = std::size_t{1} << 16;
+        points.resize(std::clamp<std::size_t>(trajectoryCapacity(t, settings), 2, kFirstCapacity));
+        status = predictProjectile(p, v, t, settings, world, points, r.result);
         if (status == Status::Ok && r.result.trajectoryNeeded > r.result.trajectorySize) {
             points.resize(r.result.trajectoryNeeded);
             status = predictProjectile(p, v, t, settings, world, points, r.result);
         }
-        py::gil_scoped_acquire acquire;
-        check(status, "predict_projectile");
     }
+    check(status, "predict_projectile");
     points.resize(r.result.trajectorySize);
     r.trajectory = std::make_shared<Trajectory>(std::move(points));
     return r;

@@ -110,3 +110,11 @@ def test_dead_reckoning_batch_shapes_and_bad_entities():
     batch.set_all(**dict(ok, algorithms=[fs.DeadReckoningAlgorithm.FPW] * n))
     assert batch.extrapolate(3.0) == 0
     np.testing.assert_array_equal(batch.positions, np.full((n, 3), 3.0))
+
+
+def test_infinite_and_huge_times_are_refused_without_allocating():
+    with pytest.raises(fs.Error, match="NonFiniteInput"):
+        fs.predict_projectile((0, 0, 0), (0, 0, 1), math.inf)
+    # 1e9 s at 0.02 s steps is 5e10 steps: over max_steps (2^20), refused before any work.
+    with pytest.raises(fs.Error, match="TooManySteps"):
+        fs.predict_projectile((0, 0, 0), (0, 0, 1), 1e9, fs.ProjectileSettings(method=fs.ProjectileMethod.Stepped))

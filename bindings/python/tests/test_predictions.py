@@ -277,3 +277,12 @@ def test_rendered_position_interpolates_between_steps():
                                (t.positions[1] + t.positions[2]) / 2, atol=FLOAT_TOL)
     with pytest.raises(fs.Error, match="InvalidStep"):
         fs.rendered_position(t, 0.0, 0.25)
+
+
+def test_long_trajectories_are_whole():
+    # 1500 s at 0.02 s: 75 001 points, beyond the first guess of the storage (65 536): predicted
+    # again at full size. Zero gravity, at rest: every point is the start.
+    settings = fs.ProjectileSettings(gravity=(0, 0, 0), method=fs.ProjectileMethod.Stepped)
+    result = fs.predict_projectile((1, 2, 3), (0, 0, 0), 1500.0, settings)
+    assert len(result.trajectory) == 75001
+    np.testing.assert_array_equal(result.trajectory.positions[-1], [1, 2, 3])
