@@ -9,7 +9,9 @@ C++ in the same process on the same entities (helpers compiled into the module):
   predict_dead_reckoning_batch       vs predictDeadReckoningBatch (the Python call also
                                         converts the NumPy input arrays and returns new arrays)
 
-Rounds alternate Python and C++ so that a busy machine slows both alike; medians are printed.
+Rounds alternate Python and C++ blocks of calls, so that a busy machine slows both alike, and
+each block runs in the steady state of its own call (the previous call left the same data in the
+caches); the medians of the rounds' medians are printed.
 
   PYTHONPATH=build/bindings/python python3 bindings/python/bench/dead_reckoning_overhead.py
 """

@@ -263,7 +263,10 @@ PyProjectileResult predictProjectilePy(py::handle position, py::handle velocity,
     PyProjectileResult r;
     Status status = Status::Ok;
     {
-        py::gil_scoped_release release;
+        // Without a world nothing shared is read: other Python threads may run meanwhile. A world
+        // keeps the GIL, so that no thread adds shapes to it during the prediction.
+        std::optional<py::gil_scoped_release> release;
+        if (world == nullptr) release.emplace();
         // The first guess is capped (a long prediction the library will refuse with TooManySteps
         // allocates nothing big); a trajectory longer than it is predicted again at its full size.
         constexpr std::size_t kFirstCapacity = std::size_t{1} << 16;
@@ -419,12 +422,8 @@ public:
         if (!std::isfinite(time)) check(Status::NonFiniteInput, "DeadReckoningBatch.extrapolate: time");
         if (std::isnan(limit) || limit < 0)
             badArgument("DeadReckoningBatch.extrapolate: extrapolation_limit", "must be >= 0 (inf disables it)");
-        std::size_t refused = 0;
-        {
-            py::gil_scoped_release release;
-            refused = mBatch.extrapolate(time, static_cast<float>(limit), *mResults);
-        }
-        return refused;
+        // The GIL stays held: no other thread can set() an entity during the frame.
+        return mBatch.extrapolate(time, static_cast<float>(limit), *mResults);
     }
 
     /// C++ reference timing: the median of `repeats` calls of DeadReckoningBatch::extrapolate
@@ -1265,7 +1264,8 @@ PYBIND11_MODULE(foresight, m) {
             ThrowPlanResult result;
             Status planned = Status::Ok;
             {
-                py::gil_scoped_release release;
+                std::optional<py::gil_scoped_release> release;  // as predict_projectile: kept with a world
+                if (world == nullptr) release.emplace();
                 planned = planThrow(request, world, plans, scratch, result);
             }
             check(planned, "plan_throw");
