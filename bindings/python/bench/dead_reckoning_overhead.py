@@ -7,7 +7,8 @@ C++ in the same process on the same entities (helpers compiled into the module):
 
   DeadReckoningBatch.extrapolate     vs DeadReckoningBatch::extrapolate (the fast path)
   predict_dead_reckoning_batch       vs predictDeadReckoningBatch (the Python call also
-                                        converts the NumPy input arrays and returns new arrays)
+                                        converts the NumPy input arrays and returns new arrays):
+                                        float64 arrays, then float32 ones (read as they are)
 
 Rounds alternate Python and C++ blocks of calls, so that a busy machine slows both alike, and
 each block runs in the steady state of its own call (the previous call left the same data in the
@@ -63,19 +64,23 @@ def main():
     batch = fs.DeadReckoningBatch(args.entities)
     batch.set_all(*arrays)
 
-    rows = {"soa": ([], []), "batch": ([], [])}
+    single = [a.astype(np.float32) if i in (1, 2, 3, 4, 5) else a for i, a in enumerate(arrays)]
+    rows = {"soa": ([], []), "batch": ([], []), "batch32": ([], [])}
     for _ in range(args.rounds):
         rows["soa"][0].append(python_median(lambda: batch.extrapolate(NOW, 0.25), args.repeats))
         rows["soa"][1].append(batch._time_cpp_extrapolate(NOW, 0.25, args.repeats))
         rows["batch"][0].append(python_median(lambda: fs.predict_dead_reckoning_batch(*arrays, NOW), args.repeats))
         rows["batch"][1].append(fs._time_cpp_predict_dead_reckoning_batch(*arrays, NOW, args.repeats))
+        rows["batch32"][0].append(python_median(lambda: fs.predict_dead_reckoning_batch(*single, NOW), args.repeats))
+        rows["batch32"][1].append(fs._time_cpp_predict_dead_reckoning_batch(*single, NOW, args.repeats))
 
     print("%d entities, median of %d rounds of %d calls" % (args.entities, args.rounds, args.repeats))
-    print("%-34s %12s %12s %8s" % ("call", "python (ms)", "C++ (ms)", "ratio"))
-    names = {"soa": "DeadReckoningBatch.extrapolate", "batch": "predict_dead_reckoning_batch"}
+    print("%-38s %12s %12s %8s" % ("call", "python (ms)", "C++ (ms)", "ratio"))
+    names = {"soa": "DeadReckoningBatch.extrapolate", "batch": "predict_dead_reckoning_batch",
+             "batch32": "predict_dead_reckoning_batch (f32)"}
     for key, (python_times, cpp_times) in rows.items():
         p, c = statistics.median(python_times) * 1e3, statistics.median(cpp_times) * 1e3
-        print("%-34s %12.3f %12.3f %8.3f" % (names[key], p, c, p / c))
+        print("%-38s %12.3f %12.3f %8.3f" % (names[key], p, c, p / c))
 
 
 if __name__ == "__main__":

@@ -302,30 +302,47 @@ double medianSeconds(int repeats, Run&& run) {
 
 /// Reads the batch arrays, checks their shapes, and fills DeadReckoningState values.
 struct BatchInput {
-    py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> algorithms;
-    py::array_t<double, py::array::c_style | py::array::forcecast> positions, velocities, accelerations, orientations,
-        angularVelocities, timestamps;
+    template <typename T>
+    using Array = py::array_t<T, py::array::c_style | py::array::forcecast>;
+    Array<std::int64_t> algorithms;
+    Array<double> timestamps;
+    /// The vector arrays, all float32 (`single`: read as they are, half the bytes of float64) or
+    /// all converted to float64.
+    bool single = false;
+    Array<double> positions, velocities, accelerations, orientations, angularVelocities;
+    Array<float> positionsF, velocitiesF, accelerationsF, orientationsF, angularVelocitiesF;
     std::size_t count = 0;
 
     BatchInput(py::handle alg, py::handle pos, py::handle vel, py::handle acc, py::handle ori, py::handle ang,
                py::handle stamps) {
-        algorithms = decltype(algorithms)::ensure(alg);
+        algorithms = Array<std::int64_t>::ensure(alg);
         if (!algorithms) badArgument("algorithms", "expected integers (DeadReckoningAlgorithm values)");
         if (algorithms.ndim() != 1) badArgument("algorithms", "expected shape (N,), got " + shapeText(algorithms));
         count = static_cast<std::size_t>(algorithms.shape(0));
-        positions = rows(pos, "positions", 3);
-        velocities = rows(vel, "velocities", 3);
-        accelerations = rows(acc, "accelerations", 3);
-        orientations = rows(ori, "orientations", 4);
-        angularVelocities = rows(ang, "angular_velocities", 3);
+        single = true;
+        for (py::handle h : {pos, vel, acc, ori, ang}) single = single && py::isinstance<py::array_t<float>>(h);
+        if (single) {
+            positionsF = rows<float>(pos, "positions", 3);
+            velocitiesF = rows<float>(vel, "velocities", 3);
+            accelerationsF = rows<float>(acc, "accelerations", 3);
+            orientationsF = rows<float>(ori, "orientations", 4);
+            angularVelocitiesF = rows<float>(ang, "angular_velocities", 3);
+        } else {
+            positions = rows<double>(pos, "positions", 3);
+            velocities = rows<double>(vel, "velocities", 3);
+            accelerations = rows<double>(acc, "accelerations", 3);
+            orientations = rows<double>(ori, "orientations", 4);
+            angularVelocities = rows<double>(ang, "angular_velocities", 3);
+        }
         timestamps = numbers(stamps, "timestamps");
         if (timestamps.ndim() != 1 || static_cast<std::size_t>(timestamps.shape(0)) != count)
             badArgument("timestamps", "expected shape (" + std::to_string(count) + ",), got " + shapeText(timestamps));
     }
 
-    py::array_t<double, py::array::c_style | py::array::forcecast> rows(py::handle object, const char* name,
-                                                                        py::ssize_t width) const {
-        auto a = numbers(object, name);
+    template <typename T>
+    Array<T> rows(py::handle object, const char* name, py::ssize_t width) const {
+        auto a = Array<T>::ensure(object);
+        if (!a) badArgument(name, "expected numbers");
         if (a.ndim() != 2 || static_cast<std::size_t>(a.shape(0)) != count || a.shape(1) != width)
             badArgument(name, "expected shape (" + std::to_string(count) + ", " + std::to_string(width) + "), got " +
                                   shapeText(a));
@@ -334,15 +351,22 @@ struct BatchInput {
 
     /// Entity i's state, read from the arrays' raw data (shapes checked by the constructor).
     DeadReckoningState state(std::size_t i) const {
+        return single ? read(i, positionsF, velocitiesF, accelerationsF, orientationsF, angularVelocitiesF)
+                      : read(i, positions, velocities, accelerations, orientations, angularVelocities);
+    }
+
+    template <typename T>
+    DeadReckoningState read(std::size_t i, const Array<T>& pos, const Array<T>& vel, const Array<T>& acc,
+                            const Array<T>& ori, const Array<T>& ang) const {
         DeadReckoningState s;
         const std::int64_t algorithm = algorithms.data()[i];
         // Out-of-range values become 0, which the library refuses as InvalidAlgorithm.
         s.algorithm = static_cast<DeadReckoningAlgorithm>(algorithm >= 1 && algorithm <= 9 ? algorithm : 0);
-        const double* p = positions.data() + 3 * i;
-        const double* v = velocities.data() + 3 * i;
-        const double* a = accelerations.data() + 3 * i;
-        const double* q = orientations.data() + 4 * i;
-        const double* w = angularVelocities.data() + 3 * i;
+        const T* p = pos.data() + 3 * i;
+        const T* v = vel.data() + 3 * i;
+        const T* a = acc.data() + 3 * i;
+        const T* q = ori.data() + 4 * i;
+        const T* w = ang.data() + 3 * i;
         s.position = RVec3(static_cast<Real>(p[0]), static_cast<Real>(p[1]), static_cast<Real>(p[2]));
         s.velocity = Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
         s.acceleration = Vec3(static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]));

@@ -286,3 +286,21 @@ def test_long_trajectories_are_whole():
     result = fs.predict_projectile((1, 2, 3), (0, 0, 0), 1500.0, settings)
     assert len(result.trajectory) == 75001
     np.testing.assert_array_equal(result.trajectory.positions[-1], [1, 2, 3])
+
+
+def test_dead_reckoning_batch_reads_float32_arrays_as_float64_ones():
+    # float32 arrays are read as they are (no conversion copy); the library takes floats anyway, so
+    # float64 arrays holding the same float32 values give bit-identical results.
+    arrays = random_entities(300)
+    single = [a.astype(np.float32) if i in (1, 2, 3, 4, 5) else a for i, a in enumerate(arrays)]
+    double = [a.astype(np.float64) if i in (1, 2, 3, 4, 5) else a for i, a in enumerate(single)]
+    for got, expected in zip(fs.predict_dead_reckoning_batch(*single, 100.0)[:3],
+                             fs.predict_dead_reckoning_batch(*double, 100.0)[:3]):
+        np.testing.assert_array_equal(got, expected)
+    batch = fs.DeadReckoningBatch(300)
+    batch.set_all(*single)
+    batch.extrapolate(100.0)
+    other = fs.DeadReckoningBatch(300)
+    other.set_all(*double)
+    other.extrapolate(100.0)
+    np.testing.assert_array_equal(batch.positions, other.positions)
