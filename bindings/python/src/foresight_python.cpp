@@ -26,6 +26,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace py = pybind11;
@@ -111,7 +112,20 @@ py::array_t<double, py::array::c_style | py::array::forcecast> numbers(py::handl
     return a;
 }
 
-/// `count` numbers from a sequence (tuple, list, NumPy array).
+/// `value` as a T: a double beyond the float range becomes an infinity (which the library
+/// refuses) instead of an undefined conversion.
+template <typename T>
+T narrow(double value) {
+    if constexpr (std::is_same_v<T, float>) {
+        if (value > static_cast<double>(std::numeric_limits<float>::max()))
+            return std::numeric_limits<float>::infinity();
+        if (value < -static_cast<double>(std::numeric_limits<float>::max()))
+            return -std::numeric_limits<float>::infinity();
+    }
+    return static_cast<T>(value);
+}
+
+/// `N` numbers from a sequence (tuple, list, NumPy array).
 template <int N>
 std::array<double, N> fixedNumbers(py::handle object, const std::string& name) {
     auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
@@ -123,24 +137,26 @@ std::array<double, N> fixedNumbers(py::handle object, const std::string& name) {
     return r;
 }
 
+/// A float vector (velocity, direction) from 3 numbers; `name` names the argument in errors.
 Vec3 toVec3(py::handle object, const std::string& name) {
     const auto v = fixedNumbers<3>(object, name);
-    return Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+    return Vec3(narrow<float>(v[0]), narrow<float>(v[1]), narrow<float>(v[2]));
 }
 
+/// A position (Real) from 3 numbers; `name` names the argument in errors.
 RVec3 toRVec3(py::handle object, const std::string& name) {
     const auto v = fixedNumbers<3>(object, name);
-    return RVec3(static_cast<Real>(v[0]), static_cast<Real>(v[1]), static_cast<Real>(v[2]));
+    return RVec3(narrow<Real>(v[0]), narrow<Real>(v[1]), narrow<Real>(v[2]));
 }
 
 /// A quaternion from (x, y, z, w).
 Quat toQuat(py::handle object, const std::string& name) {
     const auto v = fixedNumbers<4>(object, name);
     Quat q;
-    q.x = static_cast<float>(v[0]);
-    q.y = static_cast<float>(v[1]);
-    q.z = static_cast<float>(v[2]);
-    q.w = static_cast<float>(v[3]);
+    q.x = narrow<float>(v[0]);
+    q.y = narrow<float>(v[1]);
+    q.z = narrow<float>(v[2]);
+    q.w = narrow<float>(v[3]);
     return q;
 }
 
@@ -184,10 +200,11 @@ std::string vecText(const V& v) {
     return text + ")";
 }
 
+/// "(x, y, z, w)".
 std::string quatText(const Quat& q) { return vecText(glm::vec4(q.x, q.y, q.z, q.w)); }
 
-/// A float argument that must be finite is left to the library to check; this only converts.
-float toFloat(double value) { return static_cast<float>(value); }
+/// A time or scalar argument as the library's float (the library checks its range).
+float toFloat(double value) { return narrow<float>(value); }
 
 // Properties that read and write glm vectors as NumPy arrays / sequences.
 #define FS_VEC3(cls, Type, name, member, doc)                        \
@@ -367,14 +384,14 @@ struct BatchInput {
         const T* a = acc.data() + 3 * i;
         const T* q = ori.data() + 4 * i;
         const T* w = ang.data() + 3 * i;
-        s.position = RVec3(static_cast<Real>(p[0]), static_cast<Real>(p[1]), static_cast<Real>(p[2]));
-        s.velocity = Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-        s.acceleration = Vec3(static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]));
-        s.orientation.x = static_cast<float>(q[0]);
-        s.orientation.y = static_cast<float>(q[1]);
-        s.orientation.z = static_cast<float>(q[2]);
-        s.orientation.w = static_cast<float>(q[3]);
-        s.angularVelocity = Vec3(static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]));
+        s.position = RVec3(narrow<Real>(p[0]), narrow<Real>(p[1]), narrow<Real>(p[2]));
+        s.velocity = Vec3(narrow<float>(v[0]), narrow<float>(v[1]), narrow<float>(v[2]));
+        s.acceleration = Vec3(narrow<float>(a[0]), narrow<float>(a[1]), narrow<float>(a[2]));
+        s.orientation.x = narrow<float>(q[0]);
+        s.orientation.y = narrow<float>(q[1]);
+        s.orientation.z = narrow<float>(q[2]);
+        s.orientation.w = narrow<float>(q[3]);
+        s.angularVelocity = Vec3(narrow<float>(w[0]), narrow<float>(w[1]), narrow<float>(w[2]));
         return s;
     }
 };
@@ -416,8 +433,10 @@ public:
         refreshViews();
     }
 
+    /// The number of entities.
     std::size_t capacity() const { return mBatch.capacity(); }
 
+    /// Prepares and sets every entity from the arrays (all or nothing).
     void setAll(py::handle alg, py::handle pos, py::handle vel, py::handle acc, py::handle ori, py::handle ang,
                 py::handle stamps) {
         const BatchInput in(alg, pos, vel, acc, ori, ang, stamps);
@@ -433,6 +452,7 @@ public:
         for (std::size_t i = 0; i < in.count; ++i) mBatch.set(i, prepared[i]);
     }
 
+    /// Prepares and sets one entity.
     void set(std::size_t entity, const DeadReckoningState& state, double timestamp) {
         if (entity >= mBatch.capacity())
             badArgument("entity",
@@ -442,12 +462,13 @@ public:
         check(mBatch.set(entity, prepared), "DeadReckoningBatch.set");
     }
 
+    /// One frame: every entity to `time`; returns the refused count.
     std::size_t extrapolate(double time, double limit) {
         if (!std::isfinite(time)) check(Status::NonFiniteInput, "DeadReckoningBatch.extrapolate: time");
         if (std::isnan(limit) || limit < 0)
             badArgument("DeadReckoningBatch.extrapolate: extrapolation_limit", "must be >= 0 (inf disables it)");
         // The GIL stays held: no other thread can set() an entity during the frame.
-        return mBatch.extrapolate(time, static_cast<float>(limit), *mResults);
+        return mBatch.extrapolate(time, narrow<float>(limit), *mResults);
     }
 
     /// C++ reference timing: the median of `repeats` calls of DeadReckoningBatch::extrapolate
@@ -456,6 +477,7 @@ public:
         return medianSeconds(repeats, [&] { mBatch.extrapolate(time, static_cast<float>(limit), *mResults); });
     }
 
+    /// (positions, velocities, orientations): read-only views of the output buffer.
     const py::tuple& views() const { return mViews; }
 
 private:
@@ -738,7 +760,7 @@ PYBIND11_MODULE(foresight, m) {
             [](StaticWorld& w, py::handle normal, double distance, std::optional<SurfaceMaterial> material) {
                 Plane p;
                 p.normal = toVec3(normal, "normal");
-                p.distance = static_cast<Real>(distance);
+                p.distance = narrow<Real>(distance);
                 check(material ? w.add(p, *material) : w.add(p), "add_plane");
             },
             py::arg("normal"), py::arg("distance") = 0.0, py::arg("material") = py::none(),

@@ -118,3 +118,11 @@ def test_infinite_and_huge_times_are_refused_without_allocating():
     # 1e9 s at 0.02 s steps is 5e10 steps: over max_steps (2^20), refused before any work.
     with pytest.raises(fs.Error, match="TooManySteps"):
         fs.predict_projectile((0, 0, 0), (0, 0, 1), 1e9, fs.ProjectileSettings(method=fs.ProjectileMethod.Stepped))
+
+
+def test_numbers_beyond_the_float_range_are_refused():
+    # 1e300 does not fit a float: it is taken as infinity, which the library refuses.
+    with pytest.raises(fs.Error, match="NonFiniteInput"):
+        fs.predict_linear((0, 0, 0), (1e300, 0, 0), 1)
+    with pytest.raises(fs.Error, match="NonFiniteInput"):
+        fs.predict_linear((0, 0, 0), (1, 0, 0), 1e300)
