@@ -402,6 +402,7 @@ const CollisionWorld* worldFor(const fs_world* world, std::optional<CheckedCallb
     return &world->world;
 }
 
+#if FORESIGHT_C_WITH_EMBREE
 // Writes `text` into the caller's error buffer, cut to fit and NUL-terminated.
 void copyError(char* error, size_t capacity, const std::string& text) {
     if (error == nullptr || capacity == 0) return;
@@ -409,6 +410,7 @@ void copyError(char* error, size_t capacity, const std::string& text) {
     std::memcpy(error, text.data(), n);
     error[n] = '\0';
 }
+#endif
 
 // A StaticWorld's part of fs_world_add_mesh, with EmbreeWorld::addMesh's rules: the whole mesh is
 // checked before anything is added.
