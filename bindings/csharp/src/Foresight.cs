@@ -1,0 +1,558 @@
+// foresight's C# binding: the public API over Native.cs. Every Try* method returns the
+// library's Status and writes its result (default on a refusal); the method of the same name
+// without "Try" returns the result and throws ForesightException on a refusal. No method of the
+// per-frame path allocates: structs are passed by reference, arrays (trajectories, firing
+// solutions, dead-reckoning batches) are the caller's and are pinned, not copied.
+// Units: metres, seconds, radians; +Y up, +Z forward (Axes.cs for Unity and Godot).
+
+using System;
+using System.Numerics;
+using System.Runtime.InteropServices;
+using Microsoft.Win32.SafeHandles;
+
+namespace Foresight
+{
+    /// <summary>A call the library refused: <see cref="Status"/> says why.</summary>
+    public sealed class ForesightException : Exception
+    {
+        /// <summary>Why the input was refused.</summary>
+        public Status Status { get; private set; }
+
+        /// <summary>An exception for <paramref name="status"/> raised by
+        /// <paramref name="operation"/>, with the library's message.</summary>
+        public ForesightException(Status status, string operation)
+            : base(operation + ": " + Library.Message(status) + " (" + status + ")")
+        {
+            Status = status;
+        }
+
+        internal static void ThrowUnlessOk(Status status, string operation)
+        {
+            if (status != Status.Ok) throw new ForesightException(status, operation);
+        }
+    }
+
+    /// <summary>The native library as a whole: its ABI version and its status messages.</summary>
+    public static class Library
+    {
+        /// <summary>The ABI version this binding was written for (FS_ABI_VERSION).</summary>
+        public const uint ExpectedAbiVersion = 1;
+
+        /// <summary>The ABI version of the loaded <c>foresight_c</c> library.</summary>
+        public static uint AbiVersion { get { return Native.fs_abi_version(); } }
+
+        /// <summary>True when the loaded library has the ABI this binding expects.</summary>
+        public static bool IsCompatible { get { return AbiVersion == ExpectedAbiVersion; } }
+
+        /// <summary>Loads the library and checks its ABI version; call it once at start-up.
+        /// Throws DllNotFoundException when the library is missing and NotSupportedException
+        /// on a version mismatch.</summary>
+        public static void EnsureCompatible()
+        {
+            uint version = AbiVersion;
+            if (version != ExpectedAbiVersion)
+                throw new NotSupportedException("foresight_c has ABI version " + version + ", this binding needs " +
+                                                ExpectedAbiVersion);
+        }
+
+        /// <summary>The library's short English description of <paramref name="status"/>
+        /// (fs_status_message), e.g. "time must be >= 0". Allocates the string.</summary>
+        public static string Message(Status status)
+        {
+            return Marshal.PtrToStringAnsi(Native.fs_status_message(status));
+        }
+    }
+
+    /// <summary>Characters: constant velocity and constant acceleration (character.h).</summary>
+    public static class Characters
+    {
+        /// <summary>Constant velocity: position p + v t, velocity unchanged.</summary>
+        /// <param name="start">The current state (finite).</param>
+        /// <param name="time">Horizon [Units: s] [Limit: >= 0, finite].</param>
+        /// <param name="result">The predicted state (default on a refusal).</param>
+        /// <returns>Ok, NonFiniteInput, NegativeTime or NonFiniteResult.</returns>
+        public static Status TryPredictLinear(PointState start, float time, out PointState result)
+        {
+            result = default(PointState);
+            return Native.fs_predict_linear(ref start, time, out result);
+        }
+
+        /// <summary>Constant velocity (see TryPredictLinear); throws ForesightException.</summary>
+        public static PointState PredictLinear(PointState start, float time)
+        {
+            PointState result;
+            ForesightException.ThrowUnlessOk(TryPredictLinear(start, time, out result), "PredictLinear");
+            return result;
+        }
+
+        /// <summary>Constant acceleration: position p + v t + a t^2 / 2, velocity v + a t.</summary>
+        /// <param name="start">The current state (finite).</param>
+        /// <param name="acceleration">Constant, world axes [Units: m/s^2].</param>
+        /// <param name="time">Horizon [Units: s] [Limit: >= 0, finite].</param>
+        /// <param name="result">The predicted state (default on a refusal).</param>
+        /// <returns>Ok, NonFiniteInput, NegativeTime or NonFiniteResult.</returns>
+        public static Status TryPredictAccelerated(PointState start, Vector3 acceleration, float time,
+                                                   out PointState result)
+        {
+            result = default(PointState);
+            return Native.fs_predict_accelerated(ref start, new Vector3Native(acceleration), time, out result);
+        }
+
+        /// <summary>Constant acceleration (see TryPredictAccelerated); throws ForesightException.</summary>
+        public static PointState PredictAccelerated(PointState start, Vector3 acceleration, float time)
+        {
+            PointState result;
+            ForesightException.ThrowUnlessOk(TryPredictAccelerated(start, acceleration, time, out result),
+                                             "PredictAccelerated");
+            return result;
+        }
+    }
+
+    /// <summary>Vehicles turning at a constant angular velocity (vehicle.h).</summary>
+    public static class Vehicles
+    {
+        /// <summary>The defaults: Body frame, forward +Z (Unity's forward).</summary>
+        public static VehicleSettings DefaultSettings { get { return Native.fs_vehicle_settings_default(); } }
+
+        /// <summary>The defaults with Godot's forward axis -Z.</summary>
+        public static VehicleSettings GodotSettings
+        {
+            get
+            {
+                VehicleSettings s = Native.fs_vehicle_settings_default();
+                s.Forward = Axes.GodotForward;
+                return s;
+            }
+        }
+
+        /// <summary>The reference article's loop of <paramref name="iterations"/> equal steps.</summary>
+        /// <param name="start">The current state (finite, non-zero orientation).</param>
+        /// <param name="time">[Units: s] [Limit: >= 0, finite].</param>
+        /// <param name="iterations">[Limit: 1 .. 1048576]; the article uses 4.</param>
+        /// <param name="settings">Frame and forward axis (DefaultSettings).</param>
+        /// <param name="result">The state after <paramref name="time"/> (default on a refusal).</param>
+        /// <returns>Ok, InvalidSetting, NonFiniteInput, NegativeTime, InvalidIterations,
+        /// ZeroQuaternion, ZeroVector or NonFiniteResult.</returns>
+        public static Status TryPredictIterative(VehicleState start, float time, int iterations,
+                                                 VehicleSettings settings, out VehicleState result)
+        {
+            result = default(VehicleState);
+            return Native.fs_predict_vehicle_iterative(ref start, time, iterations, ref settings, out result);
+        }
+
+        /// <summary>The iterative loop (see TryPredictIterative); throws ForesightException.</summary>
+        public static VehicleState PredictIterative(VehicleState start, float time, int iterations,
+                                                    VehicleSettings settings)
+        {
+            VehicleState result;
+            ForesightException.ThrowUnlessOk(TryPredictIterative(start, time, iterations, settings, out result),
+                                             "PredictIterative");
+            return result;
+        }
+
+        /// <summary>The exact arc: a circle of radius |v| / |w| for w across the forward axis.</summary>
+        /// <param name="start">The current state (finite, non-zero orientation).</param>
+        /// <param name="time">[Units: s] [Limit: >= 0, finite].</param>
+        /// <param name="settings">Frame and forward axis (DefaultSettings).</param>
+        /// <param name="result">The state after <paramref name="time"/> (default on a refusal).</param>
+        /// <returns>Ok, InvalidSetting, NonFiniteInput, NegativeTime, ZeroQuaternion, ZeroVector
+        /// or NonFiniteResult.</returns>
+        public static Status TryPredictExact(VehicleState start, float time, VehicleSettings settings,
+                                             out VehicleState result)
+        {
+            result = default(VehicleState);
+            return Native.fs_predict_vehicle_exact(ref start, time, ref settings, out result);
+        }
+
+        /// <summary>The exact arc (see TryPredictExact); throws ForesightException.</summary>
+        public static VehicleState PredictExact(VehicleState start, float time, VehicleSettings settings)
+        {
+            VehicleState result;
+            ForesightException.ThrowUnlessOk(TryPredictExact(start, time, settings, out result), "PredictExact");
+            return result;
+        }
+    }
+
+    /// <summary>Owns a native fs_world.</summary>
+    internal sealed class WorldHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        /// <summary>An empty handle, filled by the marshaller.</summary>
+        public WorldHandle() : base(true) {}
+
+        protected override bool ReleaseHandle()
+        {
+            Native.fs_world_destroy(handle);
+            return true;
+        }
+    }
+
+    /// <summary>A static collision world (fs_world): planes, spheres, boxes, triangles. Dispose
+    /// it (or let the finalizer free it); no prediction may use it while shapes are added or it
+    /// is disposed. Using a disposed world throws ObjectDisposedException.</summary>
+    public sealed class World : IDisposable
+    {
+        internal readonly WorldHandle Handle;
+
+        /// <summary>A new, empty world. Allocates; throws OutOfMemoryException when the native
+        /// allocation fails.</summary>
+        public World()
+        {
+            Handle = Native.fs_world_create();
+            if (Handle.IsInvalid) throw new OutOfMemoryException("fs_world_create");
+        }
+
+        /// <summary>True once disposed.</summary>
+        public bool IsDisposed { get { return Handle.IsClosed; } }
+
+        /// <summary>Frees the native world (idempotent).</summary>
+        public void Dispose() { Handle.Dispose(); }
+
+        /// <summary>Adds a plane; nothing is added unless Ok.</summary>
+        /// <returns>Ok, NonFiniteInput, ZeroVector, InvalidRestitution or OutOfMemory.</returns>
+        public Status TryAddPlane(PlaneShape plane) { return Native.fs_world_add_plane(Handle, ref plane, IntPtr.Zero); }
+
+        /// <summary>Adds a plane with its own material (used by the Engine method).</summary>
+        public Status TryAddPlane(PlaneShape plane, SurfaceMaterial material)
+        {
+            return Native.fs_world_add_plane(Handle, ref plane, ref material);
+        }
+
+        /// <summary>Adds the plane dot(normal, x) = distance [Units: m]; throws ForesightException.</summary>
+        public void AddPlane(Vector3 normal, double distance)
+        {
+            PlaneShape p = new PlaneShape { Normal = normal, Distance = distance };
+            ForesightException.ThrowUnlessOk(TryAddPlane(p), "AddPlane");
+        }
+
+        /// <summary>Adds a sphere; nothing is added unless Ok.</summary>
+        /// <returns>Ok, NonFiniteInput, InvalidRadius, InvalidRestitution or OutOfMemory.</returns>
+        public Status TryAddSphere(SphereShape sphere) { return Native.fs_world_add_sphere(Handle, ref sphere, IntPtr.Zero); }
+
+        /// <summary>Adds a sphere with its own material.</summary>
+        public Status TryAddSphere(SphereShape sphere, SurfaceMaterial material)
+        {
+            return Native.fs_world_add_sphere(Handle, ref sphere, ref material);
+        }
+
+        /// <summary>Adds a sphere of <paramref name="radius"/> [Units: m]; throws ForesightException.</summary>
+        public void AddSphere(DVec3 center, float radius)
+        {
+            SphereShape s = new SphereShape { Center = center, Radius = radius };
+            ForesightException.ThrowUnlessOk(TryAddSphere(s), "AddSphere");
+        }
+
+        /// <summary>Adds a box; nothing is added unless Ok.</summary>
+        /// <returns>Ok, NonFiniteInput, DegenerateShape, InvalidRadius, ZeroQuaternion,
+        /// InvalidRestitution or OutOfMemory.</returns>
+        public Status TryAddBox(BoxShape box) { return Native.fs_world_add_box(Handle, ref box, IntPtr.Zero); }
+
+        /// <summary>Adds a box with its own material.</summary>
+        public Status TryAddBox(BoxShape box, SurfaceMaterial material) { return Native.fs_world_add_box(Handle, ref box, ref material); }
+
+        /// <summary>Adds a box [Units: m]; throws ForesightException.</summary>
+        public void AddBox(DVec3 center, Vector3 halfExtents, Quaternion orientation)
+        {
+            BoxShape b = new BoxShape { Center = center, HalfExtents = halfExtents, Orientation = orientation };
+            ForesightException.ThrowUnlessOk(TryAddBox(b), "AddBox");
+        }
+
+        /// <summary>Adds a two-sided triangle; nothing is added unless Ok.</summary>
+        /// <returns>Ok, NonFiniteInput, DegenerateShape, InvalidRestitution or OutOfMemory.</returns>
+        public Status TryAddTriangle(TriangleShape triangle)
+        {
+            return Native.fs_world_add_triangle(Handle, ref triangle, IntPtr.Zero);
+        }
+
+        /// <summary>Adds a triangle with its own material.</summary>
+        public Status TryAddTriangle(TriangleShape triangle, SurfaceMaterial material)
+        {
+            return Native.fs_world_add_triangle(Handle, ref triangle, ref material);
+        }
+
+        /// <summary>Adds the triangle a, b, c [Units: m]; throws ForesightException.</summary>
+        public void AddTriangle(DVec3 a, DVec3 b, DVec3 c)
+        {
+            TriangleShape t = new TriangleShape { A = a, B = b, C = c };
+            ForesightException.ThrowUnlessOk(TryAddTriangle(t), "AddTriangle");
+        }
+    }
+
+    /// <summary>Projectiles under constant gravity, bouncing off a World (projectile.h).</summary>
+    public static class Projectiles
+    {
+        /// <summary>The C++ defaults (the reference article's): Exact, gravity (0, -9.81, 0),
+        /// step 0.02 s, restitution 0.5, frictionless point, engine Jolt.</summary>
+        public static ProjectileSettings DefaultSettings { get { return Native.fs_projectile_settings_default(); } }
+
+        /// <summary>A trajectory buffer size that holds a Stepped or Engine trajectory of
+        /// <paramref name="time"/> [Units: s], and an Exact one with up to 64 bounces and
+        /// contact changes; 0 when the input is refused.</summary>
+        public static int TrajectoryCapacity(float time, ProjectileSettings settings)
+        {
+            ulong n = (ulong)Native.fs_trajectory_capacity(time, ref settings);
+            return n > int.MaxValue ? int.MaxValue : (int)n;
+        }
+
+        /// <summary>Predicts a projectile. Allocates nothing: the trajectory goes into
+        /// <paramref name="points"/>, pinned during the call.</summary>
+        /// <param name="position">Start [Units: m] (the sphere's centre when Radius > 0).</param>
+        /// <param name="velocity">Start velocity [Units: m/s] [Limit: &lt;= 1e6 m/s].</param>
+        /// <param name="time">Prediction time, e.g. a fuse [Units: s] [Limit: >= 0, finite].</param>
+        /// <param name="settings">Method and physical parameters.</param>
+        /// <param name="world">What to bounce off; null: nothing.</param>
+        /// <param name="points">The trajectory buffer, or null for none (capacity its length).</param>
+        /// <param name="result">The outcome, written on Ok and BufferTooSmall (default otherwise).</param>
+        /// <returns>Ok; BufferTooSmall (result and the first points written, see
+        /// TrajectoryNeeded); InvalidSetting, NonFiniteInput, InvalidStep, InvalidRestitution,
+        /// InvalidFriction, InvalidRadius, NegativeTime, OutOfRange, TooManySteps, TooManyEvents
+        /// or NonFiniteResult.</returns>
+        public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
+                                        World world, TrajectoryPoint[] points, out ProjectileResult result)
+        {
+            result = default(ProjectileResult);
+            UIntPtr capacity = new UIntPtr(points == null ? 0u : (uint)points.Length);
+            Vector3Native v = new Vector3Native(velocity);
+            if (world == null)
+                return Native.fs_predict_projectile(position, v, time, ref settings, IntPtr.Zero, points, capacity,
+                                                    out result);
+            return Native.fs_predict_projectile(position, v, time, ref settings, world.Handle, points, capacity,
+                                                out result);
+        }
+
+        /// <summary>Predicts a projectile without a trajectory (see TryPredict).</summary>
+        public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
+                                        World world, out ProjectileResult result)
+        {
+            return TryPredict(position, velocity, time, settings, world, null, out result);
+        }
+
+        /// <summary>Predicts a projectile (see TryPredict); throws ForesightException on any
+        /// status but Ok (BufferTooSmall too).</summary>
+        public static ProjectileResult Predict(DVec3 position, Vector3 velocity, float time,
+                                               ProjectileSettings settings, World world = null,
+                                               TrajectoryPoint[] points = null)
+        {
+            ProjectileResult result;
+            ForesightException.ThrowUnlessOk(TryPredict(position, velocity, time, settings, world, points, out result),
+                                             "PredictProjectile");
+            return result;
+        }
+
+#if NETSTANDARD2_1_OR_GREATER || NETCOREAPP2_1_OR_GREATER || UNITY_2021_2_OR_NEWER || FORESIGHT_SPAN
+        /// <summary>TryPredict into a Span (a stackalloc'd or pooled buffer); the same contract.</summary>
+        public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
+                                        World world, Span<TrajectoryPoint> points, out ProjectileResult result)
+        {
+            result = default(ProjectileResult);
+            UIntPtr capacity = new UIntPtr((uint)points.Length);
+            Vector3Native v = new Vector3Native(velocity);
+            ref TrajectoryPoint first = ref MemoryMarshal.GetReference(points);
+            if (world == null)
+                return Native.fs_predict_projectile(position, v, time, ref settings, IntPtr.Zero, ref first, capacity,
+                                                    out result);
+            return Native.fs_predict_projectile(position, v, time, ref settings, world.Handle, ref first, capacity,
+                                                out result);
+        }
+#endif
+    }
+
+    /// <summary>Aiming a projectile at a moving target in free space (aim.h).</summary>
+    public static class Aim
+    {
+        /// <summary>The most firing solutions any constraint has (FS_MAX_FIRING_SOLUTIONS).</summary>
+        public const int MaxFiringSolutions = 4;
+
+        /// <summary>The C++ defaults: from the origin, Speed constraint with speed 0, gravity
+        /// (0, -9.81, 0), MaxTime 60 s.</summary>
+        public static AimShot DefaultShot { get { return Native.fs_aim_shot_default(); } }
+
+        /// <summary>Every firing solution with a flight time in (0, MaxTime], earliest first,
+        /// into <paramref name="solutions"/> (MaxFiringSolutions entries hold them all).</summary>
+        /// <param name="shot">Launch point, constraint, gravity and time limit.</param>
+        /// <param name="target">The target's motion.</param>
+        /// <param name="solutions">Receives the earliest solutions (null: none asked for).</param>
+        /// <param name="count">The number written (0: unreachable, not an error).</param>
+        /// <returns>Ok, InvalidSetting, NonFiniteInput, NegativeTime, ZeroVector or NonFiniteResult.</returns>
+        public static Status TryAim(AimShot shot, AimTarget target, FiringSolution[] solutions, out int count)
+        {
+            UIntPtr n;
+            UIntPtr capacity = new UIntPtr(solutions == null ? 0u : (uint)solutions.Length);
+            Status s = Native.fs_aim_projectile(ref shot, ref target, solutions, capacity, out n);
+            count = s == Status.Ok ? (int)(ulong)n : 0;
+            return s;
+        }
+
+        /// <summary>TryAim, throwing ForesightException; returns the number of solutions.</summary>
+        public static int AimAt(AimShot shot, AimTarget target, FiringSolution[] solutions)
+        {
+            int count;
+            ForesightException.ThrowUnlessOk(TryAim(shot, target, solutions, out count), "Aim");
+            return count;
+        }
+    }
+
+    /// <summary>Network dead reckoning: the DIS models and the batch extrapolation
+    /// (dead_reckoning.h, replication.h).</summary>
+    public static class DeadReckoning
+    {
+        /// <summary>The DIS name of <paramref name="algorithm"/> ("STATIC", "FPW", ...; "?"
+        /// for another value). Allocates the string.</summary>
+        public static string AlgorithmName(DeadReckoningAlgorithm algorithm)
+        {
+            return Marshal.PtrToStringAnsi(Native.fs_dr_algorithm_name(algorithm));
+        }
+
+        /// <summary>The C++ receiver defaults: Extrapolate, ProjectiveVelocityBlending, blend
+        /// 0.2 s, half-life 0.1 s, teleport 10 m, limit 0.25 s, delay 0.1 s, skew 1 s, restart 10 s.</summary>
+        public static ReceiverSettings DefaultReceiverSettings { get { return Native.fs_dr_receiver_settings_default(); } }
+
+        /// <summary>Extrapolates <paramref name="state"/> by <paramref name="time"/> [Units: s]
+        /// [Limit: >= 0, finite] with its algorithm.</summary>
+        /// <returns>Ok, InvalidAlgorithm, NonFiniteInput, ZeroQuaternion, NegativeTime or
+        /// NonFiniteResult.</returns>
+        public static Status TryPredict(DeadReckoningState state, float time, out DeadReckoningResult result)
+        {
+            result = default(DeadReckoningResult);
+            return Native.fs_dr_predict(ref state, time, out result);
+        }
+
+        /// <summary>TryPredict, throwing ForesightException.</summary>
+        public static DeadReckoningResult Predict(DeadReckoningState state, float time)
+        {
+            DeadReckoningResult result;
+            ForesightException.ThrowUnlessOk(TryPredict(state, time, out result), "PredictDeadReckoning");
+            return result;
+        }
+
+        /// <summary>Extrapolates many entities to <paramref name="time"/> [Units: s]: results[i]
+        /// is TryPredict(states[i], (float)max(time - timestamps[i], 0)) bit for bit; refused
+        /// entities keep their state and are counted. As the C++ spans: when the lengths differ,
+        /// the entities up to the shortest are processed and the states beyond it are counted
+        /// as refused. Allocates nothing.</summary>
+        /// <returns>Ok, or NullPointer when an array is null (refused is then 0).</returns>
+        public static Status TryPredictBatch(DeadReckoningState[] states, double[] timestamps, double time,
+                                             DeadReckoningResult[] results, out int refused)
+        {
+            refused = 0;
+            if (states == null || timestamps == null || results == null) return Status.NullPointer;
+            int count = Math.Min(states.Length, Math.Min(timestamps.Length, results.Length));
+            UIntPtr n;
+            Status s = Native.fs_dr_predict_batch(states, timestamps, new UIntPtr((uint)count), time, results, out n);
+            if (s == Status.Ok) refused = (int)(ulong)n + (states.Length - count);
+            return s;
+        }
+
+        /// <summary>TryPredictBatch, throwing ForesightException; returns the number refused.</summary>
+        public static int PredictBatch(DeadReckoningState[] states, double[] timestamps, double time,
+                                       DeadReckoningResult[] results)
+        {
+            int refused;
+            ForesightException.ThrowUnlessOk(TryPredictBatch(states, timestamps, time, results, out refused),
+                                             "PredictDeadReckoningBatch");
+            return refused;
+        }
+    }
+
+    /// <summary>Owns a native fs_dr_receiver.</summary>
+    internal sealed class ReceiverHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        /// <summary>An empty handle, filled by the marshaller.</summary>
+        public ReceiverHandle() : base(true) {}
+
+        protected override bool ReleaseHandle()
+        {
+            Native.fs_dr_receiver_destroy(handle);
+            return true;
+        }
+    }
+
+    /// <summary>Shows one remote entity from the updates it receives (DeadReckoningReceiver):
+    /// extrapolates or interpolates them and blends corrections. Creating it allocates (a fixed
+    /// size); Receive and Sample do not. One thread at a time. Dispose it.</summary>
+    public sealed class DeadReckoningReceiver : IDisposable
+    {
+        private readonly ReceiverHandle handle;
+
+        private DeadReckoningReceiver(ReceiverHandle h) { handle = h; }
+
+        /// <summary>A receiver with the default settings.</summary>
+        public DeadReckoningReceiver() : this(DeadReckoning.DefaultReceiverSettings) {}
+
+        /// <summary>A receiver with <paramref name="settings"/>; throws ForesightException
+        /// (InvalidSetting, OutOfMemory).</summary>
+        public DeadReckoningReceiver(ReceiverSettings settings)
+        {
+            ReceiverHandle h;
+            Status s = Native.fs_dr_receiver_create(ref settings, out h);
+            if (s != Status.Ok)
+            {
+                if (h != null) h.Dispose();
+                throw new ForesightException(s, "DeadReckoningReceiver");
+            }
+            handle = h;
+        }
+
+        /// <summary>Makes a receiver after checking <paramref name="settings"/>.</summary>
+        /// <returns>Ok (receiver set), InvalidSetting or OutOfMemory (receiver null).</returns>
+        public static Status TryCreate(ReceiverSettings settings, out DeadReckoningReceiver receiver)
+        {
+            ReceiverHandle h;
+            Status s = Native.fs_dr_receiver_create(ref settings, out h);
+            if (s != Status.Ok)
+            {
+                if (h != null) h.Dispose();
+                receiver = null;
+                return s;
+            }
+            receiver = new DeadReckoningReceiver(h);
+            return s;
+        }
+
+        /// <summary>True once disposed.</summary>
+        public bool IsDisposed { get { return handle.IsClosed; } }
+
+        /// <summary>Frees the native receiver (idempotent).</summary>
+        public void Dispose() { handle.Dispose(); }
+
+        /// <summary>Takes an update stamped <paramref name="timestamp"/> [Units: s] (sender
+        /// clock) arriving at <paramref name="receiveTime"/> [Units: s]; bad or stale updates
+        /// are dropped and counted.</summary>
+        /// <returns>What was done with it.</returns>
+        public UpdateOutcome Receive(double timestamp, DeadReckoningState state, double receiveTime)
+        {
+            UpdateOutcome outcome;
+            Native.fs_dr_receiver_receive(handle, timestamp, ref state, receiveTime, out outcome);
+            return outcome;
+        }
+
+        /// <summary>The pose to show at <paramref name="time"/> [Units: s].</summary>
+        /// <returns>Ok, NoUpdate, NonFiniteInput or NonFiniteResult.</returns>
+        public Status TrySample(double time, out ReceivedPose pose)
+        {
+            pose = default(ReceivedPose);
+            return Native.fs_dr_receiver_sample(handle, time, out pose);
+        }
+
+        /// <summary>TrySample, throwing ForesightException.</summary>
+        public ReceivedPose Sample(double time)
+        {
+            ReceivedPose pose;
+            ForesightException.ThrowUnlessOk(TrySample(time, out pose), "Sample");
+            return pose;
+        }
+
+        /// <summary>The counters since creation or the last Reset.</summary>
+        public ReceiverCounters Counters
+        {
+            get
+            {
+                ReceiverCounters c;
+                Native.fs_dr_receiver_get_counters(handle, out c);
+                return c;
+            }
+        }
+
+        /// <summary>Forgets every update and counter (the settings stay).</summary>
+        public void Reset() { Native.fs_dr_receiver_reset(handle); }
+    }
+}

@@ -1,0 +1,62 @@
+// The P/Invoke declarations of foresight_c.h, one per C function. Internal: the public API is in
+// Foresight.cs. Every struct is blittable (Types.cs), so the marshaller passes pointers to the
+// caller's values and pins arrays in place: no call here allocates.
+
+using System;
+using System.Runtime.InteropServices;
+
+namespace Foresight
+{
+    /// <summary>The C functions of foresight_c.h (the shared library <c>foresight_c</c>).</summary>
+    internal static class Native
+    {
+        /// <summary>The library's name: <c>libforesight_c.so</c>, <c>libforesight_c.dylib</c>,
+        /// <c>foresight_c.dll</c>.</summary>
+        internal const string Library = "foresight_c";
+
+        [DllImport(Library)] internal static extern uint fs_abi_version();
+        [DllImport(Library)] internal static extern IntPtr fs_status_message(Status status);
+
+        [DllImport(Library)] internal static extern Status fs_predict_linear(ref PointState start, float time, out PointState result);
+        [DllImport(Library)] internal static extern Status fs_predict_accelerated(ref PointState start, Vector3Native acceleration, float time, out PointState result);
+
+        [DllImport(Library)] internal static extern VehicleSettings fs_vehicle_settings_default();
+        [DllImport(Library)] internal static extern Status fs_predict_vehicle_iterative(ref VehicleState start, float time, int iterations, ref VehicleSettings settings, out VehicleState result);
+        [DllImport(Library)] internal static extern Status fs_predict_vehicle_exact(ref VehicleState start, float time, ref VehicleSettings settings, out VehicleState result);
+
+        [DllImport(Library)] internal static extern WorldHandle fs_world_create();
+        [DllImport(Library)] internal static extern void fs_world_destroy(IntPtr world);
+        [DllImport(Library)] internal static extern Status fs_world_add_plane(WorldHandle world, ref PlaneShape plane, ref SurfaceMaterial material);
+        [DllImport(Library)] internal static extern Status fs_world_add_plane(WorldHandle world, ref PlaneShape plane, IntPtr noMaterial);
+        [DllImport(Library)] internal static extern Status fs_world_add_sphere(WorldHandle world, ref SphereShape sphere, ref SurfaceMaterial material);
+        [DllImport(Library)] internal static extern Status fs_world_add_sphere(WorldHandle world, ref SphereShape sphere, IntPtr noMaterial);
+        [DllImport(Library)] internal static extern Status fs_world_add_box(WorldHandle world, ref BoxShape box, ref SurfaceMaterial material);
+        [DllImport(Library)] internal static extern Status fs_world_add_box(WorldHandle world, ref BoxShape box, IntPtr noMaterial);
+        [DllImport(Library)] internal static extern Status fs_world_add_triangle(WorldHandle world, ref TriangleShape triangle, ref SurfaceMaterial material);
+        [DllImport(Library)] internal static extern Status fs_world_add_triangle(WorldHandle world, ref TriangleShape triangle, IntPtr noMaterial);
+
+        [DllImport(Library)] internal static extern ProjectileSettings fs_projectile_settings_default();
+        [DllImport(Library)] internal static extern UIntPtr fs_trajectory_capacity(float time, ref ProjectileSettings settings);
+        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, WorldHandle world, [In, Out] TrajectoryPoint[] points, UIntPtr capacity, out ProjectileResult result);
+        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, IntPtr noWorld, [In, Out] TrajectoryPoint[] points, UIntPtr capacity, out ProjectileResult result);
+        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, WorldHandle world, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);
+        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, IntPtr noWorld, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);
+
+        [DllImport(Library)] internal static extern AimShot fs_aim_shot_default();
+        [DllImport(Library)] internal static extern Status fs_aim_projectile(ref AimShot shot, ref AimTarget target, [In, Out] FiringSolution[] solutions, UIntPtr capacity, out UIntPtr count);
+
+        [DllImport(Library)] internal static extern IntPtr fs_dr_algorithm_name(DeadReckoningAlgorithm algorithm);
+        [DllImport(Library)] internal static extern Status fs_dr_predict(ref DeadReckoningState state, float time, out DeadReckoningResult result);
+        [DllImport(Library)] internal static extern Status fs_dr_predict_batch([In] DeadReckoningState[] states, [In] double[] timestamps, UIntPtr count, double time, [In, Out] DeadReckoningResult[] results, out UIntPtr refused);
+        [DllImport(Library)] internal static extern ReceiverSettings fs_dr_receiver_settings_default();
+        [DllImport(Library)] internal static extern Status fs_dr_receiver_create(ref ReceiverSettings settings, out ReceiverHandle receiver);
+        [DllImport(Library)] internal static extern void fs_dr_receiver_destroy(IntPtr receiver);
+        [DllImport(Library)] internal static extern Status fs_dr_receiver_receive(ReceiverHandle receiver, double timestamp, ref DeadReckoningState state, double receiveTime, out UpdateOutcome outcome);
+        [DllImport(Library)] internal static extern Status fs_dr_receiver_sample(ReceiverHandle receiver, double time, out ReceivedPose pose);
+        [DllImport(Library)] internal static extern Status fs_dr_receiver_get_counters(ReceiverHandle receiver, out ReceiverCounters counters);
+        [DllImport(Library)] internal static extern void fs_dr_receiver_reset(ReceiverHandle receiver);
+
+        // Raw NULL-pointer forms, for the tests of the C API's own refusals.
+        [DllImport(Library, EntryPoint = "fs_predict_linear")] internal static extern Status fs_predict_linear_raw(IntPtr start, float time, IntPtr result);
+    }
+}

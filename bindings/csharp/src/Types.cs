@@ -1,0 +1,615 @@
+// The structs and enumerations of foresight_c.h, field for field. Each struct is
+// LayoutKind.Explicit with the size and offsets documented in the header (tests/BindingTests.cs
+// checks them against the header's comments with Marshal.SizeOf and Marshal.OffsetOf), and is
+// blittable: fs_vec3 is System.Numerics.Vector3, fs_quat is System.Numerics.Quaternion (both
+// x, y, z floats, w last), fs_dvec3 is DVec3, int32_t enumerations are C# enums over int.
+// Units: metres, seconds, radians; +Y up, +Z forward (Axes.cs for Unity and Godot).
+
+using System;
+using System.Numerics;
+using System.Runtime.InteropServices;
+
+namespace Foresight
+{
+    /// <summary>The outcome of a call (fs_status): <see cref="Ok"/> or why the input was
+    /// refused. <see cref="Library.Message"/> gives the library's text for each.</summary>
+    public enum Status
+    {
+        /// <summary>Success.</summary>
+        Ok = 0,
+        /// <summary>A position, vector, quaternion or scalar is NaN or infinite.</summary>
+        NonFiniteInput = 1,
+        /// <summary>A prediction time is below zero.</summary>
+        NegativeTime = 2,
+        /// <summary>A time step is zero, negative or not finite.</summary>
+        InvalidStep = 3,
+        /// <summary>An iteration count is below 1 or above 1048576.</summary>
+        InvalidIterations = 4,
+        /// <summary>Restitution is outside [0, 1].</summary>
+        InvalidRestitution = 5,
+        /// <summary>Friction is negative.</summary>
+        InvalidFriction = 6,
+        /// <summary>A radius is negative (projectiles) or not positive (spheres).</summary>
+        InvalidRadius = 7,
+        /// <summary>A quaternion has zero length.</summary>
+        ZeroQuaternion = 8,
+        /// <summary>A vector that must have a direction (normal, forward axis) is zero.</summary>
+        ZeroVector = 9,
+        /// <summary>A triangle with no area, a box with a non-positive half extent.</summary>
+        DegenerateShape = 10,
+        /// <summary>The prediction would take more steps than MaxSteps.</summary>
+        TooManySteps = 11,
+        /// <summary>The prediction hit MaxEvents (bounces and contact changes).</summary>
+        TooManyEvents = 12,
+        /// <summary>The inputs are valid but so large that the result overflows.</summary>
+        NonFiniteResult = 13,
+        /// <summary>A dead-reckoning algorithm outside 1 to 9.</summary>
+        InvalidAlgorithm = 14,
+        /// <summary>A speed is zero, negative or not finite.</summary>
+        InvalidSpeed = 15,
+        /// <summary>A fuse time is zero, negative or not finite.</summary>
+        InvalidFuse = 16,
+        /// <summary>A settings field (an enumeration too) is outside its range.</summary>
+        InvalidSetting = 17,
+        /// <summary>A time is earlier than the previous call's.</summary>
+        TimeWentBackwards = 18,
+        /// <summary>A dead-reckoning receiver has no update yet.</summary>
+        NoUpdate = 19,
+        /// <summary>Beyond the precision envelope (a position beyond 1e5 m, a speed above 1e6 m/s).</summary>
+        OutOfRange = 20,
+        /// <summary>The trajectory needs more points than the buffer holds; the result and the
+        /// first points are written (<see cref="ProjectileResult.TrajectoryNeeded"/>).</summary>
+        BufferTooSmall = 1000,
+        /// <summary>A required argument is null. Nothing is written.</summary>
+        NullPointer = 1001,
+        /// <summary>Memory ran out while adding a shape; the world is emptied.</summary>
+        OutOfMemory = 1002,
+    }
+
+    /// <summary>A position [Units: m] in double precision (fs_dvec3). 24 bytes.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 24)]
+    public struct DVec3 : IEquatable<DVec3>
+    {
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(0)] public double X;
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(8)] public double Y;
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(16)] public double Z;
+
+        /// <summary>A position from its coordinates [Units: m].</summary>
+        public DVec3(double x, double y, double z)
+        {
+            X = x;
+            Y = y;
+            Z = z;
+        }
+
+        /// <summary>The float vector widened (exact).</summary>
+        public static implicit operator DVec3(Vector3 v) { return new DVec3(v.X, v.Y, v.Z); }
+
+        /// <summary>Rounded to float [Units: m] (loses precision beyond a few km).</summary>
+        public Vector3 ToVector3() { return new Vector3((float)X, (float)Y, (float)Z); }
+
+        /// <summary>True when every coordinate is equal (bitwise equal for non-NaN values).</summary>
+        public bool Equals(DVec3 other) { return X == other.X && Y == other.Y && Z == other.Z; }
+        /// <summary>See <see cref="Equals(DVec3)"/>.</summary>
+        public override bool Equals(object obj) { return obj is DVec3 && Equals((DVec3)obj); }
+        /// <summary>A hash of the coordinates.</summary>
+        public override int GetHashCode() { return X.GetHashCode() ^ (Y.GetHashCode() * 397) ^ (Z.GetHashCode() * 7919); }
+        /// <summary>"(x, y, z)".</summary>
+        public override string ToString() { return "(" + X + ", " + Y + ", " + Z + ")"; }
+    }
+
+    /// <summary>fs_vec3 passed by value (the C functions taking an fs_vec3 argument): three
+    /// floats, kept apart from System.Numerics.Vector3 so that no runtime's SIMD treatment of
+    /// Vector3 can change how it is passed.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct Vector3Native
+    {
+        internal float X, Y, Z;
+        internal Vector3Native(Vector3 v)
+        {
+            X = v.X;
+            Y = v.Y;
+            Z = v.Z;
+        }
+    }
+
+    // ---- Characters ------------------------------------------------------------------------
+
+    /// <summary>Position and velocity of a moving point (fs_point_state). 40 bytes: Position 0,
+    /// Velocity 24, Reserved 36.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 40)]
+    public struct PointState
+    {
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s]</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>Padding: ignored, written as 0.</summary>
+        [FieldOffset(36)] public float Reserved;
+
+        /// <summary>A state from a position [Units: m] and a velocity [Units: m/s].</summary>
+        public PointState(DVec3 position, Vector3 velocity)
+        {
+            Position = position;
+            Velocity = velocity;
+            Reserved = 0;
+        }
+    }
+
+    // ---- Vehicles --------------------------------------------------------------------------
+
+    /// <summary>The axes of a vehicle's angular velocity (FS_FRAME_*).</summary>
+    public enum AngularFrame
+    {
+        /// <summary>The vehicle's own axes: q' = q r (the reference article).</summary>
+        Body = 0,
+        /// <summary>World axes: q' = r q.</summary>
+        World = 1,
+    }
+
+    /// <summary>A vehicle's kinematic state (fs_vehicle_state). 64 bytes: Position 0, Velocity
+    /// 24, Orientation 36, AngularVelocity 52.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 64)]
+    public struct VehicleState
+    {
+        /// <summary>[Units: m], world axes.</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s], world axes.</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>Local-to-world; non-zero (normalised by the library).</summary>
+        [FieldOffset(36)] public Quaternion Orientation;
+        /// <summary>[Units: rad/s], in the axes of <see cref="VehicleSettings.Frame"/>.</summary>
+        [FieldOffset(52)] public Vector3 AngularVelocity;
+
+        /// <summary>A state from its fields (units as the fields').</summary>
+        public VehicleState(DVec3 position, Vector3 velocity, Quaternion orientation, Vector3 angularVelocity)
+        {
+            Position = position;
+            Velocity = velocity;
+            Orientation = orientation;
+            AngularVelocity = angularVelocity;
+        }
+    }
+
+    /// <summary>How to read a VehicleState (fs_vehicle_settings). 16 bytes: Frame 0, Forward 4.
+    /// <see cref="Vehicles.DefaultSettings"/> gives the defaults (Body, +Z).</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 16)]
+    public struct VehicleSettings
+    {
+        /// <summary>The angular velocity's axes (default Body).</summary>
+        [FieldOffset(0)] public AngularFrame Frame;
+        /// <summary>Local forward axis [Limit: non-zero, finite]; default +Z, Godot's is -Z
+        /// (<see cref="Axes.GodotForward"/>).</summary>
+        [FieldOffset(4)] public Vector3 Forward;
+    }
+
+    // ---- Collision worlds ------------------------------------------------------------------
+
+    /// <summary>A surface's own material (fs_material), used by the Engine method only. 8 bytes:
+    /// Restitution 0, Friction 4.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 8)]
+    public struct SurfaceMaterial
+    {
+        /// <summary>[Limit: 0 .. 1, or negative: none]</summary>
+        [FieldOffset(0)] public float Restitution;
+        /// <summary>[Limit: >= 0, or negative: none]</summary>
+        [FieldOffset(4)] public float Friction;
+    }
+
+    /// <summary>A one-sided infinite plane dot(Normal, x) = Distance, solid behind (fs_plane).
+    /// 24 bytes: Normal 0, Reserved 12, Distance 16.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 24)]
+    public struct PlaneShape
+    {
+        /// <summary>[Limit: non-zero, finite]; normalised when added (Distance with it).</summary>
+        [FieldOffset(0)] public Vector3 Normal;
+        /// <summary>Padding: ignored.</summary>
+        [FieldOffset(12)] public float Reserved;
+        /// <summary>dot(Normal, x) on the plane [Units: m with a unit normal].</summary>
+        [FieldOffset(16)] public double Distance;
+    }
+
+    /// <summary>A solid sphere (fs_sphere). 32 bytes: Center 0, Radius 24, Reserved 28.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 32)]
+    public struct SphereShape
+    {
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(0)] public DVec3 Center;
+        /// <summary>[Units: m] [Limit: > 0]</summary>
+        [FieldOffset(24)] public float Radius;
+        /// <summary>Padding: ignored.</summary>
+        [FieldOffset(28)] public float Reserved;
+    }
+
+    /// <summary>A solid box rotated about its centre (fs_box). 56 bytes: Center 0, HalfExtents
+    /// 24, Orientation 36, Rounding 52.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct BoxShape
+    {
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(0)] public DVec3 Center;
+        /// <summary>Along the box's local axes [Units: m] [Limit: > 0].</summary>
+        [FieldOffset(24)] public Vector3 HalfExtents;
+        /// <summary>Local-to-world; non-zero.</summary>
+        [FieldOffset(36)] public Quaternion Orientation;
+        /// <summary>Radius of rounded edges and corners [Units: m] [Limit: 0 .. smallest half extent].</summary>
+        [FieldOffset(52)] public float Rounding;
+    }
+
+    /// <summary>A two-sided triangle (fs_triangle). 72 bytes: A 0, B 24, C 48.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 72)]
+    public struct TriangleShape
+    {
+        /// <summary>A vertex [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 A;
+        /// <summary>A vertex [Units: m].</summary>
+        [FieldOffset(24)] public DVec3 B;
+        /// <summary>A vertex [Units: m].</summary>
+        [FieldOffset(48)] public DVec3 C;
+    }
+
+    // ---- Projectiles -----------------------------------------------------------------------
+
+    /// <summary>The projectile integrators (FS_METHOD_*).</summary>
+    public enum ProjectileMethod
+    {
+        /// <summary>Event driven: exact impact times, sliding and resting (default).</summary>
+        Exact = 0,
+        /// <summary>The reference article's fixed-step loop.</summary>
+        Stepped = 1,
+        /// <summary>Step for step as the physics engine <see cref="ProjectileSettings.Engine"/>.</summary>
+        Engine = 2,
+    }
+
+    /// <summary>The engines the Engine method follows (FS_ENGINE_*).</summary>
+    public enum PhysicsEngine
+    {
+        /// <summary>Plain semi-implicit Euler at 60 Hz.</summary>
+        Custom = 0,
+        /// <summary>Jolt Physics 5 (default).</summary>
+        Jolt = 1,
+        /// <summary>PhysX 4/5 with Unity's defaults.</summary>
+        PhysX = 2,
+        /// <summary>Rapier, 4 solver sub-steps.</summary>
+        Rapier = 3,
+        /// <summary>Bullet's btDiscreteDynamicsWorld.</summary>
+        Bullet = 4,
+        /// <summary>Godot 3 with GodotPhysics.</summary>
+        Godot3 = 5,
+        /// <summary>Godot 3 with Bullet.</summary>
+        Godot3Bullet = 6,
+        /// <summary>Box2D v2.4 (motion in the x-y plane).</summary>
+        Box2D = 7,
+    }
+
+    /// <summary>How to predict a projectile (fs_projectile_settings). 48 bytes: Method 0,
+    /// Gravity 4, Step 16, Restitution 20, Friction 24, Radius 28, MaxBounces 32, MaxSteps 36,
+    /// MaxEvents 40, Engine 44. <see cref="Projectiles.DefaultSettings"/> gives the defaults.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 48)]
+    public struct ProjectileSettings
+    {
+        /// <summary>The integrator (default Exact).</summary>
+        [FieldOffset(0)] public ProjectileMethod Method;
+        /// <summary>[Units: m/s^2], world axes (default (0, -9.81, 0)).</summary>
+        [FieldOffset(4)] public Vector3 Gravity;
+        /// <summary>Time step [Units: s] [Limit: > 0] (default 0.02).</summary>
+        [FieldOffset(16)] public float Step;
+        /// <summary>Coefficient of restitution [Limit: 0 .. 1] (default 0.5).</summary>
+        [FieldOffset(20)] public float Restitution;
+        /// <summary>Coulomb friction [Limit: >= 0] (default 0).</summary>
+        [FieldOffset(24)] public float Friction;
+        /// <summary>0: a point; > 0: a sphere [Units: m] (default 0).</summary>
+        [FieldOffset(28)] public float Radius;
+        /// <summary>Bounces allowed; the next impact ends the prediction (default uint.MaxValue).</summary>
+        [FieldOffset(32)] public uint MaxBounces;
+        /// <summary>Work cap: more steps give TooManySteps (default 1048576).</summary>
+        [FieldOffset(36)] public uint MaxSteps;
+        /// <summary>Work cap (Exact): impacts and contact changes (default 65536).</summary>
+        [FieldOffset(40)] public uint MaxEvents;
+        /// <summary>The engine of the Engine method (default Jolt); checked always.</summary>
+        [FieldOffset(44)] public PhysicsEngine Engine;
+    }
+
+    /// <summary>What a trajectory point marks (FS_EVENT_*).</summary>
+    public enum TrajectoryEvent
+    {
+        /// <summary>The initial state (t = 0).</summary>
+        Start = 0,
+        /// <summary>A step boundary.</summary>
+        Step = 1,
+        /// <summary>An impact (velocity after it); has a normal.</summary>
+        Bounce = 2,
+        /// <summary>Came to rest (Exact only).</summary>
+        Rest = 3,
+        /// <summary>The prediction stopped at this impact (MaxBounces); has a normal.</summary>
+        Hit = 4,
+        /// <summary>The final state at the prediction time.</summary>
+        End = 5,
+    }
+
+    /// <summary>A point of a predicted trajectory (fs_trajectory_point). 56 bytes: Time 0,
+    /// Event 4, Position 8, Velocity 32, Normal 44.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct TrajectoryPoint
+    {
+        /// <summary>Since the start [Units: s].</summary>
+        [FieldOffset(0)] public float Time;
+        /// <summary>What the point marks.</summary>
+        [FieldOffset(4)] public TrajectoryEvent Event;
+        /// <summary>[Units: m]</summary>
+        [FieldOffset(8)] public DVec3 Position;
+        /// <summary>[Units: m/s]; after the bounce for Bounce.</summary>
+        [FieldOffset(32)] public Vector3 Velocity;
+        /// <summary>Surface normal for Bounce and Hit; else zero.</summary>
+        [FieldOffset(44)] public Vector3 Normal;
+    }
+
+    /// <summary>The outcome of a projectile prediction (fs_projectile_result). 80 bytes:
+    /// Position 0, Velocity 24, Time 36, Bounces 40, at_rest 44, stopped_at_hit 48, HitNormal
+    /// 52, TrajectorySize 64, TrajectoryNeeded 72.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 80)]
+    public struct ProjectileResult
+    {
+        /// <summary>Final position [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>Final velocity [Units: m/s].</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>Time reached [Units: s].</summary>
+        [FieldOffset(36)] public float Time;
+        /// <summary>Bounces applied.</summary>
+        [FieldOffset(40)] public uint Bounces;
+        [FieldOffset(44)] private int atRest;
+        [FieldOffset(48)] private int stoppedAtHit;
+        /// <summary>Normal of the last impact (zero if none).</summary>
+        [FieldOffset(52)] public Vector3 HitNormal;
+        /// <summary>Points written into the buffer.</summary>
+        [FieldOffset(64)] public ulong TrajectorySize;
+        /// <summary>Points of the whole trajectory; more than TrajectorySize if truncated.</summary>
+        [FieldOffset(72)] public ulong TrajectoryNeeded;
+
+        /// <summary>True when (Exact) the projectile came to rest on a surface.</summary>
+        public bool AtRest { get { return atRest != 0; } }
+        /// <summary>True when the prediction ended at an impact (MaxBounces reached).</summary>
+        public bool StoppedAtHit { get { return stoppedAtHit != 0; } }
+    }
+
+    // ---- Aim -------------------------------------------------------------------------------
+
+    /// <summary>What fixes the launch velocity besides meeting the target (FS_AIM_*).</summary>
+    public enum AimConstraint
+    {
+        /// <summary>|velocity| = Speed (low and high arc).</summary>
+        Speed = 0,
+        /// <summary>The velocity's part across gravity has length Speed.</summary>
+        HorizontalSpeed = 1,
+        /// <summary>The apex is ApexHeight above the launch point.</summary>
+        ApexAboveStart = 2,
+        /// <summary>The apex is ApexHeight above the hit point.</summary>
+        ApexAboveTarget = 3,
+    }
+
+    /// <summary>The shooter and the shot's constraint (fs_aim_shot). 56 bytes: From 0,
+    /// Constraint 24, Speed 28, ApexHeight 32, Gravity 36, MaxTime 48, Reserved 52.
+    /// <see cref="Aim.DefaultShot"/> gives the defaults.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct AimShot
+    {
+        /// <summary>Launch point [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 From;
+        /// <summary>The constraint (default Speed).</summary>
+        [FieldOffset(24)] public AimConstraint Constraint;
+        /// <summary>Launch speed [Units: m/s] for Speed and HorizontalSpeed (default 0).</summary>
+        [FieldOffset(28)] public float Speed;
+        /// <summary>The apex's height along -gravity [Units: m] for the apex constraints.</summary>
+        [FieldOffset(32)] public float ApexHeight;
+        /// <summary>[Units: m/s^2], world axes (default (0, -9.81, 0)).</summary>
+        [FieldOffset(36)] public Vector3 Gravity;
+        /// <summary>Latest flight time reported [Units: s] (default 60).</summary>
+        [FieldOffset(48)] public float MaxTime;
+        /// <summary>Padding: ignored.</summary>
+        [FieldOffset(52)] public float Reserved;
+    }
+
+    /// <summary>A target moving as p + v t + a t^2 / 2 (fs_aim_target). 48 bytes: Position 0,
+    /// Velocity 24, Acceleration 36.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 48)]
+    public struct AimTarget
+    {
+        /// <summary>At t = 0 [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s]</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>[Units: m/s^2]</summary>
+        [FieldOffset(36)] public Vector3 Acceleration;
+    }
+
+    /// <summary>One way to hit the target (fs_firing_solution). 48 bytes: Velocity 0, Time 12,
+    /// Hit 16, Elevation 40, Reserved 44.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 48)]
+    public struct FiringSolution
+    {
+        /// <summary>Launch velocity [Units: m/s].</summary>
+        [FieldOffset(0)] public Vector3 Velocity;
+        /// <summary>Flight time to the hit [Units: s].</summary>
+        [FieldOffset(12)] public float Time;
+        /// <summary>Where projectile and target meet [Units: m].</summary>
+        [FieldOffset(16)] public DVec3 Hit;
+        /// <summary>Launch angle above the plane across gravity [Units: rad].</summary>
+        [FieldOffset(40)] public float Elevation;
+        /// <summary>Padding: written as 0.</summary>
+        [FieldOffset(44)] public float Reserved;
+    }
+
+    // ---- Dead reckoning --------------------------------------------------------------------
+
+    /// <summary>The DIS (IEEE 1278.1) dead-reckoning models (FS_DR_*).</summary>
+    public enum DeadReckoningAlgorithm
+    {
+        /// <summary>Does not move or turn.</summary>
+        Static = 1,
+        /// <summary>Fixed orientation, constant world velocity: p + v t.</summary>
+        Fpw = 2,
+        /// <summary>Rotating, constant world velocity.</summary>
+        Rpw = 3,
+        /// <summary>Rotating, constant world acceleration.</summary>
+        Rvw = 4,
+        /// <summary>Fixed orientation, constant world acceleration: p + v t + a t^2 / 2.</summary>
+        Fvw = 5,
+        /// <summary>Fixed orientation, constant body velocity.</summary>
+        Fpb = 6,
+        /// <summary>Rotating, constant body velocity (turns with the body).</summary>
+        Rpb = 7,
+        /// <summary>Rotating, constant body acceleration.</summary>
+        Rvb = 8,
+        /// <summary>Fixed orientation, constant body acceleration.</summary>
+        Fvb = 9,
+    }
+
+    /// <summary>The state an entity last reported (fs_dr_state). 80 bytes: Position 0,
+    /// Velocity 24, Acceleration 36, Orientation 48, AngularVelocity 64, Algorithm 76.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 80)]
+    public struct DeadReckoningState
+    {
+        /// <summary>[Units: m], world axes.</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s]; world axes (*W models) or body axes (*B models).</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>[Units: m/s^2]; axes as Velocity; used by RVW, FVW, RVB, FVB.</summary>
+        [FieldOffset(36)] public Vector3 Acceleration;
+        /// <summary>Body-to-world; non-zero.</summary>
+        [FieldOffset(48)] public Quaternion Orientation;
+        /// <summary>[Units: rad/s], body axes; used by RPW, RVW, RPB, RVB.</summary>
+        [FieldOffset(64)] public Vector3 AngularVelocity;
+        /// <summary>The model (a value outside 1 to 9 is refused: InvalidAlgorithm).</summary>
+        [FieldOffset(76)] public DeadReckoningAlgorithm Algorithm;
+    }
+
+    /// <summary>An extrapolated state (fs_dr_result). 56 bytes: Position 0, Velocity 24,
+    /// Orientation 36, Reserved 52.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct DeadReckoningResult
+    {
+        /// <summary>[Units: m], world axes.</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s], in the input velocity's axes.</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>Body-to-world, unit.</summary>
+        [FieldOffset(36)] public Quaternion Orientation;
+        /// <summary>Padding: written as 0.</summary>
+        [FieldOffset(52)] public float Reserved;
+    }
+
+    /// <summary>How a receiver shows a remote entity (FS_DR_MODE_*).</summary>
+    public enum ReceiverMode
+    {
+        /// <summary>The newest update extrapolated to now, with smoothing.</summary>
+        Extrapolate = 0,
+        /// <summary>InterpolationDelay in the past, between buffered updates.</summary>
+        Interpolate = 1,
+    }
+
+    /// <summary>How a receiver hides corrections in Extrapolate mode (FS_DR_SMOOTH_*).</summary>
+    public enum Smoothing
+    {
+        /// <summary>Jump to the new update's extrapolation.</summary>
+        Snap = 0,
+        /// <summary>Blend old to new over BlendTime.</summary>
+        LinearBlend = 1,
+        /// <summary>Projective velocity blending (default).</summary>
+        ProjectiveVelocityBlending = 2,
+        /// <summary>The offset decays with half-life DecayHalfLife.</summary>
+        ExponentialDecay = 3,
+    }
+
+    /// <summary>What a receiver did with an update (FS_DR_ACCEPTED ... FS_DR_TOO_FAR_AHEAD).</summary>
+    public enum UpdateOutcome
+    {
+        /// <summary>Applied, smoothed.</summary>
+        Accepted = 0,
+        /// <summary>Applied with a snap.</summary>
+        Snapped = 1,
+        /// <summary>Interpolate mode: stored.</summary>
+        Buffered = 2,
+        /// <summary>Dropped: older than what is shown.</summary>
+        OutOfOrder = 3,
+        /// <summary>Dropped: same timestamp as one already received.</summary>
+        Duplicate = 4,
+        /// <summary>Dropped: NaN or infinite fields, zero quaternion, unknown algorithm.</summary>
+        Invalid = 5,
+        /// <summary>Dropped: stamped more than MaxFutureSkew after its receive time.</summary>
+        TooFarAhead = 6,
+    }
+
+    /// <summary>A receiver's settings (fs_dr_receiver_settings). 36 bytes: Mode 0, Smoothing 4,
+    /// BlendTime 8, DecayHalfLife 12, TeleportDistance 16, ExtrapolationLimit 20,
+    /// InterpolationDelay 24, MaxFutureSkew 28, RestartAfter 32.
+    /// <see cref="DeadReckoning.DefaultReceiverSettings"/> gives the defaults.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 36)]
+    public struct ReceiverSettings
+    {
+        /// <summary>Extrapolate (default) or interpolate.</summary>
+        [FieldOffset(0)] public ReceiverMode Mode;
+        /// <summary>Extrapolate mode's smoothing (default ProjectiveVelocityBlending).</summary>
+        [FieldOffset(4)] public Smoothing Smoothing;
+        /// <summary>[Units: s] [Limit: > 0, finite] (default 0.2).</summary>
+        [FieldOffset(8)] public float BlendTime;
+        /// <summary>[Units: s] [Limit: > 0, finite] (default 0.1).</summary>
+        [FieldOffset(12)] public float DecayHalfLife;
+        /// <summary>[Units: m] [Limit: > 0; infinity disables] (default 10).</summary>
+        [FieldOffset(16)] public float TeleportDistance;
+        /// <summary>[Units: s] [Limit: >= 0; infinity disables] (default 0.25).</summary>
+        [FieldOffset(20)] public float ExtrapolationLimit;
+        /// <summary>[Units: s] [Limit: > 0, finite] (default 0.1).</summary>
+        [FieldOffset(24)] public float InterpolationDelay;
+        /// <summary>[Units: s] [Limit: >= 0; infinity disables] (default 1).</summary>
+        [FieldOffset(28)] public float MaxFutureSkew;
+        /// <summary>[Units: s] [Limit: > 0; infinity disables] (default 10).</summary>
+        [FieldOffset(32)] public float RestartAfter;
+    }
+
+    /// <summary>The pose a receiver shows (fs_dr_pose). 56 bytes: Position 0, Velocity 24,
+    /// Orientation 36, held 52.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct ReceivedPose
+    {
+        /// <summary>[Units: m], world axes.</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s], world axes.</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>Body-to-world, unit.</summary>
+        [FieldOffset(36)] public Quaternion Orientation;
+        [FieldOffset(52)] private int held;
+
+        /// <summary>True when ExtrapolationLimit stopped the extrapolation.</summary>
+        public bool Held { get { return held != 0; } }
+    }
+
+    /// <summary>A receiver's counters (fs_dr_receiver_counters). 80 bytes, ten ulongs.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 80)]
+    public struct ReceiverCounters
+    {
+        /// <summary>Updates applied or buffered.</summary>
+        [FieldOffset(0)] public ulong Accepted;
+        /// <summary>Updates that snapped.</summary>
+        [FieldOffset(8)] public ulong Snaps;
+        /// <summary>Snaps caused by TeleportDistance.</summary>
+        [FieldOffset(16)] public ulong Teleports;
+        /// <summary>OutOfOrder updates.</summary>
+        [FieldOffset(24)] public ulong OutOfOrder;
+        /// <summary>Duplicate updates.</summary>
+        [FieldOffset(32)] public ulong Duplicates;
+        /// <summary>Invalid updates.</summary>
+        [FieldOffset(40)] public ulong Invalid;
+        /// <summary>Samples that returned a held pose.</summary>
+        [FieldOffset(48)] public ulong Held;
+        /// <summary>Updates stamped after their receive time (within MaxFutureSkew).</summary>
+        [FieldOffset(56)] public ulong FutureUpdates;
+        /// <summary>TooFarAhead updates.</summary>
+        [FieldOffset(64)] public ulong TooFarAhead;
+        /// <summary>Older updates taken as a sender restart.</summary>
+        [FieldOffset(72)] public ulong ClockRestarts;
+    }
+}
