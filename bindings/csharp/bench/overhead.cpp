@@ -1,8 +1,9 @@
 /// overhead.cpp: the C++ side of the C# binding's overhead measurement. Times the article's
-/// grenade (Exact method, a floor and a wall, 3 s fuse, trajectory into a 4096-point buffer)
-/// through the C++ API and through the C API, and prints the best nanoseconds per call of
-/// each: "cpp_ns N" and "c_api_ns N". ArticleScenarios.exe --overhead runs it and compares
-/// with the same call through C#.
+/// grenade (Exact method, a floor and a wall, 3 s fuse, trajectory into a buffer of CAPACITY
+/// points, the first argument; default trajectoryCapacity(3 s) = 281, as article_scenarios.cpp
+/// sizes it) through the C++ API and through the C API, and prints the best nanoseconds per
+/// call of each: "cpp_ns N" and "c_api_ns N". ArticleScenarios.exe --overhead runs it and
+/// compares with the same call through C#.
 
 #include <foresight/foresight.h>
 #include <foresight/foresight_c.h>
@@ -19,7 +20,6 @@ namespace {
 
 constexpr int kCalls = 20000;  // about 0.1 s per run
 constexpr int kRuns = 7;
-constexpr std::size_t kCapacity = 4096;
 
 /// The best of kRuns runs of kCalls calls of `call` [Units: ns per call].
 template <class F>
@@ -37,7 +37,7 @@ double best(F&& call) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
     StaticWorld world;
     Plane floor;
     floor.normal = Vec3(0, 1, 0);
@@ -51,7 +51,9 @@ int main() {
     settings.friction = 0.4f;
     settings.radius = 0.05f;
     settings.method = ProjectileMethod::Exact;
-    std::vector<TrajectoryPoint> trajectory(kCapacity);
+    const std::size_t capacity = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : trajectoryCapacity(3.0f, settings);
+    if (capacity == 0) return 1;
+    std::vector<TrajectoryPoint> trajectory(capacity);
     ProjectileResult result;
     const double cpp = best([&] {
         if (predictProjectile(RVec3(0, 1.6f, 0), Vec3(0, 4, 12), 3.0f, settings, &world, trajectory, result) !=
@@ -70,7 +72,7 @@ int main() {
     cSettings.friction = 0.4f;
     cSettings.radius = 0.05f;
     cSettings.method = FS_METHOD_EXACT;
-    std::vector<fs_trajectory_point> points(kCapacity);
+    std::vector<fs_trajectory_point> points(capacity);
     fs_projectile_result cResult;
     const double c = best([&] {
         if (fs_predict_projectile(fs_dvec3{0.0, 1.6f, 0.0}, fs_vec3{0.0f, 4.0f, 12.0f}, 3.0f, &cSettings, cWorld,

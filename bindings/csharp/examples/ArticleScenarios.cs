@@ -7,6 +7,7 @@
 //   mono ArticleScenarios.exe                      the scenarios
 //   mono ArticleScenarios.exe --check-format       checks F6 against printf's rounding
 //   mono ArticleScenarios.exe --overhead CPP_EXE   one grenade prediction through C# vs C++
+//                                                  (bindings/csharp/bench/overhead.cpp)
 
 using System;
 using System.Diagnostics;
@@ -197,33 +198,35 @@ internal static class ArticleScenarios
         return failures == 0 ? 0 : 1;
     }
 
-    // Nanoseconds per call of the Exact grenade (floor and wall, 3 s fuse, trajectory into the
-    // 4096-point buffer): the best of 7 runs of enough calls to last about 0.1 s each.
-    private static double TimeGrenade()
+    // Nanoseconds per call of the Exact grenade (floor and wall, 3 s fuse, trajectory into a
+    // buffer of `capacity` points): the best of 7 runs of 20000 calls.
+    private static double TimeGrenade(int capacity)
     {
         using (World world = ArticleWorld())
         {
             ProjectileSettings settings = GrenadeSettings(ProjectileMethod.Exact);
+            TrajectoryPoint[] points = new TrajectoryPoint[capacity];
             ProjectileResult result;
-            for (int i = 0; i < 2000; ++i) Projectiles.TryPredict(Hand, Throw, Fuse, settings, world, Trajectory, out result);
+            for (int i = 0; i < 2000; ++i) Projectiles.TryPredict(Hand, Throw, Fuse, settings, world, points, out result);
             double best = double.MaxValue;
             const int calls = 20000;
             for (int run = 0; run < 7; ++run)
             {
                 Stopwatch watch = Stopwatch.StartNew();
-                for (int i = 0; i < calls; ++i)
-                    Projectiles.TryPredict(Hand, Throw, Fuse, settings, world, Trajectory, out result);
+                for (int i = 0; i < calls; ++i) Projectiles.TryPredict(Hand, Throw, Fuse, settings, world, points, out result);
                 best = Math.Min(best, watch.Elapsed.TotalMilliseconds * 1e6 / calls);
             }
             return best;
         }
     }
 
-    // Runs the C++ timing program (bindings/csharp/bench/overhead.cpp), which prints
-    // "cpp_ns N" and "c_api_ns N".
-    private static double[] TimeCpp(string program)
+    // Runs the C++ timing program (bindings/csharp/bench/overhead.cpp) for `capacity`; it
+    // prints "cpp_ns N" and "c_api_ns N".
+    private static double[] TimeCpp(string program, int capacity)
     {
-        ProcessStartInfo start = new ProcessStartInfo(program) { UseShellExecute = false, RedirectStandardOutput = true };
+        ProcessStartInfo start = new ProcessStartInfo(program, capacity.ToString(CultureInfo.InvariantCulture)) {
+            UseShellExecute = false, RedirectStandardOutput = true
+        };
         using (Process p = Process.Start(start))
         {
             string text = p.StandardOutput.ReadToEnd();
@@ -242,21 +245,27 @@ internal static class ArticleScenarios
 
     private static int Overhead(string program)
     {
-        // Alternate the two, three times, and keep each one's best: the machine's load then
-        // weighs on both alike.
-        double csharp = double.MaxValue, cpp = double.MaxValue, capi = double.MaxValue;
-        for (int round = 0; round < 3; ++round)
-        {
-            csharp = Math.Min(csharp, TimeGrenade());
-            double[] native = TimeCpp(program);
-            cpp = Math.Min(cpp, native[0]);
-            capi = Math.Min(capi, native[1]);
-        }
         CultureInfo inv = CultureInfo.InvariantCulture;
-        Console.WriteLine("grenade (Exact, floor and wall, 3 s fuse, 4096-point buffer), ns per call:");
-        Console.WriteLine("  C++ predictProjectile  " + cpp.ToString("F0", inv));
-        Console.WriteLine("  C fs_predict_projectile " + capi.ToString("F0", inv) + "  (" + (capi / cpp).ToString("F3", inv) + "x C++)");
-        Console.WriteLine("  C# Projectiles.TryPredict " + csharp.ToString("F0", inv) + "  (" + (csharp / cpp).ToString("F3", inv) + "x C++)");
+        // The article's buffer size (trajectoryCapacity(3 s)), then a large one: the C API
+        // prepares every point of the buffer on each call, so its cost grows with the capacity.
+        int[] capacities = { Projectiles.TrajectoryCapacity(Fuse, GrenadeSettings(ProjectileMethod.Exact)), 4096 };
+        Console.WriteLine("grenade (Exact, floor and wall, 3 s fuse), ns per call, best of 3 alternated rounds:");
+        foreach (int capacity in capacities)
+        {
+            // Alternate C# and C++ and keep each one's best: the machine's load weighs on both alike.
+            double csharp = double.MaxValue, cpp = double.MaxValue, capi = double.MaxValue;
+            for (int round = 0; round < 3; ++round)
+            {
+                csharp = Math.Min(csharp, TimeGrenade(capacity));
+                double[] native = TimeCpp(program, capacity);
+                cpp = Math.Min(cpp, native[0]);
+                capi = Math.Min(capi, native[1]);
+            }
+            Console.WriteLine("  buffer " + capacity + " points: C++ " + cpp.ToString("F0", inv) + ", C API " +
+                              capi.ToString("F0", inv) + " (" + (capi / cpp).ToString("F2", inv) + "x), C# " +
+                              csharp.ToString("F0", inv) + " (" + (csharp / cpp).ToString("F2", inv) + "x C++, " +
+                              (csharp / capi).ToString("F2", inv) + "x C API)");
+        }
         return 0;
     }
 

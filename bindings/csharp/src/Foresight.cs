@@ -2,7 +2,8 @@
 // library's Status and writes its result (default on a refusal); the method of the same name
 // without "Try" returns the result and throws ForesightException on a refusal. No method of the
 // per-frame path allocates: structs are passed by reference, arrays (trajectories, firing
-// solutions, dead-reckoning batches) are the caller's and are pinned, not copied.
+// solutions, dead-reckoning batches) are the caller's, passed as a pinned pointer to their
+// first element, never copied.
 // Units: metres, seconds, radians; +Y up, +Z forward (Axes.cs for Unity and Godot).
 
 using System;
@@ -309,14 +310,24 @@ namespace Foresight
         public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
                                         World world, TrajectoryPoint[] points, out ProjectileResult result)
         {
+            // An empty buffer passes a pointer the library does not read (capacity 0).
+            if (points == null || points.Length == 0)
+                return Predict(position, velocity, time, ref settings, world, ref noPoints, 0, out result);
+            return Predict(position, velocity, time, ref settings, world, ref points[0], points.Length, out result);
+        }
+
+        // Never written: the library reads no point when the capacity is 0.
+        private static TrajectoryPoint noPoints;
+
+        private static Status Predict(DVec3 position, Vector3 velocity, float time, ref ProjectileSettings settings,
+                                      World world, ref TrajectoryPoint first, int capacity, out ProjectileResult result)
+        {
             result = default(ProjectileResult);
-            UIntPtr capacity = new UIntPtr(points == null ? 0u : (uint)points.Length);
+            UIntPtr n = new UIntPtr((uint)capacity);
             Vector3Native v = new Vector3Native(velocity);
             if (world == null)
-                return Native.fs_predict_projectile(position, v, time, ref settings, IntPtr.Zero, points, capacity,
-                                                    out result);
-            return Native.fs_predict_projectile(position, v, time, ref settings, world.Handle, points, capacity,
-                                                out result);
+                return Native.fs_predict_projectile(position, v, time, ref settings, IntPtr.Zero, ref first, n, out result);
+            return Native.fs_predict_projectile(position, v, time, ref settings, world.Handle, ref first, n, out result);
         }
 
         /// <summary>Predicts a projectile without a trajectory (see TryPredict).</summary>
@@ -343,15 +354,9 @@ namespace Foresight
         public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
                                         World world, Span<TrajectoryPoint> points, out ProjectileResult result)
         {
-            result = default(ProjectileResult);
-            UIntPtr capacity = new UIntPtr((uint)points.Length);
-            Vector3Native v = new Vector3Native(velocity);
-            ref TrajectoryPoint first = ref MemoryMarshal.GetReference(points);
-            if (world == null)
-                return Native.fs_predict_projectile(position, v, time, ref settings, IntPtr.Zero, ref first, capacity,
-                                                    out result);
-            return Native.fs_predict_projectile(position, v, time, ref settings, world.Handle, ref first, capacity,
-                                                out result);
+            if (points.IsEmpty) return Predict(position, velocity, time, ref settings, world, ref noPoints, 0, out result);
+            return Predict(position, velocity, time, ref settings, world, ref MemoryMarshal.GetReference(points),
+                           points.Length, out result);
         }
 #endif
     }
@@ -376,11 +381,16 @@ namespace Foresight
         public static Status TryAim(AimShot shot, AimTarget target, FiringSolution[] solutions, out int count)
         {
             UIntPtr n;
-            UIntPtr capacity = new UIntPtr(solutions == null ? 0u : (uint)solutions.Length);
-            Status s = Native.fs_aim_projectile(ref shot, ref target, solutions, capacity, out n);
+            Status s = solutions == null || solutions.Length == 0
+                           ? Native.fs_aim_projectile(ref shot, ref target, ref noSolutions, UIntPtr.Zero, out n)
+                           : Native.fs_aim_projectile(ref shot, ref target, ref solutions[0],
+                                                      new UIntPtr((uint)solutions.Length), out n);
             count = s == Status.Ok ? (int)(ulong)n : 0;
             return s;
         }
+
+        // Never written: the library writes no solution when the capacity is 0.
+        private static FiringSolution noSolutions;
 
         /// <summary>TryAim, throwing ForesightException; returns the number of solutions.</summary>
         public static int AimAt(AimShot shot, AimTarget target, FiringSolution[] solutions)
@@ -436,8 +446,14 @@ namespace Foresight
             refused = 0;
             if (states == null || timestamps == null || results == null) return Status.NullPointer;
             int count = Math.Min(states.Length, Math.Min(timestamps.Length, results.Length));
+            if (count == 0)
+            {
+                refused = states.Length;
+                return Status.Ok;
+            }
             UIntPtr n;
-            Status s = Native.fs_dr_predict_batch(states, timestamps, new UIntPtr((uint)count), time, results, out n);
+            Status s = Native.fs_dr_predict_batch(ref states[0], ref timestamps[0], new UIntPtr((uint)count), time,
+                                                  ref results[0], out n);
             if (s == Status.Ok) refused = (int)(ulong)n + (states.Length - count);
             return s;
         }

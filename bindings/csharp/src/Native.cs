@@ -1,6 +1,9 @@
 // The P/Invoke declarations of foresight_c.h, one per C function. Internal: the public API is in
-// Foresight.cs. Every struct is blittable (Types.cs), so the marshaller passes pointers to the
-// caller's values and pins arrays in place: no call here allocates.
+// Foresight.cs. Every struct is blittable (Types.cs) and passed by `ref`, so the marshaller
+// passes a pointer to the caller's value. Arrays are passed as `ref array[0]` (a pinned pointer
+// to the first element), not as C# arrays: Mono's marshaller copies a struct array in and out
+// on every call (measured: 1.7 ms for a 4096-point trajectory, against 30 us for the
+// prediction itself). No call here allocates.
 
 using System;
 using System.Runtime.InteropServices;
@@ -37,17 +40,15 @@ namespace Foresight
 
         [DllImport(Library)] internal static extern ProjectileSettings fs_projectile_settings_default();
         [DllImport(Library)] internal static extern UIntPtr fs_trajectory_capacity(float time, ref ProjectileSettings settings);
-        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, WorldHandle world, [In, Out] TrajectoryPoint[] points, UIntPtr capacity, out ProjectileResult result);
-        [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, IntPtr noWorld, [In, Out] TrajectoryPoint[] points, UIntPtr capacity, out ProjectileResult result);
         [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, WorldHandle world, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);
         [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, IntPtr noWorld, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);
 
         [DllImport(Library)] internal static extern AimShot fs_aim_shot_default();
-        [DllImport(Library)] internal static extern Status fs_aim_projectile(ref AimShot shot, ref AimTarget target, [In, Out] FiringSolution[] solutions, UIntPtr capacity, out UIntPtr count);
+        [DllImport(Library)] internal static extern Status fs_aim_projectile(ref AimShot shot, ref AimTarget target, ref FiringSolution solutions, UIntPtr capacity, out UIntPtr count);
 
         [DllImport(Library)] internal static extern IntPtr fs_dr_algorithm_name(DeadReckoningAlgorithm algorithm);
         [DllImport(Library)] internal static extern Status fs_dr_predict(ref DeadReckoningState state, float time, out DeadReckoningResult result);
-        [DllImport(Library)] internal static extern Status fs_dr_predict_batch([In] DeadReckoningState[] states, [In] double[] timestamps, UIntPtr count, double time, [In, Out] DeadReckoningResult[] results, out UIntPtr refused);
+        [DllImport(Library)] internal static extern Status fs_dr_predict_batch(ref DeadReckoningState states, ref double timestamps, UIntPtr count, double time, ref DeadReckoningResult results, out UIntPtr refused);
         [DllImport(Library)] internal static extern ReceiverSettings fs_dr_receiver_settings_default();
         [DllImport(Library)] internal static extern Status fs_dr_receiver_create(ref ReceiverSettings settings, out ReceiverHandle receiver);
         [DllImport(Library)] internal static extern void fs_dr_receiver_destroy(IntPtr receiver);
