@@ -439,6 +439,23 @@ internal static class BindingTests
             Throws(() => Projectiles.Predict(new DVec3(0, 2, 0), V(3, 5, 0), 2, s, world, few), Status.BufferTooSmall,
                    "Predict(short buffer)");
 
+#if FORESIGHT_SPAN
+            // A Span over part of an array: the points land in that part.
+            TrajectoryPoint[] big = new TrajectoryPoint[300];
+            ProjectileResult sr;
+            Is(Projectiles.TryPredict(new DVec3(0, 2, 0), V(3, 5, 0), 1, s, world, new Span<TrajectoryPoint>(big, 10, 200), out sr),
+               Status.Ok, "span");
+            Check(sr.TrajectorySize > 2 && big[10].Event == TrajectoryEvent.Start && big[9].Time == 0 &&
+                  big[9].Event == TrajectoryEvent.Start && big[10 + (int)sr.TrajectorySize - 1].Event == TrajectoryEvent.End,
+                  "span slice written");
+            Check(big[10 + (int)sr.TrajectorySize].Time == 0, "nothing written past the trajectory");
+            Is(Projectiles.TryPredict(new DVec3(0, 2, 0), V(3, 5, 0), 1, s, world, Span<TrajectoryPoint>.Empty, out sr),
+               Status.Ok, "empty span");
+            Check(sr.TrajectorySize == 0 && sr.TrajectoryNeeded > 2, "empty span: no trajectory");
+            Is(Projectiles.TryPredict(new DVec3(0, 2, 0), V(3, 5, 0), 1, s, world, new Span<TrajectoryPoint>(big, 0, 2), out sr),
+               Status.BufferTooSmall, "short span");
+#endif
+
             // Refusals.
             ProjectileResult r2;
             Is(Projectiles.TryPredict(p, v, -1, s, world, points, out r2), Status.NegativeTime, "projectile(-1)");
@@ -644,6 +661,9 @@ internal static class BindingTests
         ProjectileSettings s = Projectiles.DefaultSettings;
         ProjectileResult r;
         Projectiles.TryPredict(new DVec3(0, 1.6, 0), V(0, 4, 12), 3, s, world, points, out r);
+#if FORESIGHT_SPAN
+        Projectiles.TryPredict(new DVec3(0, 1.6, 0), V(0, 4, 12), 3, s, world, new Span<TrajectoryPoint>(points, 1, 300), out r);
+#endif
         PointState ps;
         Characters.TryPredictLinear(new PointState(new DVec3(1, 2, 3), V(1, 0, 0)), 0.5f, out ps);
         Characters.TryPredictAccelerated(new PointState(new DVec3(1, 2, 3), V(1, 0, 0)), V(0, -9.81, 0), 0.5f, out ps);
