@@ -16,6 +16,9 @@
 #            against the memory bandwidth measured in the same run
 #        scripts/bench.sh --aim [benchmark options...]   aimProjectile per call
 #            (bench/bench_aim.cpp): ns per call, accelerating target under 1000
+#        scripts/bench.sh --c-api [benchmark options...]   the C API (the bindings' way in)
+#            against the C++ call it wraps (bench/bench_c_api.cpp): a projectile prediction,
+#            target C / C++ <= 1.5, and predictLinear (the bare cost of the boundary)
 #        scripts/bench.sh --output [benchmark options...]   `foresight predict`'s JSON output
 #            (bench/bench_output.cpp): writing 1 000 projectile results with trajectories (the
 #            streamed writer, and the former whole-document writer) against predicting them,
@@ -114,6 +117,37 @@ if [[ "${1:-}" == "--aim" ]]; then
             if (!seen) { print "  accelerating target: not measured (filtered out?)"; exit 0 }
             printf "  %-20s %s\n", "target: AcceleratingTarget < 1000 ns", (accelerating < 1000 ? "met" : "MISSED")
             if (accelerating >= 1000 && strict == 1) exit 1
+        }'
+    exit 0
+fi
+
+if [[ "${1:-}" == "--c-api" ]]; then
+    # The C API against the C++ call (bench/bench_c_api.cpp): time ratios of this run's medians.
+    shift
+    dir=${FORESIGHT_BENCH_BUILD_DIR:-build}
+    out=${FORESIGHT_BENCH_OUT:-$dir/bench_c_api.json}
+    if [[ "$dir" == build ]]; then
+        ./scripts/build.sh --target foresight_bench_c_api >/dev/null
+    else
+        cmake --build "$dir" --parallel "${FORESIGHT_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
+            --target foresight_bench_c_api >/dev/null
+    fi
+    "$dir/bench/foresight_bench_c_api" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
+    echo "the C API against the C++ call, CPU time, median of this run's repetitions ($out):"
+    spreads "$out" | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
+        { time[$1] = $2; cv[$1] = $3 }
+        END {
+            split("Projectile Linear", kinds, " ")
+            for (i = 1; i <= 2; ++i) {
+                cpp = "BM_CallOverhead/" kinds[i] "/Cpp"; c = "BM_CallOverhead/" kinds[i] "/C"
+                if (!(cpp in time) || !(c in time)) continue
+                printf "  %-10s C / C++ = %5.2f  (spread %4.1f%% and %4.1f%%)\n", kinds[i], time[c] / time[cpp], 100 * cv[c], 100 * cv[cpp]
+                if (kinds[i] == "Projectile") { ratio = time[c] / time[cpp]; seen = 1 }
+            }
+            if (!seen) { print "  projectile: not measured (filtered out?)"; exit 0 }
+            printf "  target: Projectile C / C++ <= 1.5: %s\n", (ratio <= 1.5 ? "met" : "MISSED")
+            if (ratio > 1.5 && strict == 1) exit 1
         }'
     exit 0
 fi

@@ -11,8 +11,8 @@
 #                   (FetchContent with SOURCE_DIR: no network), each configured with the library
 #                   alone, built with warnings as errors and run; they fail if foresight changes
 #                   the parent's CMAKE_BUILD_TYPE or builds its tests, tools or backends
-#   3. benchmark    build/bench/foresight_bench and foresight_bench_aim, very briefly (a smoke
-#                   test, not a measurement),
+#   3. benchmark    build/bench/foresight_bench, foresight_bench_aim and foresight_bench_c_api,
+#                   very briefly (a smoke test, not a measurement),
 #                   and build/bench/foresight_bench_worlds when the backends are built
 #   4. build-asan/  debug build with AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
 #                   errors, no benchmarks, no browser tests (the same JavaScript as in build/);
@@ -169,6 +169,9 @@ cmake --build "$tmp/consumer-fetch-content" --parallel "$jobs"
 step "benchmark smoke test (build/bench/foresight_bench, not a measurement)"
 ./build/bench/foresight_bench --benchmark_min_time=0.01
 ./build/bench/foresight_bench_aim --benchmark_min_time=0.01
+if [[ -x build/bench/foresight_bench_c_api ]]; then
+    ./build/bench/foresight_bench_c_api --benchmark_min_time=0.01
+fi
 # Built with both the Embree and Bullet backends; about 8 s (the million-triangle mesh's BVHs),
 # and it fails if the worlds disagree on a cast.
 if [[ -x build/bench/foresight_bench_worlds ]]; then

@@ -78,14 +78,14 @@ static void test_version_and_statuses(void) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
-    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_OUT_OF_MEMORY; ++s) {
+    for (s = FS_STATUS_BUFFER_TOO_SMALL; s <= FS_STATUS_BACKEND_FAILED; ++s) {
         const char* message = fs_status_message(s);
         CHECK(message != NULL && message[0] != '\0' && strcmp(message, "unknown status") != 0);
     }
     CHECK(strcmp(fs_status_message(-1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(FS_STATUS_OUT_OF_RANGE + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(999), "unknown status") == 0);
-    CHECK(strcmp(fs_status_message(FS_STATUS_OUT_OF_MEMORY + 1), "unknown status") == 0);
+    CHECK(strcmp(fs_status_message(FS_STATUS_BACKEND_FAILED + 1), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MIN), "unknown status") == 0);
     CHECK(strcmp(fs_status_message(INT32_MAX), "unknown status") == 0);
 }
@@ -509,6 +509,499 @@ static void test_projectile_floor(void) {
         CHECK(result.bounces >= 1);
         CHECK(result.position.y > -0.1);
     }
+    fs_world_destroy(world);
+}
+
+/* ---- Callback worlds ------------------------------------------------------------------------ */
+
+/* What a callback does to its hits, to test the library's checks. */
+enum {
+    kHitGood,
+    kHitLongNormal,
+    kHitNanFraction,
+    kHitFractionAbove1,
+    kHitZeroNormal,
+    kHitNanPosition,
+    kHitRestitution2
+};
+
+typedef struct floor_context {
+    int calls;
+    int mode; /* kHit* */
+} floor_context;
+
+/* A game's own cast: the floor y = 0, for a point or a swept sphere. */
+static int32_t cast_floor(void* context, const fs_segment_cast* cast, fs_cast_hit* hit) {
+    floor_context* floor_ctx = (floor_context*)context;
+    const double start = cast->origin.y - cast->radius; /* the sphere's lowest point */
+    const double dy = cast->displacement.y;
+    double fraction;
+    ++floor_ctx->calls;
+    if (dy >= 0.0 || start < -1e-4) return 0; /* moving up, or already below */
+    fraction = start <= 0.0 ? 0.0 : start / -dy;
+    if (fraction > 1.0) return 0;
+    hit->fraction = (float)fraction;
+    hit->position.x = cast->origin.x + fraction * cast->displacement.x;
+    hit->position.y = cast->origin.y + fraction * cast->displacement.y;
+    hit->position.z = cast->origin.z + fraction * cast->displacement.z;
+    hit->normal = vec3(0.0f, 1.0f, 0.0f);
+    switch (floor_ctx->mode) {
+        case kHitLongNormal:
+            hit->normal = vec3(0.0f, 3.0f, 0.0f);
+            break; /* normalised by the library */
+        case kHitNanFraction:
+            hit->fraction = NAN;
+            break;
+        case kHitFractionAbove1:
+            hit->fraction = 1.5f;
+            break;
+        case kHitZeroNormal:
+            hit->normal = vec3(0.0f, 0.0f, 0.0f);
+            break;
+        case kHitNanPosition:
+            hit->position.y = NAN;
+            break;
+        case kHitRestitution2:
+            hit->restitution = 2.0f;
+            break;
+        default:
+            break;
+    }
+    return 1;
+}
+
+static void test_callback_world(void) {
+    floor_context floor_ctx = {0, kHitGood};
+    fs_world* world = fs_world_create_callback(cast_floor, &floor_ctx);
+    const fs_plane plane = floor_plane();
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result, first;
+    const double y0 = 2.0, vx = 3.0, vy = 5.0;
+    const double root = impact_time(y0, vy, 0.0);
+    int mode;
+    CHECK(fs_world_create_callback(NULL, &floor_ctx) == NULL);
+    CHECK(world != NULL);
+    if (world == NULL) return;
+    /* It holds no shapes. */
+    CHECK_STATUS(fs_world_add_plane(world, &plane, NULL), FS_STATUS_INVALID_SETTING);
+
+    /* The first impact, where the parabola meets y = 0, found through the caller's cast. */
+    settings.max_bounces = 0;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 5.0f, &settings, world,
+                                       points, 512, &result),
+                 FS_STATUS_OK);
+    CHECK(floor_ctx.calls > 0);
+    CHECK(result.stopped_at_hit == 1);
+    CHECK_NEAR(result.time, root, kTol);
+    CHECK_NEAR(result.position.x, vx * root, kTol);
+    CHECK_NEAR(result.position.y, 0.0, kTol);
+    CHECK(result.hit_normal.y == 1.0f);
+
+    /* Bouncing with a 5 cm sphere, every method; a normal of length 3 means the same surface. */
+    settings.max_bounces = UINT32_MAX;
+    settings.radius = 0.05f;
+    for (settings.method = FS_METHOD_EXACT; settings.method <= FS_METHOD_ENGINE; ++settings.method) {
+        floor_ctx.mode = kHitGood;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &first),
+                     FS_STATUS_OK);
+        CHECK(first.bounces >= 1);
+        CHECK(first.position.y >= 0.05 - 1e-3); /* the sphere stays on the floor */
+        floor_ctx.mode = kHitLongNormal;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &result),
+                     FS_STATUS_OK);
+        CHECK(result.position.x == first.position.x && result.position.y == first.position.y);
+        CHECK(result.bounces == first.bounces);
+    }
+
+    /* Invalid hits end the prediction with INVALID_CALLBACK_HIT and leave the result alone. */
+    settings.method = FS_METHOD_EXACT;
+    for (mode = kHitNanFraction; mode <= kHitRestitution2; ++mode) {
+        floor_ctx.mode = mode;
+        result.bounces = 12345u;
+        CHECK_STATUS(fs_predict_projectile(dvec3(0.0, y0, 0.0), vec3((float)vx, (float)vy, 0.0f), 2.0f, &settings,
+                                           world, points, 512, &result),
+                     FS_STATUS_INVALID_CALLBACK_HIT);
+        CHECK(result.bounces == 12345u);
+    }
+    CHECK(strlen(fs_status_message(FS_STATUS_INVALID_CALLBACK_HIT)) > 10);
+    fs_world_destroy(world);
+}
+
+/* ---- Meshes and Embree worlds ------------------------------------------------------------------ */
+
+/* A floor y = 0 as a 40 m square of two triangles (the second one repeated degenerate). */
+static const fs_dvec3 kFloorVertices[4] = {
+    {-20.0, 0.0, -20.0}, {20.0, 0.0, -20.0}, {20.0, 0.0, 20.0}, {-20.0, 0.0, 20.0}};
+static const uint32_t kFloorIndices[9] = {0, 2, 1, 0, 3, 2, 1, 1, 2};
+
+/* Dropped from y = 5 with (1, 0, 0) m/s and stopped at the first impact: at t = sqrt(10 / g). */
+static void check_floor_drop(const fs_world* world) {
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result;
+    const double root = sqrt(2.0 * 5.0 / kGravity);
+    settings.max_bounces = 0;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.5, 5.0, 0.5), vec3(1.0f, 0.0f, 0.0f), 3.0f, &settings, world, points,
+                                       512, &result),
+                 FS_STATUS_OK);
+    CHECK(result.stopped_at_hit == 1);
+    CHECK_NEAR(result.time, root, kTol);
+    CHECK_NEAR(result.position.x, 0.5 + root, kTol);
+    CHECK_NEAR(result.position.y, 0.0, kTol);
+    CHECK(result.hit_normal.y == 1.0f);
+}
+
+static void test_meshes(void) {
+    fs_world* world = fs_world_create();
+    fs_world* embree = fs_world_create_embree();
+    fs_mesh_report report = {99, 99, 99};
+    const fs_dvec3 bad_vertex[3] = {{0.0, 0.0, 0.0}, {1.0, NAN, 0.0}, {0.0, 0.0, 1.0}};
+    const uint32_t out_of_range[3] = {0, 1, 7};
+    char error[256];
+    FILE* file;
+    CHECK(world != NULL);
+    if (world == NULL) return;
+
+    /* A static world: the triangles tested one by one. */
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices, 9, &report), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 1 && report.first_degenerate_triangle == 2);
+    CHECK_STATUS(fs_world_commit(world, NULL, 0), FS_STATUS_OK); /* nothing to build */
+    check_floor_drop(world);
+    /* Refused whole. */
+    CHECK_STATUS(fs_world_add_mesh(world, bad_vertex, 3, kFloorIndices, 3, NULL), FS_STATUS_NON_FINITE_INPUT);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, out_of_range, 3, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices, 8, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, kFloorVertices, 4, kFloorIndices + 6, 3, NULL), FS_STATUS_DEGENERATE_SHAPE);
+    CHECK_STATUS(fs_world_add_mesh(world, NULL, 4, kFloorIndices, 9, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_world_load_mesh(world, "level.obj", NULL, NULL, 0), FS_STATUS_INVALID_SETTING);
+    fs_world_destroy(world);
+
+    if (!fs_embree_available()) {
+        CHECK(embree == NULL);
+        return;
+    }
+    CHECK(embree != NULL);
+    if (embree == NULL) return;
+    /* The same floor in an Embree BVH. */
+    CHECK_STATUS(fs_world_add_mesh(embree, kFloorVertices, 4, kFloorIndices, 9, &report), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 1 && report.first_degenerate_triangle == 2);
+    CHECK_STATUS(fs_world_commit(embree, error, sizeof error), FS_STATUS_OK);
+    check_floor_drop(embree);
+    fs_world_destroy(embree);
+
+    /* The floor from an OBJ file (written beside the test), and files that are refused. */
+    file = fopen("c_api_test_floor.obj", "w");
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    fputs("v -20 0 -20\nv 20 0 -20\nv 20 0 20\nv -20 0 20\nf 1 3 2\nf 1 4 3\n", file);
+    fclose(file);
+    file = fopen("c_api_test_broken.obj", "w");
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    fputs("v -20 0 -20\nv 20 zero -20\nv 20 0 20\nf 1 3 2\n", file);
+    fclose(file);
+    embree = fs_world_create_embree();
+    CHECK(embree != NULL);
+    if (embree == NULL) return;
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.OBJ", &report, error, sizeof error),
+                 FS_STATUS_BACKEND_FAILED); /* no such file (the extension's case does not matter) */
+    CHECK(strstr(error, "c_api_test_floor.OBJ") != NULL);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_broken.obj", &report, error, sizeof error),
+                 FS_STATUS_BACKEND_FAILED);
+    CHECK(strstr(error, "c_api_test_broken.obj") != NULL);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_broken.obj", &report, error, 8), FS_STATUS_BACKEND_FAILED);
+    CHECK(strlen(error) == 7); /* cut to the buffer */
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.stl", &report, error, sizeof error),
+                 FS_STATUS_INVALID_SETTING);
+    CHECK_STATUS(fs_world_load_mesh(embree, "c_api_test_floor.obj", &report, error, sizeof error), FS_STATUS_OK);
+    CHECK(report.triangles == 2 && report.degenerate_triangles == 0);
+    CHECK_STATUS(fs_world_commit(embree, error, sizeof error), FS_STATUS_OK);
+    check_floor_drop(embree);
+    fs_world_destroy(embree);
+    remove("c_api_test_floor.obj");
+    remove("c_api_test_broken.obj");
+}
+
+/* ---- Engine profiles and what a game draws between steps --------------------------------------- */
+
+static void test_engine_profiles(void) {
+    fs_engine_profile profile = fs_engine_profile_default(FS_ENGINE_JOLT);
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512], same_points[512];
+    fs_projectile_result result, same;
+    fs_dvec3 drawn;
+    double px = 0.0, py = 2.0, vx = 4.0, vy = 3.0, d;
+    int k;
+    /* The named defaults (docs/engines.md): Jolt bounces above 1 m/s, PhysX above 2 m/s, Rapier
+     * takes 4 sub-steps, Bullet damps before gravity with the power law. */
+    CHECK(profile.engine == FS_ENGINE_JOLT && fabs(profile.timestep - 1.0 / 60.0) < 1e-9);
+    CHECK(profile.restitution_threshold == 1.0f && profile.order == FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING);
+    CHECK(fs_engine_profile_default(FS_ENGINE_PHYSX).restitution_threshold == 2.0f);
+    CHECK(fs_engine_profile_default(FS_ENGINE_RAPIER).substeps == 4u);
+    CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).damping == FS_DAMPING_LAW_POWER);
+    CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).order == FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY);
+    CHECK(fs_engine_profile_default(99).engine == FS_ENGINE_CUSTOM);
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_OK);
+
+    /* The named profile through either door: the same flight, bit for bit. */
+    settings.method = FS_METHOD_ENGINE;
+    settings.engine = FS_ENGINE_JOLT;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings, NULL, same_points,
+                                       512, &same),
+                 FS_STATUS_OK);
+    settings.engine = FS_ENGINE_BOX2D; /* ignored: the profile rules */
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_OK);
+    CHECK(result.position.x == same.position.x && result.position.y == same.position.y);
+    CHECK(result.trajectory_size == same.trajectory_size);
+
+    /* A game's own settings: 100 Hz and a drag of 0.5 per second (Unity's Rigidbody.drag) on a
+     * custom profile, against its recurrence stepped here: v = (v + g dt) max(0, 1 - c dt),
+     * p += v dt. */
+    profile = fs_engine_profile_default(FS_ENGINE_CUSTOM);
+    profile.timestep = 0.01f;
+    profile.damping = FS_DAMPING_LAW_LINEAR_CLAMPED;
+    profile.linear_damping = 0.5f;
+    CHECK(fs_trajectory_capacity_with_profile(1.0f, &settings, &profile) == 100 + 3 + 128);
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_OK);
+    d = 1.0 - 0.5 * (double)0.01f;
+    for (k = 0; k < 100; ++k) {
+        vx = vx * d;
+        vy = (vy - kGravity * (double)0.01f) * d;
+        px += vx * (double)0.01f;
+        py += vy * (double)0.01f;
+    }
+    CHECK(result.trajectory_size == 101);
+    CHECK_NEAR(result.position.x, px, 1e-5); /* float steps against double ones: 1e-6 m per step at most */
+    CHECK_NEAR(result.position.y, py, 1e-5);
+    CHECK_NEAR(result.velocity.y, vy, 1e-5);
+
+    /* What the game draws at 0.255 s: step 25 completed, halfway to step 26. */
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.x, points[25].position.x, 1e-6);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_INTERPOLATE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.x, points[24].position.x + 0.5 * (points[25].position.x - points[24].position.x), 1e-5);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.255f, FS_RENDER_EXTRAPOLATE, &drawn), FS_STATUS_OK);
+    CHECK_NEAR(drawn.y, points[25].position.y + 0.005 * points[25].velocity.y, 1e-5);
+
+    /* Refusals. */
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.0f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_rendered_position(points, 0, 0.01f, 0.255f, FS_RENDER_NONE, &drawn), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, NAN, FS_RENDER_NONE, &drawn), FS_STATUS_NON_FINITE_INPUT);
+    CHECK_STATUS(fs_rendered_position(points, 101, 0.01f, 0.2f, 3, &drawn), FS_STATUS_INVALID_SETTING);
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings, NULL,
+                                                    NULL, points, 512, &result),
+                 FS_STATUS_NULL_POINTER);
+    profile.timestep = 0.0f;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_STEP);
+    CHECK(fs_trajectory_capacity_with_profile(1.0f, &settings, &profile) == 0);
+    settings.method = FS_METHOD_EXACT; /* a bad profile is refused whatever the method */
+    CHECK_STATUS(fs_predict_projectile_with_profile(dvec3(0.0, 2.0, 0.0), vec3(4.0f, 3.0f, 0.0f), 1.0f, &settings,
+                                                    &profile, NULL, points, 512, &result),
+                 FS_STATUS_INVALID_STEP);
+    profile.timestep = 0.01f;
+    profile.order = 5;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.order = FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING;
+    profile.planar = 2;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.planar = 0;
+    profile.substeps = 0;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_INVALID_SETTING);
+    profile.substeps = 1;
+    profile.linear_damping = NAN;
+    CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_NON_FINITE_INPUT);
+}
+
+/* ---- Danger --------------------------------------------------------------------------------- */
+
+/* A grenade in free flight from (0, 10, 0) at (3, 0, 0) m/s: on the parabola at every time. */
+static void test_danger_projectile(void) {
+    fs_projectile_settings settings = fs_projectile_settings_default();
+    fs_trajectory_point points[512];
+    fs_projectile_result result;
+    fs_projectile_danger danger;
+    fs_danger_zone zone;
+    fs_danger_start start;
+    fs_closest_approach approach;
+    fs_dvec3 at;
+    int32_t safe = -1;
+    const double fuse = 2.0, g = kGravity;
+    size_t n;
+    CHECK_STATUS(fs_predict_projectile(dvec3(0.0, 10.0, 0.0), vec3(3.0f, 0.0f, 0.0f), (float)fuse, &settings, NULL,
+                                       points, 512, &result),
+                 FS_STATUS_OK);
+    n = (size_t)result.trajectory_size;
+    danger.fuse_time = (float)fuse;
+    danger.blast_radius = 4.0f;
+    danger.contact_radius = 0.0f;
+
+    /* Between the points: the parabola itself. */
+    CHECK_STATUS(fs_position_on_trajectory(points, n, 0.7f, &at), FS_STATUS_OK);
+    CHECK_NEAR(at.x, 3.0 * 0.7, kTol);
+    CHECK_NEAR(at.y, 10.0 - 0.5 * g * 0.7 * 0.7, kTol);
+
+    /* The blast: centred where the grenade is at the fuse time. */
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_OK);
+    CHECK_NEAR(zone.center.x, 3.0 * fuse, kTol);
+    CHECK_NEAR(zone.center.y, 10.0 - 0.5 * g * fuse * fuse, kTol);
+    CHECK(zone.radius == 4.0f && zone.time == 2.0f);
+
+    /* 3.9 m from the centre: unsafe from the fuse time on, safe before (no contact radius). */
+    CHECK_STATUS(fs_is_point_safe(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), 2.0f, &safe),
+                 FS_STATUS_OK);
+    CHECK(safe == 0);
+    CHECK_STATUS(fs_is_point_safe(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), 1.9f, &safe),
+                 FS_STATUS_OK);
+    CHECK(safe == 1);
+    CHECK_STATUS(fs_find_danger_start(points, n, &danger, dvec3(zone.center.x, zone.center.y + 3.9, 0.0), &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 1 && start.time == 2.0f);
+    CHECK_STATUS(fs_find_danger_start(points, n, &danger, dvec3(zone.center.x, zone.center.y + 4.1, 0.0), &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 0);
+
+    /* The path passes through the point where it is at t = 0.5: reached then, not before. */
+    CHECK_STATUS(fs_find_path_approach(points, n, dvec3(1.5, 10.0 - 0.5 * g * 0.25, 0.0), 0.0f, 0.0f, 2.0f, &start),
+                 FS_STATUS_OK);
+    CHECK(start.ever == 1);
+    CHECK_NEAR(start.time, 0.5, 1e-4); /* a float point on the path: its rounding, over the speed */
+    /* 1 m beside the path (across the plane of flight) at t = 0.7: closest there, 1 m away. */
+    CHECK_STATUS(
+        fs_find_closest_path_approach(points, n, dvec3(2.1, 10.0 - 0.5 * g * 0.49, 1.0), 0.0f, 2.0f, &approach),
+        FS_STATUS_OK);
+    CHECK_NEAR(approach.distance, 1.0, kTol);
+    CHECK_NEAR(approach.time, 0.7, 1e-3); /* the distance is flat (quadratic) at its minimum */
+
+    /* Refusals. */
+    CHECK_STATUS(fs_position_on_trajectory(NULL, 3, 0.5f, &at), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_position_on_trajectory(points, 0, 0.5f, &at), FS_STATUS_INVALID_STEP);
+    CHECK_STATUS(fs_compute_danger_zone(points, n, NULL, &zone), FS_STATUS_NULL_POINTER);
+    danger.fuse_time = -1.0f;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_FUSE);
+    danger.fuse_time = (float)fuse;
+    danger.blast_radius = NAN;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_NON_FINITE_INPUT);
+    danger.blast_radius = 4.0f;
+    CHECK_STATUS(fs_find_path_approach(points, n, dvec3(0.0, 0.0, 0.0), -1.0f, 0.0f, 2.0f, &start),
+                 FS_STATUS_INVALID_RADIUS);
+    points[1].event = 99;
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_SETTING);
+    points[1].event = FS_EVENT_STEP;
+    points[1].time = -5.0f; /* times must not decrease */
+    CHECK_STATUS(fs_compute_danger_zone(points, n, &danger, &zone), FS_STATUS_INVALID_STEP);
+}
+
+/* A car (the default 1.8 x 1.4 x 4.4 m box) driving along +Z at 10 m/s, towards characters. */
+static void test_danger_vehicle(void) {
+    fs_vehicle_body car = fs_vehicle_body_default();
+    fs_character_body person = fs_character_body_default();
+    const fs_approach_settings settings = fs_approach_settings_default();
+    fs_approach_settings bad = settings;
+    fs_vehicle_contact contact;
+    fs_closest_approach approach;
+    float separation = 0.0f;
+    CHECK(car.half_extents.x == 0.9f && car.half_extents.y == 0.7f && car.half_extents.z == 2.2f);
+    CHECK(person.radius == 0.4f && settings.tolerance == 1e-3f && settings.max_evaluations == 65536u);
+    car.state.velocity = vec3(0.0f, 0.0f, 10.0f);
+    person.position = dvec3(0.0, 0.0, 20.0);
+
+    /* Gap at t = 0: 20 - 2.2 (the box's front) - 0.4 (the radius). */
+    CHECK_STATUS(fs_compute_vehicle_separation(&car, &person, 0.0f, &separation), FS_STATUS_OK);
+    CHECK_NEAR(separation, 17.4, kTol);
+    /* Contact when the front reaches 19.6: t = 1.74 s, never later, within the tolerance. */
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_OK);
+    CHECK(contact.contact == 1);
+    CHECK(contact.time <= 1.74f + 1e-6f && contact.time >= 1.74f - 1.1e-4f); /* tolerance 1 mm at 10 m/s */
+    CHECK(contact.separation <= 1e-3f && contact.evaluations > 0);
+
+    /* A character 5 m to the side: closest 5 - 0.9 - 0.4 = 3.7 m, first when the box's front
+     * passes it: 10 t + 2.2 = 20, t = 1.78 s. */
+    person.position = dvec3(5.0, 0.0, 20.0);
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_OK);
+    CHECK(contact.contact == 0);
+    CHECK_STATUS(fs_find_closest_vehicle_approach(&car, &person, 5.0f, &settings, &approach), FS_STATUS_OK);
+    CHECK(approach.distance >= 3.7f - 1e-5f && approach.distance <= 3.7f + 1e-3f);
+    /* Not later than 1.78 s, not earlier than when the separation first comes within the 1 mm
+     * tolerance of 3.7: sqrt(4.1^2 + d^2) - 4.1 <= 1e-3 with the front d = 0.0906 m short. */
+    CHECK(approach.time <= 1.78f + 1e-5f && approach.time >= 1.78f - 0.0091f);
+
+    /* Refusals. */
+    CHECK_STATUS(fs_compute_vehicle_separation(&car, &person, -1.0f, &separation), FS_STATUS_NEGATIVE_TIME);
+    CHECK_STATUS(fs_compute_vehicle_separation(NULL, &person, 0.0f, &separation), FS_STATUS_NULL_POINTER);
+    bad.tolerance = 0.0f;
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &bad, &contact), FS_STATUS_INVALID_STEP);
+    car.settings.frame = 7;
+    CHECK_STATUS(fs_find_vehicle_contact(&car, &person, 5.0f, &settings, &contact), FS_STATUS_INVALID_SETTING);
+    car.settings.frame = FS_FRAME_BODY;
+    car.half_extents.y = 0.0f;
+    CHECK_STATUS(fs_find_closest_vehicle_approach(&car, &person, 5.0f, &settings, &approach),
+                 FS_STATUS_DEGENERATE_SHAPE);
+}
+
+/* ---- Throw planning ---------------------------------------------------------------------------- */
+
+static void test_plan_throw(void) {
+    fs_world* world = fs_world_create();
+    const fs_plane plane = floor_plane();
+    fs_throw_plan_request request = fs_throw_plan_request_default();
+    fs_throw_plan plans[4];
+    fs_trajectory_point scratch[1024];
+    fs_trajectory_point points[1024];
+    fs_throw_plan_result result;
+    fs_projectile_result check;
+    size_t i, scratch_size;
+    CHECK(world != NULL);
+    if (world == NULL) return;
+    CHECK_STATUS(fs_world_add_plane(world, &plane, NULL), FS_STATUS_OK);
+    CHECK(request.fuse_time == 3.0f && request.max_speed == 20.0f && request.max_plans == 3u);
+    CHECK(request.budget.max_predictions == 400u && request.budget.seed_landing_fractions[4] == 1.0f);
+    request.settings.friction = 0.4f;
+    request.start = dvec3(0.0, 1.5, 0.0);
+    request.target = dvec3(8.0, 0.0, 6.0);
+    scratch_size = fs_throw_plan_scratch_size(&request);
+    CHECK(scratch_size > 0 && scratch_size <= 1024);
+
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_OK);
+    CHECK(result.plan_count >= 1 && result.plan_count <= 3);
+    CHECK(result.predictions >= result.plan_count);
+    for (i = 0; i < result.plan_count; ++i) {
+        const fs_throw_plan* plan = &plans[i];
+        const double dx = plan->final_position.x - 8.0, dy = plan->final_position.y, dz = plan->final_position.z - 6.0;
+        const double speed =
+            sqrt(plan->launch_velocity.x * plan->launch_velocity.x + plan->launch_velocity.y * plan->launch_velocity.y +
+                 plan->launch_velocity.z * plan->launch_velocity.z);
+        /* Within the acceptance radius, at a launch speed within the cap... */
+        CHECK(plan->distance <= request.acceptance_radius);
+        CHECK_NEAR(sqrt(dx * dx + dy * dy + dz * dz), plan->distance, kTol);
+        CHECK(speed <= 20.0 + 1e-4);
+        /* ... and the forward model agrees: predicting the plan ends where it says. */
+        CHECK_STATUS(fs_predict_projectile(request.start, plan->launch_velocity, request.fuse_time, &request.settings,
+                                           world, points, 1024, &check),
+                     FS_STATUS_OK);
+        CHECK(check.position.x == plan->final_position.x && check.position.y == plan->final_position.y &&
+              check.position.z == plan->final_position.z);
+        CHECK(check.bounces == plan->bounces);
+    }
+
+    /* Refusals. */
+    CHECK_STATUS(fs_plan_throw(NULL, world, plans, 4, scratch, 1024, &result), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_plan_throw(&request, world, NULL, 4, scratch, 1024, &result), FS_STATUS_NULL_POINTER);
+    request.fuse_time = 0.0f;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_FUSE);
+    CHECK(fs_throw_plan_scratch_size(&request) == 0);
+    request.fuse_time = 3.0f;
+    request.settings.method = 9;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_SETTING);
+    request.settings.method = FS_METHOD_EXACT;
+    request.budget.refinements = 33;
+    CHECK_STATUS(fs_plan_throw(&request, world, plans, 4, scratch, 1024, &result), FS_STATUS_INVALID_ITERATIONS);
     fs_world_destroy(world);
 }
 
@@ -966,6 +1459,12 @@ int main(void) {
     test_projectile_shapes();
     test_projectile_buffers_and_refusals();
     test_projectile_event_cap();
+    test_callback_world();
+    test_meshes();
+    test_engine_profiles();
+    test_danger_projectile();
+    test_danger_vehicle();
+    test_plan_throw();
     test_aim();
     test_dead_reckoning();
     test_dead_reckoning_receiver();

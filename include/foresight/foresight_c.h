@@ -102,6 +102,15 @@ enum {
     FS_STATUS_NULL_POINTER = 1001,
     /// C API only: memory ran out while adding a shape; the world is then emptied (as if new).
     FS_STATUS_OUT_OF_MEMORY = 1002,
+    /// C API only: a callback world's cast function (fs_world_create_callback) returned a hit
+    /// that is not one: a fraction outside [0, 1] or not finite, a position that is not finite,
+    /// a normal that is zero or not finite, a restitution above 1 or NaN, or a NaN friction.
+    /// The prediction is abandoned: nothing is written.
+    FS_STATUS_INVALID_CALLBACK_HIT = 1003,
+    /// C API only: the Embree backend refused: a mesh file could not be read or is not a valid
+    /// mesh (fs_world_load_mesh), or the BVH could not be built (fs_world_commit). The error
+    /// text those functions write says why, naming the file.
+    FS_STATUS_BACKEND_FAILED = 1004,
 };
 
 /// A short English description of `status`, e.g. "time must be >= 0". Never NULL: values that
@@ -255,7 +264,8 @@ FS_API void fs_world_destroy(fs_world* world) FS_NOEXCEPT;
 /// Adds a plane after checking it as the C++ StaticWorld does; nothing is added unless OK.
 /// @param material  the surface's material, or NULL for none.
 /// @return OK, NULL_POINTER (world, plane), NON_FINITE_INPUT (also a material's NaN),
-///         ZERO_VECTOR, INVALID_RESTITUTION (material above 1) or OUT_OF_MEMORY.
+///         ZERO_VECTOR, INVALID_RESTITUTION (material above 1), INVALID_SETTING (a callback
+///         world, which holds no shapes) or OUT_OF_MEMORY.
 FS_API fs_status fs_world_add_plane(fs_world* world, const fs_plane* plane, const fs_material* material) FS_NOEXCEPT;
 
 /// Adds a sphere (see fs_world_add_plane).
@@ -273,6 +283,96 @@ FS_API fs_status fs_world_add_box(fs_world* world, const fs_box* box, const fs_m
 ///         OUT_OF_MEMORY.
 FS_API fs_status fs_world_add_triangle(fs_world* world, const fs_triangle* triangle,
                                        const fs_material* material) FS_NOEXCEPT;
+
+/// What fs_world_add_mesh or fs_world_load_mesh did with a mesh. 24 bytes, alignment 8:
+/// triangles 0, degenerate_triangles 8, first_degenerate_triangle 16.
+typedef struct fs_mesh_report {
+    uint64_t triangles;                  ///< triangles added.
+    uint64_t degenerate_triangles;       ///< triangles skipped (no area, or a sliver).
+    uint64_t first_degenerate_triangle;  ///< 0-based index in the mesh of the first skipped one.
+} fs_mesh_report;
+
+/// Adds an indexed triangle mesh (three indices per triangle, two-sided triangles). In a world
+/// from fs_world_create every triangle is tested by brute force (up to a few thousand); in an
+/// Embree world they go into its BVH (millions; call fs_world_commit afterwards). The whole
+/// mesh is refused (nothing added) for a non-finite vertex (NON_FINITE_INPUT), an index count
+/// that is not a multiple of 3, an index out of range or no usable triangle (DEGENERATE_SHAPE);
+/// degenerate triangles are skipped and counted. Mesh triangles have no material of their own.
+/// @param report  receives the counts (may be NULL); written on OK.
+/// @return OK, NULL_POINTER (world, vertices or indices with a count above 0), NON_FINITE_INPUT,
+///         DEGENERATE_SHAPE, INVALID_SETTING (a callback world) or OUT_OF_MEMORY.
+FS_API fs_status fs_world_add_mesh(fs_world* world, const fs_dvec3* vertices, size_t vertex_count,
+                                   const uint32_t* indices, size_t index_count, fs_mesh_report* report) FS_NOEXCEPT;
+
+/// 1 when this library was built with the Embree backend (fs_world_create_embree works), else 0.
+FS_API int32_t fs_embree_available(void) FS_NOEXCEPT;
+
+/// A world for large levels (foresight::EmbreeWorld): triangle meshes in an Embree BVH plus the
+/// built-in shapes. Add shapes (fs_world_add_*) and meshes (fs_world_add_mesh,
+/// fs_world_load_mesh), then call fs_world_commit once before predicting (and again after adding
+/// more). Free it with fs_world_destroy.
+/// @return the world; NULL when the library has no Embree backend or memory runs out.
+FS_API fs_world* fs_world_create_embree(void) FS_NOEXCEPT;
+
+/// Loads a mesh file into an Embree world: Wavefront OBJ (`.obj`) or glTF 2.0 (`.gltf` with its
+/// buffers, or `.glb`), chosen by the extension (any case). Files are checked strictly (a damaged
+/// number or index is refused, never read as 0; glTF buffers must lie inside the file's folder;
+/// at most 2^24 vertices and triangles): foresight's embree_world.h has the rules.
+/// @param path            the file, UTF-8.
+/// @param report          receives the counts (may be NULL); written on OK.
+/// @param error           receives a one-line reason on BACKEND_FAILED, NUL-terminated and cut
+///                        to `error_capacity` bytes (may be NULL when error_capacity is 0).
+/// @return OK, NULL_POINTER, INVALID_SETTING (not an Embree world, or an extension that is none
+///         of the three) or BACKEND_FAILED.
+FS_API fs_status fs_world_load_mesh(fs_world* world, const char* path, fs_mesh_report* report, char* error,
+                                    size_t error_capacity) FS_NOEXCEPT;
+
+/// Builds an Embree world's BVH over its meshes; needed before predicting, after the last add.
+/// Other worlds have nothing to build: OK. Not thread-safe with predictions in the same world.
+/// @param error  as fs_world_load_mesh's.
+/// @return OK, NULL_POINTER or BACKEND_FAILED (the world then answers by brute force: correct,
+///         slow).
+FS_API fs_status fs_world_commit(fs_world* world, char* error, size_t error_capacity) FS_NOEXCEPT;
+
+/// A cast that a callback world answers: a segment, or a sphere swept along it, from `origin`
+/// to `origin + displacement`. 40 bytes, alignment 8: origin at 0, displacement at 24, radius
+/// at 36.
+typedef struct fs_segment_cast {
+    fs_dvec3 origin;       ///< start, the sphere's centre [Units: m].
+    fs_vec3 displacement;  ///< end minus start [Units: m]; never zero-length in a call.
+    float radius;          ///< swept sphere radius [Units: m]; 0 casts a point (a ray).
+} fs_segment_cast;
+
+/// The first hit of an fs_segment_cast, filled by a callback world's function. Before the call
+/// it holds: fraction 1, position the segment's end, normal {0, 1, 0}, restitution and friction
+/// -1 (the surface has no material of its own); a function that has no material leaves them.
+/// 48 bytes, alignment 8: fraction at 0, restitution at 4, position at 8, normal at 32,
+/// friction at 44.
+typedef struct fs_cast_hit {
+    float fraction;     ///< where along the segment [Limit: 0 .. 1]: origin + fraction * displacement.
+    float restitution;  ///< the surface's own restitution [Limit: 0 .. 1, or negative: none].
+    fs_dvec3 position;  ///< the sphere's centre (the ray's point) at the hit [Units: m] [Limit: finite].
+    fs_vec3 normal;     ///< surface normal facing against the motion [Limit: non-zero, finite];
+                        ///< normalised by the library.
+    float friction;     ///< the surface's own friction coefficient [Limit: >= 0, or negative: none].
+} fs_cast_hit;
+
+/// A game's own ray or sphere cast, e.g. its physics engine's (Unity's Physics.SphereCast,
+/// Godot's PhysicsDirectSpaceState, PhysX, Jolt). Return non-zero and fill `hit` on a hit, zero
+/// when the cast hits nothing. The rules (world.h, CollisionWorld): report the closest surface
+/// the segment enters (moving against its normal); a segment that starts on a surface and moves
+/// into it hits at fraction 0; a segment that starts deep inside a solid, or moves away from a
+/// surface, does not hit it. It is called on the thread that predicts, many times per
+/// prediction (about one call per step), and must not throw, longjmp or unwind across the call.
+typedef int32_t (*fs_cast_function)(void* context, const fs_segment_cast* cast, fs_cast_hit* hit);
+
+/// A world whose casts are answered by `cast(context, ...)` (foresight::CallbackWorld): how a
+/// game lets its own physics engine answer. Nothing is copied: `context` must stay valid while
+/// the world is used. Shapes cannot be added to it (fs_world_add_* return INVALID_SETTING).
+/// Every hit is checked: a prediction that receives an invalid one returns
+/// FS_STATUS_INVALID_CALLBACK_HIT. Free it with fs_world_destroy.
+/// @return the world; NULL when `cast` is NULL or memory runs out.
+FS_API fs_world* fs_world_create_callback(fs_cast_function cast, void* context) FS_NOEXCEPT;
 
 /* ---- Projectiles ------------------------------------------------------------------------ */
 
@@ -375,11 +475,136 @@ FS_API size_t fs_trajectory_capacity(float time, const fs_projectile_settings* s
 ///         NULL_POINTER (settings, out, or points with capacity > 0); INVALID_SETTING (method,
 ///         engine); NON_FINITE_INPUT, INVALID_STEP, INVALID_RESTITUTION, INVALID_FRICTION,
 ///         INVALID_RADIUS, NEGATIVE_TIME, OUT_OF_RANGE, TOO_MANY_STEPS, TOO_MANY_EVENTS or
-///         NON_FINITE_RESULT (`out` untouched; the buffer's contents are then unspecified).
+///         NON_FINITE_RESULT, or INVALID_CALLBACK_HIT (a callback world's function returned an
+///         invalid hit) (`out` untouched; the buffer's contents are then unspecified).
 FS_API fs_status fs_predict_projectile(fs_dvec3 position, fs_vec3 velocity, float time,
                                        const fs_projectile_settings* settings, const fs_world* world,
                                        fs_trajectory_point* points, size_t capacity,
                                        fs_projectile_result* out) FS_NOEXCEPT;
+
+/* ---- Engine profiles: a game's own engine settings ------------------------------------------ */
+
+/// Where the damping factor goes in an engine step (fs_engine_profile::order).
+enum {
+    FS_DAMPING_ORDER_GRAVITY_THEN_DAMPING = 0,  ///< `v = (v + g dt) d` (Jolt, PhysX, Rapier).
+    FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY = 1,  ///< `v = v d + g dt` (Bullet, Godot 3, Box2D).
+};
+
+/// The damping factor `d` per step for a coefficient `c` (fs_engine_profile::damping).
+enum {
+    FS_DAMPING_LAW_NONE = 0,            ///< `d = 1`.
+    FS_DAMPING_LAW_LINEAR_CLAMPED = 1,  ///< `d = max(0, 1 - c dt)` (Jolt, PhysX, Godot 3).
+    FS_DAMPING_LAW_RATIONAL = 2,        ///< `d = 1 / (1 + c dt)` (Rapier, Box2D).
+    FS_DAMPING_LAW_POWER = 3,           ///< `d = (1 - min(c, 1))^dt` (Bullet).
+};
+
+/// How two materials' coefficients combine (restitution_combine, friction_combine).
+enum {
+    FS_COMBINE_AVERAGE = 0,         ///< `(a + b) / 2`.
+    FS_COMBINE_MIN = 1,             ///< `min(a, b)`.
+    FS_COMBINE_MAX = 2,             ///< `max(a, b)`.
+    FS_COMBINE_MULTIPLY = 3,        ///< `a b`.
+    FS_COMBINE_GEOMETRIC_MEAN = 4,  ///< `sqrt(a b)`.
+    FS_COMBINE_SUM_CLAMPED = 5,     ///< `clamp(a + b, 0, 1)`.
+};
+
+/// Which velocity a bounce reflects (fs_engine_profile::restitution_base).
+enum {
+    FS_RESTITUTION_BASE_STEP_START = 0,     ///< the velocity at the start of the step (Jolt, Rapier, Bullet).
+    FS_RESTITUTION_BASE_AFTER_GRAVITY = 1,  ///< after that step's gravity and damping (PhysX, Godot 3, Box2D).
+};
+
+/// What a body's first step does (fs_engine_profile::first_step).
+enum {
+    FS_FIRST_STEP_NORMAL = 0,        ///< like every other step.
+    FS_FIRST_STEP_NO_GRAVITY = 1,    ///< `p += v dt` only (Godot 3 GodotPhysics).
+    FS_FIRST_STEP_DAMPING_ONLY = 2,  ///< `v = v d; p += v dt` (Godot 3 with Bullet).
+};
+
+/// When a contact starts to act (fs_engine_profile::contact).
+enum {
+    FS_CONTACT_SPECULATIVE = 0,  ///< within contact_distance at a step's start (most engines).
+    FS_CONTACT_PENETRATION = 1,  ///< once overlapping at a step's start (Godot 3 GodotPhysics).
+};
+
+/// How an engine steps a sphere and answers its contacts (foresight::EngineProfile, which
+/// engine_profile.h and docs/engines.md explain field by field): start from
+/// fs_engine_profile_default(FS_ENGINE_*) and set what the game changes, typically `timestep`
+/// (Unity's Time.fixedDeltaTime, Godot's physics_ticks_per_second) and `linear_damping` (Unity's
+/// Rigidbody.drag, Godot's linear_damp). Enumerations are the FS_* constants above, flags 0 or 1.
+/// 100 bytes, alignment 4, every field 4 bytes in this order: engine 0, timestep 4, substeps 8,
+/// order 12, damping 16, linear_damping 20, added_linear_damping 24, angular_damping 28,
+/// first_step 32, restitution_threshold 36, restitution_base 40, restitution_combine 44,
+/// friction_combine 48, contact 52, contact_distance 56, penetration_slop 60,
+/// position_correction 64, correction_is_velocity 68, split_impulse_correction 72,
+/// friction_warm_start 76, max_linear_speed 80, max_step_distance 84, planar 88, rotates 92,
+/// triangle_mesh 96.
+typedef struct fs_engine_profile {
+    int32_t engine;                  ///< FS_ENGINE_*: which engine the values describe.
+    float timestep;                  ///< fixed step [Units: s] [Limit: 1e-5 .. 1].
+    uint32_t substeps;               ///< equal sub-steps per step [Limit: 1 .. 64].
+    int32_t order;                   ///< FS_DAMPING_ORDER_*.
+    int32_t damping;                 ///< FS_DAMPING_LAW_*.
+    float linear_damping;            ///< the body's linear damping [Units: 1/s] [Limit: >= 0].
+    float added_linear_damping;      ///< a project default added to it [Units: 1/s] [Limit: >= 0].
+    float angular_damping;           ///< [Units: 1/s] [Limit: >= 0].
+    int32_t first_step;              ///< FS_FIRST_STEP_*.
+    float restitution_threshold;     ///< no bounce at or below this approach speed [Units: m/s] [Limit: >= 0].
+    int32_t restitution_base;        ///< FS_RESTITUTION_BASE_*.
+    int32_t restitution_combine;     ///< FS_COMBINE_* for a surface's own restitution.
+    int32_t friction_combine;        ///< FS_COMBINE_* for a surface's own friction.
+    int32_t contact;                 ///< FS_CONTACT_*.
+    float contact_distance;          ///< speculative contact distance [Units: m] [Limit: >= 0].
+    float penetration_slop;          ///< penetration left alone [Units: m] [Limit: >= 0].
+    float position_correction;       ///< fraction of the penetration removed per step [Limit: 0 .. 1].
+    int32_t correction_is_velocity;  ///< 1: the correction is a velocity kept by the body (Bullet, Godot 3).
+    float split_impulse_correction;  ///< Bullet's split impulse fraction [Limit: 0 .. 1].
+    float friction_warm_start;       ///< warm-started fraction of friction [Limit: 0 .. 1].
+    float max_linear_speed;          ///< speed cap [Units: m/s] [Limit: > 0].
+    float max_step_distance;         ///< distance cap per step [Units: m] [Limit: > 0].
+    int32_t planar;                  ///< 1: motion in the x-y plane only (Box2D).
+    int32_t rotates;                 ///< 1: a rolling solid sphere; 0: rotation locked.
+    int32_t triangle_mesh;           ///< 1: the world's surfaces are an engine triangle mesh (Bullet).
+} fs_engine_profile;
+
+/// The named profile of `engine` (FS_ENGINE_*) with that engine's own defaults
+/// (foresight::engineProfile); FS_ENGINE_CUSTOM's for a value outside the enumeration.
+FS_API fs_engine_profile fs_engine_profile_default(int32_t engine) FS_NOEXCEPT;
+
+/// Checks a profile (foresight::validateEngineProfile).
+/// @return OK, NULL_POINTER, NON_FINITE_INPUT, INVALID_STEP (timestep) or INVALID_SETTING.
+FS_API fs_status fs_validate_engine_profile(const fs_engine_profile* profile) FS_NOEXCEPT;
+
+/// fs_trajectory_capacity for the Engine method with `profile` instead of settings->engine.
+FS_API size_t fs_trajectory_capacity_with_profile(float time, const fs_projectile_settings* settings,
+                                                  const fs_engine_profile* profile) FS_NOEXCEPT;
+
+/// fs_predict_projectile with `profile` as the engine of the Engine method (settings->engine is
+/// then ignored; other methods ignore the profile, which must still be valid).
+/// @return as fs_predict_projectile, NULL_POINTER (profile), and the refusals of
+///         fs_validate_engine_profile.
+FS_API fs_status fs_predict_projectile_with_profile(fs_dvec3 position, fs_vec3 velocity, float time,
+                                                    const fs_projectile_settings* settings,
+                                                    const fs_engine_profile* profile, const fs_world* world,
+                                                    fs_trajectory_point* points, size_t capacity,
+                                                    fs_projectile_result* out) FS_NOEXCEPT;
+
+/// How a game shows a body between its fixed physics steps (fs_rendered_position).
+enum {
+    FS_RENDER_NONE = 0,         ///< the last completed step.
+    FS_RENDER_INTERPOLATE = 1,  ///< between the last two steps, one step behind (Unity, Godot 4 interpolation).
+    FS_RENDER_EXTRAPOLATE = 2,  ///< the last step moved on with its velocity (Unity's extrapolation).
+};
+
+/// Where a game draws a fixed-step trajectory (Engine or Stepped: Start, then one point per
+/// step) at `render_time` [Units: s] (foresight::renderedPosition, projectile.h).
+/// @param step  the trajectory's step [Units: s] [Limit: > 0, finite]: the profile's timestep
+///              (Engine) or settings.step (Stepped).
+/// @return OK, NULL_POINTER (trajectory with a count above 0, or out), INVALID_STEP (no points,
+///         or a step that is not positive and finite), NON_FINITE_INPUT (render_time) or
+///         INVALID_SETTING (smoothing); `out` is written only on OK.
+FS_API fs_status fs_rendered_position(const fs_trajectory_point* trajectory, size_t count, float step,
+                                      float render_time, int32_t smoothing, fs_dvec3* out) FS_NOEXCEPT;
 
 /* ---- Aim ------------------------------------------------------------------------------------ */
 
@@ -451,6 +676,244 @@ FS_API fs_aim_shot fs_aim_shot_default(void) FS_NOEXCEPT;
 ///         and `count` are written only on OK.
 FS_API fs_status fs_aim_projectile(const fs_aim_shot* shot, const fs_aim_target* target, fs_firing_solution* solutions,
                                    size_t capacity, size_t* count) FS_NOEXCEPT;
+
+/* ---- Danger: where and when a grenade is dangerous -------------------------------------- */
+
+/* These functions read a trajectory that fs_predict_projectile wrote (points[0 .. trajectory_size))
+ * and model it as danger.h explains: between two points, the parabola that joins them. The
+ * trajectory is passed as a pointer and a count: at least one point, times finite and
+ * non-decreasing, events FS_EVENT_*. Each call converts it to the C++ layout in a buffer of the
+ * calling thread that keeps its size: the first call with N points on a thread allocates it,
+ * later calls with at most N points allocate nothing (OUT_OF_MEMORY if that allocation fails).
+ * Common refusals: NULL_POINTER (the trajectory with a count above 0, or an output),
+ * INVALID_STEP (no points, or times that decrease), NON_FINITE_INPUT, INVALID_SETTING (an
+ * event outside FS_EVENT_*). */
+
+/// A predicted grenade as a danger (foresight::ProjectileDanger without its trajectory). 12
+/// bytes, alignment 4: fuse_time 0, blast_radius 4, contact_radius 8.
+typedef struct fs_projectile_danger {
+    float fuse_time;     ///< when it explodes [Units: s] [Limit: >= 0].
+    float blast_radius;  ///< radius of the blast around its centre [Units: m] [Limit: >= 0].
+    /// Before the fuse, a point this close to the projectile is unsafe (include the projectile's
+    /// own radius); 0: nothing is dangerous before the fuse [Units: m] [Limit: >= 0].
+    float contact_radius;
+} fs_projectile_danger;
+
+/// Where and when a projectile explodes. 32 bytes, alignment 8: center 0, radius 24, time 28.
+typedef struct fs_danger_zone {
+    fs_dvec3 center;  ///< the projectile's position at the fuse time [Units: m].
+    float radius;     ///< the blast radius [Units: m].
+    float time;       ///< the fuse time; dangerous from then on [Units: s].
+} fs_danger_zone;
+
+/// When something starts (danger at a point, a path coming close). 8 bytes, alignment 4: ever 0,
+/// time 4.
+typedef struct fs_danger_start {
+    int32_t ever;  ///< 1: it happens, at `time`; 0: never (then `time` is 0).
+    float time;    ///< the earliest time [Units: s].
+} fs_danger_start;
+
+/// A closest approach. 8 bytes, alignment 4: distance 0, time 4.
+typedef struct fs_closest_approach {
+    /// The smallest distance [Units: m]; for vehicles the separation (negative when overlapping,
+    /// down to minus the character's radius).
+    float distance;
+    float time;  ///< when it happens [Units: s] (danger.h says which time of equal minima).
+} fs_closest_approach;
+
+/// The projectile's position at `time` [Units: s] (before the first point: the first point;
+/// after the last: the last) (foresight::positionOnTrajectory).
+/// @return OK, the common refusals, NON_FINITE_RESULT; `out` is written only on OK.
+FS_API fs_status fs_position_on_trajectory(const fs_trajectory_point* trajectory, size_t count, float time,
+                                           fs_dvec3* out) FS_NOEXCEPT;
+
+/// The danger zone: the position at the fuse time, the blast radius, the fuse time
+/// (foresight::computeDangerZone).
+/// @return OK, the common refusals, INVALID_FUSE (fuse_time < 0), INVALID_RADIUS (a negative
+///         radius), NON_FINITE_RESULT.
+FS_API fs_status fs_compute_danger_zone(const fs_trajectory_point* trajectory, size_t count,
+                                        const fs_projectile_danger* danger, fs_danger_zone* out) FS_NOEXCEPT;
+
+/// Whether `point` [Units: m] is safe at `time` [Units: s]: outside the blast from the fuse time
+/// on (a point at exactly blast_radius is unsafe), farther than contact_radius from the
+/// projectile before it (foresight::isPointSafe).
+/// @param safe  receives 1 (safe) or 0.
+/// @return OK or fs_compute_danger_zone's refusals.
+FS_API fs_status fs_is_point_safe(const fs_trajectory_point* trajectory, size_t count,
+                                  const fs_projectile_danger* danger, fs_dvec3 point, float time,
+                                  int32_t* safe) FS_NOEXCEPT;
+
+/// When danger starts at `point` [Units: m]: the earliest time fs_is_point_safe says 0
+/// (foresight::findDangerStart).
+/// @return OK or fs_compute_danger_zone's refusals.
+FS_API fs_status fs_find_danger_start(const fs_trajectory_point* trajectory, size_t count,
+                                      const fs_projectile_danger* danger, fs_dvec3 point,
+                                      fs_danger_start* out) FS_NOEXCEPT;
+
+/// The earliest time in [from_time, until_time] [Units: s] at which the projectile comes within
+/// `distance` [Units: m] [Limit: >= 0] of `point`, exact per segment (foresight::findPathApproach).
+/// @return OK, the common refusals or INVALID_RADIUS (distance < 0).
+FS_API fs_status fs_find_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point,
+                                       float distance, float from_time, float until_time,
+                                       fs_danger_start* out) FS_NOEXCEPT;
+
+/// The closest approach of the projectile to `point` over [from_time, until_time] [Units: s],
+/// exact per segment (foresight::findClosestPathApproach).
+/// @return OK, the common refusals or NON_FINITE_RESULT.
+FS_API fs_status fs_find_closest_path_approach(const fs_trajectory_point* trajectory, size_t count, fs_dvec3 point,
+                                               float from_time, float until_time, fs_closest_approach* out) FS_NOEXCEPT;
+
+/* ---- Danger: a vehicle and a character ---------------------------------------------------- */
+
+/// A vehicle as an oriented box on the exact path of fs_predict_vehicle_exact
+/// (foresight::VehicleBody); fs_vehicle_body_default() gives the C++ defaults. 104 bytes,
+/// alignment 8: state 0, settings 64, half_extents 80, box_center 92.
+typedef struct fs_vehicle_body {
+    fs_vehicle_state state;        ///< at t = 0.
+    fs_vehicle_settings settings;  ///< frame of the angular velocity, forward axis.
+    fs_vec3 half_extents;          ///< the box, local axes [Units: m] [Limit: each > 0] (default {0.9, 0.7, 2.2}).
+    fs_vec3 box_center;            ///< the box's centre from state.position, local axes [Units: m] (default 0).
+} fs_vehicle_body;
+
+/// A character: a sphere, or a capsule of constant direction, moving as `p + v t + a t^2 / 2`
+/// (foresight::CharacterBody). 64 bytes, alignment 8: position 0, velocity 24, acceleration 36,
+/// radius 48, half_axis 52.
+typedef struct fs_character_body {
+    fs_dvec3 position;     ///< the centre at t = 0 [Units: m].
+    fs_vec3 velocity;      ///< [Units: m/s].
+    fs_vec3 acceleration;  ///< [Units: m/s^2]; 0 for constant velocity.
+    float radius;          ///< [Units: m] [Limit: >= 0] (default 0.4).
+    /// Half of the capsule's inner segment, world axes [Units: m]; zero for a sphere.
+    fs_vec3 half_axis;
+} fs_character_body;
+
+/// Tolerance and work cap of the vehicle queries (foresight::ApproachSettings). 8 bytes,
+/// alignment 4: tolerance 0, max_evaluations 4.
+typedef struct fs_approach_settings {
+    float tolerance;           ///< distance tolerance [Units: m] [Limit: > 0, finite] (default 1e-3).
+    uint32_t max_evaluations;  ///< separations computed per query at most [Limit: >= 1] (default 65536).
+} fs_approach_settings;
+
+/// The first contact of a vehicle and a character. 16 bytes, alignment 4: contact 0, time 4,
+/// separation 8, evaluations 12.
+typedef struct fs_vehicle_contact {
+    int32_t contact;       ///< 1: they come within the tolerance before the horizon; else 0.
+    float time;            ///< time of first contact [Units: s], valid when contact is 1.
+    float separation;      ///< the separation at `time` (at the horizon if none) [Units: m].
+    uint32_t evaluations;  ///< separations computed.
+} fs_vehicle_contact;
+
+/// The defaults of foresight::VehicleBody (identity orientation, at rest, the default box).
+FS_API fs_vehicle_body fs_vehicle_body_default(void) FS_NOEXCEPT;
+/// The defaults of foresight::CharacterBody (a sphere of radius 0.4 m at rest at the origin).
+FS_API fs_character_body fs_character_body_default(void) FS_NOEXCEPT;
+/// The defaults of foresight::ApproachSettings.
+FS_API fs_approach_settings fs_approach_settings_default(void) FS_NOEXCEPT;
+
+/// The separation of the vehicle and the character at `time` [Units: s] [Limit: >= 0]: exact,
+/// <= 0 when they overlap (foresight::computeVehicleSeparation).
+/// @return OK, NULL_POINTER, INVALID_SETTING (the vehicle's frame), NON_FINITE_INPUT,
+///         ZERO_QUATERNION, ZERO_VECTOR, DEGENERATE_SHAPE, INVALID_RADIUS, NEGATIVE_TIME or
+///         NON_FINITE_RESULT.
+FS_API fs_status fs_compute_vehicle_separation(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                               float time, float* separation) FS_NOEXCEPT;
+
+/// The first time in [0, horizon] [Units: s] at which the vehicle and the character touch
+/// (foresight::findVehicleContact: never later than the true first overlap).
+/// @return as fs_compute_vehicle_separation, INVALID_STEP (settings), TOO_MANY_STEPS
+///         (max_evaluations reached).
+FS_API fs_status fs_find_vehicle_contact(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                         float horizon, const fs_approach_settings* settings,
+                                         fs_vehicle_contact* out) FS_NOEXCEPT;
+
+/// The closest approach in [0, horizon] [Units: s] (foresight::findClosestVehicleApproach).
+/// @return as fs_find_vehicle_contact.
+FS_API fs_status fs_find_closest_vehicle_approach(const fs_vehicle_body* vehicle, const fs_character_body* character,
+                                                  float horizon, const fs_approach_settings* settings,
+                                                  fs_closest_approach* out) FS_NOEXCEPT;
+
+/* ---- Throw planning ----------------------------------------------------------------------- */
+
+/// Caps on the work of fs_plan_throw (foresight::ThrowPlanBudget). 56 bytes, alignment 8:
+/// azimuth_samples 0, elevation_samples 4, speed_samples 8, refinements 12,
+/// refinement_predictions 16, max_predictions 20, max_total_steps 24, grid_step 32,
+/// seed_landing_fractions 36.
+typedef struct fs_throw_plan_budget {
+    uint32_t azimuth_samples;         ///< grid: directions around the up axis (default 16).
+    uint32_t elevation_samples;       ///< grid: elevations from -30 to +75 degrees (default 5).
+    uint32_t speed_samples;           ///< grid: speeds (default 3).
+    uint32_t refinements;             ///< candidates refined at most [Limit: 1 .. 32] (default 6).
+    uint32_t refinement_predictions;  ///< predictions per refinement at most (default 24).
+    uint32_t max_predictions;         ///< predictions per call at most (default 400).
+    uint64_t max_total_steps;         ///< max_predictions x steps per prediction at most (default 2^24).
+    float grid_step;  ///< the grid's time step (Exact method) [Units: s] [Limit: >= 0; 0: the request's] (default 0.1).
+    /// Seeds: first landing at these fractions of the fuse time [Limit: (0, 1]; others skipped].
+    float seed_landing_fractions[5];
+} fs_throw_plan_budget;
+
+/// What to plan (foresight::ThrowPlanRequest); fs_throw_plan_request_default() gives the C++
+/// defaults. 176 bytes, alignment 8: start 0, target 24, acceptance_radius 48, fuse_time 52,
+/// max_speed 56, min_speed 60, settings 64, max_plans 112, distinct_angle 116, budget 120.
+typedef struct fs_throw_plan_request {
+    fs_dvec3 start;                   ///< launch position (the sphere's centre) [Units: m].
+    fs_dvec3 target;                  ///< where the grenade should be at the fuse time [Units: m].
+    float acceptance_radius;          ///< a plan ends within this of target [Units: m] [Limit: > 0] (default 0.5).
+    float fuse_time;                  ///< launch to blast [Units: s] [Limit: > 0] (default 3).
+    float max_speed;                  ///< launch speed cap [Units: m/s] [Limit: > 0] (default 20).
+    float min_speed;                  ///< lowest launch speed [Units: m/s] [Limit: 0 .. max_speed] (default 0).
+    fs_projectile_settings settings;  ///< the forward model (method, gravity, materials, radius, step, caps).
+    uint32_t max_plans;               ///< plans wanted [Limit: >= 1] (default 3).
+    float distinct_angle;         ///< plans differ by this angle at least [Units: rad] [Limit: 0 .. pi] (default 0.1).
+    fs_throw_plan_budget budget;  ///< caps on the work.
+} fs_throw_plan_request;
+
+/// One throw that works (foresight::ThrowPlan). 88 bytes, alignment 8: launch_velocity 0,
+/// distance 12, final_position 16, bounces 40, at_rest 44, first_impact_time 48,
+/// first_impact_normal 52, first_impact_position 64.
+typedef struct fs_throw_plan {
+    fs_vec3 launch_velocity;         ///< [Units: m/s]; speed within [min_speed, max_speed].
+    float distance;                  ///< from the final position to the target [Units: m].
+    fs_dvec3 final_position;         ///< where the grenade is at the fuse time [Units: m].
+    uint32_t bounces;                ///< bounces until the fuse time.
+    int32_t at_rest;                 ///< 1: resting on a surface at the fuse time.
+    float first_impact_time;         ///< [Units: s]; < 0 when none (or not recorded: scratch too small).
+    fs_vec3 first_impact_normal;     ///< unit normal of the first impact; zero when none.
+    fs_dvec3 first_impact_position;  ///< [Units: m]; the start when none.
+} fs_throw_plan;
+
+/// What fs_plan_throw did (foresight::ThrowPlanResult). 32 bytes, alignment 8: plan_count 0,
+/// predictions 8, closest_distance 12, closest_velocity 16, reserved 28.
+typedef struct fs_throw_plan_result {
+    uint64_t plan_count;       ///< plans written, closest first.
+    uint32_t predictions;      ///< forward predictions run.
+    float closest_distance;    ///< closest any tried throw came [Units: m]; FLT_MAX when none finished.
+    fs_vec3 closest_velocity;  ///< the launch velocity of that throw [Units: m/s].
+    float reserved;            ///< padding: written as 0.
+} fs_throw_plan_result;
+
+/// The defaults of foresight::ThrowPlanRequest (its settings: fs_projectile_settings_default()).
+FS_API fs_throw_plan_request fs_throw_plan_request_default(void) FS_NOEXCEPT;
+
+/// Scratch points that let fs_plan_throw record every first impact (0 for a refused request).
+FS_API size_t fs_throw_plan_scratch_size(const fs_throw_plan_request* request) FS_NOEXCEPT;
+
+/// Plans throws that put a grenade within acceptance_radius of the target when its fuse ends,
+/// bank shots included (foresight::planThrow; throw_planner.h explains the search). Allocates
+/// nothing. To draw a plan: fs_predict_projectile(request->start, plan.launch_velocity,
+/// request->fuse_time, &request->settings, world, ...).
+/// @param world             what the grenade bounces off (a static or callback world); NULL: nothing.
+/// @param plans             receives up to min(max_plans, capacity) plans, closest first.
+/// @param scratch           trajectory scratch of fs_throw_plan_scratch_size() points to record
+///                          every first impact; may be smaller (even NULL with 0).
+/// @param out               what was done.
+/// @return OK (also when nothing was found: plan_count 0), NULL_POINTER, INVALID_SETTING (an
+///         enumeration), the refusals of foresight::validateThrowPlanRequest (NON_FINITE_INPUT,
+///         INVALID_FUSE, INVALID_RADIUS, INVALID_SPEED, INVALID_ITERATIONS, INVALID_STEP, the
+///         settings' refusals, TOO_MANY_STEPS) or INVALID_CALLBACK_HIT; outputs are written only
+///         on OK.
+FS_API fs_status fs_plan_throw(const fs_throw_plan_request* request, const fs_world* world, fs_throw_plan* plans,
+                               size_t capacity, fs_trajectory_point* scratch, size_t scratch_capacity,
+                               fs_throw_plan_result* out) FS_NOEXCEPT;
 
 /* ---- Dead reckoning (network replication) ------------------------------------------------- */
 

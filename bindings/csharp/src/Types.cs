@@ -64,6 +64,10 @@ namespace Foresight
         NullPointer = 1001,
         /// <summary>Memory ran out while adding a shape; the world is emptied.</summary>
         OutOfMemory = 1002,
+        /// <summary>A callback world's cast returned an invalid hit (not bound in C# yet).</summary>
+        InvalidCallbackHit = 1003,
+        /// <summary>The Embree backend refused a mesh file or a BVH build (not bound in C# yet).</summary>
+        BackendFailed = 1004,
     }
 
     /// <summary>A position [Units: m] in double precision (fs_dvec3). 24 bytes.</summary>

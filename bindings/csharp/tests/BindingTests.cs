@@ -88,6 +88,46 @@ internal static class BindingTests
         { "fs_quat", new[] { 16, 4 } }, { "fs_dvec3", new[] { 24, 8 } },
     };
 
+    // The C API's newer parts that the binding does not cover yet: their structs and functions.
+    // Listed so that anything else added to the header fails this test until it is bound.
+    private static readonly HashSet<string> NotBoundStructs = new HashSet<string> {
+        "fs_mesh_report", "fs_cast_hit", "fs_segment_cast", "fs_engine_profile", "fs_projectile_danger",
+        "fs_danger_zone", "fs_danger_start", "fs_closest_approach", "fs_vehicle_body", "fs_character_body",
+        "fs_approach_settings", "fs_vehicle_contact", "fs_throw_plan_request", "fs_throw_plan_budget", "fs_throw_plan",
+        "fs_throw_plan_result",
+    };
+    private static readonly HashSet<string> NotBoundFunctions = new HashSet<string> {
+        "fs_world_add_mesh", "fs_embree_available", "fs_world_create_embree", "fs_world_load_mesh", "fs_world_commit",
+        "fs_world_create_callback", "fs_engine_profile_default", "fs_validate_engine_profile",
+        "fs_trajectory_capacity_with_profile", "fs_predict_projectile_with_profile", "fs_rendered_position",
+        "fs_position_on_trajectory", "fs_compute_danger_zone", "fs_is_point_safe", "fs_find_danger_start",
+        "fs_find_path_approach", "fs_find_closest_path_approach", "fs_vehicle_body_default", "fs_character_body_default",
+        "fs_approach_settings_default", "fs_compute_vehicle_separation", "fs_find_vehicle_contact",
+        "fs_find_closest_vehicle_approach", "fs_throw_plan_request_default", "fs_throw_plan_scratch_size", "fs_plan_throw",
+    };
+
+    // Every FS_API function of the header has a P/Invoke declaration (or is listed as not bound).
+    private static void TestEntryPoints(string header)
+    {
+        HashSet<string> declared = new HashSet<string>();
+        foreach (MethodInfo m in typeof(Native).GetMethods(BindingFlags.Static | BindingFlags.NonPublic))
+        {
+            object[] attributes = m.GetCustomAttributes(typeof(DllImportAttribute), false);
+            if (attributes.Length == 0) continue;
+            string entry = ((DllImportAttribute)attributes[0]).EntryPoint;
+            declared.Add(string.IsNullOrEmpty(entry) ? m.Name : entry);
+        }
+        int functions = 0;
+        foreach (Match m in Regex.Matches(header, @"FS_API\s+[^;(]*?\b(fs_\w+)\s*\("))
+        {
+            string name = m.Groups[1].Value;
+            ++functions;
+            if (NotBoundFunctions.Contains(name)) Check(!declared.Contains(name), name + " is bound: take it off the list");
+            else Check(declared.Contains(name), name + ": no P/Invoke declaration");
+        }
+        Check(functions >= 40, "functions found in the header: " + functions);
+    }
+
     private static FieldInfo FindField(Type type, string cName)
     {
         string key = cName.Replace("_", "").ToLowerInvariant();
@@ -107,6 +147,11 @@ internal static class BindingTests
             string comment = Regex.Replace(m.Groups[1].Value, @"[ \t]*///", " ");
             string name = m.Groups[2].Value;
             Type type;
+            if (NotBoundStructs.Contains(name))
+            {
+                Check(!CTypes.ContainsKey(name), name + " is bound: take it off the list");
+                continue;
+            }
             if (!CTypes.TryGetValue(name, out type))
             {
                 Check(false, "no C# type for " + name);
@@ -766,6 +811,7 @@ internal static class BindingTests
         }
         TestLibrary();
         TestLayout(args[0]);
+        TestEntryPoints(File.ReadAllText(args[0]));
         TestCharacters();
         TestVehicles();
         TestWorld();
