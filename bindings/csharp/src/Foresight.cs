@@ -361,6 +361,102 @@ namespace Foresight
 #endif
     }
 
+    /// <summary>Engine profiles: a game's own engine settings for the Engine method
+    /// (engine_profile.h), and where a game draws a fixed-step body between its steps.</summary>
+    public static class EngineProfiles
+    {
+        /// <summary>The documented defaults of <paramref name="engine"/> (docs/engines.md);
+        /// an engine outside the enumeration gives Jolt's.</summary>
+        public static EngineProfile Default(PhysicsEngine engine) { return Native.fs_engine_profile_default(engine); }
+
+        /// <summary>Checks every field of <paramref name="profile"/>.</summary>
+        /// <returns>Ok, NonFiniteInput, InvalidStep (timestep) or InvalidSetting.</returns>
+        public static Status Validate(EngineProfile profile) { return Native.fs_validate_engine_profile(ref profile); }
+
+        /// <summary>TrajectoryCapacity for the Engine method with <paramref name="profile"/>
+        /// [Units: s for time]; 0 when the input is refused.</summary>
+        public static int TrajectoryCapacity(float time, ProjectileSettings settings, EngineProfile profile)
+        {
+            ulong n = (ulong)Native.fs_trajectory_capacity_with_profile(time, ref settings, ref profile);
+            return n > int.MaxValue ? int.MaxValue : (int)n;
+        }
+
+        /// <summary>Projectiles.TryPredict with <paramref name="profile"/> as the engine of the
+        /// Engine method (settings.Engine is then ignored; other methods ignore the profile,
+        /// which must still be valid). Allocates nothing.</summary>
+        /// <returns>As Projectiles.TryPredict, and the refusals of Validate.</returns>
+        public static Status TryPredict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
+                                        EngineProfile profile, World world, TrajectoryPoint[] points,
+                                        out ProjectileResult result)
+        {
+            if (points == null || points.Length == 0)
+                return Predict(position, velocity, time, ref settings, ref profile, world, ref noPoints, 0, out result);
+            return Predict(position, velocity, time, ref settings, ref profile, world, ref points[0], points.Length,
+                           out result);
+        }
+
+        private static Status Predict(DVec3 position, Vector3 velocity, float time, ref ProjectileSettings settings,
+                                      ref EngineProfile profile, World world, ref TrajectoryPoint first, int capacity,
+                                      out ProjectileResult result)
+        {
+            result = default(ProjectileResult);
+            UIntPtr n = new UIntPtr((uint)capacity);
+            Vector3Native v = new Vector3Native(velocity);
+            if (world == null)
+                return Native.fs_predict_projectile_with_profile(position, v, time, ref settings, ref profile, IntPtr.Zero,
+                                                                 ref first, n, out result);
+            return Native.fs_predict_projectile_with_profile(position, v, time, ref settings, ref profile, world.Handle,
+                                                             ref first, n, out result);
+        }
+
+        /// <summary>TryPredict with a profile, throwing ForesightException on any status but Ok.</summary>
+        public static ProjectileResult Predict(DVec3 position, Vector3 velocity, float time, ProjectileSettings settings,
+                                               EngineProfile profile, World world = null, TrajectoryPoint[] points = null)
+        {
+            ProjectileResult result;
+            ForesightException.ThrowUnlessOk(TryPredict(position, velocity, time, settings, profile, world, points,
+                                                        out result),
+                                             "PredictProjectileWithProfile");
+            return result;
+        }
+
+        // Never written: the library reads no point when the capacity is 0.
+        private static TrajectoryPoint noPoints;
+
+        /// <summary>Where a game draws a fixed-step trajectory (Engine or Stepped: Start, then
+        /// one point per step; its first <paramref name="count"/> points) at
+        /// <paramref name="renderTime"/> [Units: s].</summary>
+        /// <param name="trajectory">The points a prediction wrote.</param>
+        /// <param name="count">How many to use (ProjectileResult.TrajectorySize).</param>
+        /// <param name="step">The trajectory's step [Units: s]: the profile's Timestep (Engine)
+        /// or settings.Step (Stepped).</param>
+        /// <param name="renderTime">[Units: s] since the start.</param>
+        /// <param name="smoothing">How the game draws between steps.</param>
+        /// <param name="position">The position drawn [Units: m] (default on a refusal).</param>
+        /// <returns>Ok, InvalidStep (no points, or a bad step), NonFiniteInput or InvalidSetting.</returns>
+        public static Status TryRenderedPosition(TrajectoryPoint[] trajectory, int count, float step, float renderTime,
+                                                 RenderSmoothing smoothing, out DVec3 position)
+        {
+            position = default(DVec3);
+            int n = trajectory == null ? 0 : Math.Max(0, Math.Min(count, trajectory.Length));
+            if (n == 0)
+                return Native.fs_rendered_position(ref noPoints, UIntPtr.Zero, step, renderTime, smoothing, out position);
+            return Native.fs_rendered_position(ref trajectory[0], new UIntPtr((uint)n), step, renderTime, smoothing,
+                                               out position);
+        }
+
+        /// <summary>TryRenderedPosition, throwing ForesightException.</summary>
+        public static DVec3 RenderedPosition(TrajectoryPoint[] trajectory, int count, float step, float renderTime,
+                                             RenderSmoothing smoothing)
+        {
+            DVec3 position;
+            ForesightException.ThrowUnlessOk(TryRenderedPosition(trajectory, count, step, renderTime, smoothing,
+                                                                 out position),
+                                             "RenderedPosition");
+            return position;
+        }
+    }
+
     /// <summary>Aiming a projectile at a moving target in free space (aim.h).</summary>
     public static class Aim
     {

@@ -380,6 +380,147 @@ namespace Foresight
         public bool StoppedAtHit { get { return stoppedAtHit != 0; } }
     }
 
+    // ---- Engine profiles -------------------------------------------------------------------
+
+    /// <summary>Where the damping factor goes in an engine step (FS_DAMPING_ORDER_*).</summary>
+    public enum DampingOrder
+    {
+        /// <summary>v = (v + g dt) d (Jolt, PhysX, Rapier).</summary>
+        GravityThenDamping = 0,
+        /// <summary>v = v d + g dt (Bullet, Godot 3, Box2D).</summary>
+        DampingThenGravity = 1,
+    }
+
+    /// <summary>The damping factor d per step for a coefficient c (FS_DAMPING_LAW_*).</summary>
+    public enum DampingLaw
+    {
+        /// <summary>d = 1.</summary>
+        None = 0,
+        /// <summary>d = max(0, 1 - c dt) (Jolt, PhysX, Godot 3).</summary>
+        LinearClamped = 1,
+        /// <summary>d = 1 / (1 + c dt) (Rapier, Box2D).</summary>
+        Rational = 2,
+        /// <summary>d = (1 - min(c, 1))^dt (Bullet).</summary>
+        Power = 3,
+    }
+
+    /// <summary>How two materials' coefficients combine (FS_COMBINE_*).</summary>
+    public enum CombineRule
+    {
+        /// <summary>(a + b) / 2.</summary>
+        Average = 0,
+        /// <summary>min(a, b).</summary>
+        Min = 1,
+        /// <summary>max(a, b).</summary>
+        Max = 2,
+        /// <summary>a b.</summary>
+        Multiply = 3,
+        /// <summary>sqrt(a b).</summary>
+        GeometricMean = 4,
+        /// <summary>clamp(a + b, 0, 1).</summary>
+        SumClamped = 5,
+    }
+
+    /// <summary>Which velocity a bounce reflects (FS_RESTITUTION_BASE_*).</summary>
+    public enum RestitutionBase
+    {
+        /// <summary>The velocity at the start of the step (Jolt, Rapier, Bullet).</summary>
+        StepStart = 0,
+        /// <summary>After that step's gravity and damping (PhysX, Godot 3, Box2D).</summary>
+        AfterGravity = 1,
+    }
+
+    /// <summary>What a body's first step does (FS_FIRST_STEP_*).</summary>
+    public enum FirstStep
+    {
+        /// <summary>Like every other step.</summary>
+        Normal = 0,
+        /// <summary>p += v dt only (Godot 3 GodotPhysics).</summary>
+        NoGravity = 1,
+        /// <summary>v = v d; p += v dt (Godot 3 with Bullet).</summary>
+        DampingOnly = 2,
+    }
+
+    /// <summary>When a contact starts to act (FS_CONTACT_*).</summary>
+    public enum ContactModel
+    {
+        /// <summary>Within ContactDistance at a step's start (most engines).</summary>
+        Speculative = 0,
+        /// <summary>Once overlapping at a step's start (Godot 3 GodotPhysics).</summary>
+        Penetration = 1,
+    }
+
+    /// <summary>How an engine steps a sphere and answers its contacts (fs_engine_profile;
+    /// engine_profile.h and docs/engines.md explain each field). Start from
+    /// <see cref="EngineProfiles.Default"/> and set what the game changes, typically Timestep
+    /// (Unity's Time.fixedDeltaTime, Godot's 1 / physics_ticks_per_second) and LinearDamping
+    /// (Unity's Rigidbody.drag, Godot's linear_damp). 100 bytes, every field 4 bytes.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 100)]
+    public struct EngineProfile
+    {
+        /// <summary>Which engine the values describe.</summary>
+        [FieldOffset(0)] public PhysicsEngine Engine;
+        /// <summary>Fixed step [Units: s] [Limit: 1e-5 .. 1].</summary>
+        [FieldOffset(4)] public float Timestep;
+        /// <summary>Equal sub-steps per step [Limit: 1 .. 64].</summary>
+        [FieldOffset(8)] public uint Substeps;
+        /// <summary>Where damping goes in a step.</summary>
+        [FieldOffset(12)] public DampingOrder Order;
+        /// <summary>The damping law.</summary>
+        [FieldOffset(16)] public DampingLaw Damping;
+        /// <summary>The body's linear damping [Units: 1/s] [Limit: >= 0].</summary>
+        [FieldOffset(20)] public float LinearDamping;
+        /// <summary>A project default added to it [Units: 1/s] [Limit: >= 0].</summary>
+        [FieldOffset(24)] public float AddedLinearDamping;
+        /// <summary>[Units: 1/s] [Limit: >= 0].</summary>
+        [FieldOffset(28)] public float AngularDamping;
+        /// <summary>What the first step does.</summary>
+        [FieldOffset(32)] public FirstStep FirstStep;
+        /// <summary>No bounce at or below this approach speed [Units: m/s] [Limit: >= 0].</summary>
+        [FieldOffset(36)] public float RestitutionThreshold;
+        /// <summary>Which velocity a bounce reflects.</summary>
+        [FieldOffset(40)] public RestitutionBase RestitutionBase;
+        /// <summary>How a surface's own restitution combines.</summary>
+        [FieldOffset(44)] public CombineRule RestitutionCombine;
+        /// <summary>How a surface's own friction combines.</summary>
+        [FieldOffset(48)] public CombineRule FrictionCombine;
+        /// <summary>When a contact starts to act.</summary>
+        [FieldOffset(52)] public ContactModel Contact;
+        /// <summary>Speculative contact distance [Units: m] [Limit: >= 0].</summary>
+        [FieldOffset(56)] public float ContactDistance;
+        /// <summary>Penetration left alone [Units: m] [Limit: >= 0].</summary>
+        [FieldOffset(60)] public float PenetrationSlop;
+        /// <summary>Fraction of the penetration removed per step [Limit: 0 .. 1].</summary>
+        [FieldOffset(64)] public float PositionCorrection;
+        /// <summary>1: the correction is a velocity kept by the body (Bullet, Godot 3); else 0.</summary>
+        [FieldOffset(68)] public int CorrectionIsVelocity;
+        /// <summary>Bullet's split impulse fraction [Limit: 0 .. 1].</summary>
+        [FieldOffset(72)] public float SplitImpulseCorrection;
+        /// <summary>Warm-started fraction of friction [Limit: 0 .. 1].</summary>
+        [FieldOffset(76)] public float FrictionWarmStart;
+        /// <summary>Speed cap [Units: m/s] [Limit: > 0].</summary>
+        [FieldOffset(80)] public float MaxLinearSpeed;
+        /// <summary>Distance cap per step [Units: m] [Limit: > 0].</summary>
+        [FieldOffset(84)] public float MaxStepDistance;
+        /// <summary>1: motion in the x-y plane only (Box2D); else 0.</summary>
+        [FieldOffset(88)] public int Planar;
+        /// <summary>1: a rolling solid sphere; 0: rotation locked.</summary>
+        [FieldOffset(92)] public int Rotates;
+        /// <summary>1: the world's surfaces are an engine triangle mesh (Bullet); else 0.</summary>
+        [FieldOffset(96)] public int TriangleMesh;
+    }
+
+    /// <summary>How a game shows a body between its fixed physics steps (FS_RENDER_*).</summary>
+    public enum RenderSmoothing
+    {
+        /// <summary>The last completed step.</summary>
+        None = 0,
+        /// <summary>Between the last two steps, one step behind (Unity, Godot 4 interpolation).</summary>
+        Interpolate = 1,
+        /// <summary>The last step moved on with its velocity (Unity's extrapolation).</summary>
+        Extrapolate = 2,
+    }
+
     // ---- Aim -------------------------------------------------------------------------------
 
     /// <summary>What fixes the launch velocity besides meeting the target (FS_AIM_*).</summary>
