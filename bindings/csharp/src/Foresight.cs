@@ -497,6 +497,223 @@ namespace Foresight
         }
     }
 
+    /// <summary>Danger (danger.h): where and when a predicted grenade is dangerous, when a path
+    /// comes close, and when a vehicle reaches a character. The projectile functions read a
+    /// trajectory a prediction wrote: its first <c>count</c> points (ProjectileResult.TrajectorySize).
+    /// The library converts it in a per-thread buffer that keeps its size: the first call with
+    /// N points on a thread allocates natively, later calls with at most N points do not.</summary>
+    public static class Danger
+    {
+        // Never read: the library refuses a count of 0 before reading any point.
+        private static TrajectoryPoint noPoints;
+
+        private static int Count(TrajectoryPoint[] trajectory, int count)
+        {
+            return trajectory == null ? 0 : Math.Max(0, Math.Min(count, trajectory.Length));
+        }
+
+        private static ref TrajectoryPoint First(TrajectoryPoint[] trajectory, int n)
+        {
+            if (n == 0) return ref noPoints;
+            return ref trajectory[0];
+        }
+
+        /// <summary>The projectile's position at <paramref name="time"/> [Units: s], on the
+        /// parabola between the points around it.</summary>
+        /// <returns>Ok, InvalidStep (no points, decreasing times), NonFiniteInput,
+        /// InvalidSetting, OutOfMemory or NonFiniteResult.</returns>
+        public static Status TryPositionOnTrajectory(TrajectoryPoint[] trajectory, int count, float time, out DVec3 position)
+        {
+            position = default(DVec3);
+            int n = Count(trajectory, count);
+            return Native.fs_position_on_trajectory(ref First(trajectory, n), new UIntPtr((uint)n), time, out position);
+        }
+
+        /// <summary>TryPositionOnTrajectory, throwing ForesightException.</summary>
+        public static DVec3 PositionOnTrajectory(TrajectoryPoint[] trajectory, int count, float time)
+        {
+            DVec3 p;
+            ForesightException.ThrowUnlessOk(TryPositionOnTrajectory(trajectory, count, time, out p), "PositionOnTrajectory");
+            return p;
+        }
+
+        /// <summary>The danger zone: the position at the fuse time, the blast radius, the fuse time.</summary>
+        /// <returns>Ok, the trajectory's refusals, InvalidFuse, InvalidRadius or NonFiniteResult.</returns>
+        public static Status TryComputeDangerZone(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger,
+                                                  out DangerZone zone)
+        {
+            zone = default(DangerZone);
+            int n = Count(trajectory, count);
+            return Native.fs_compute_danger_zone(ref First(trajectory, n), new UIntPtr((uint)n), ref danger, out zone);
+        }
+
+        /// <summary>TryComputeDangerZone, throwing ForesightException.</summary>
+        public static DangerZone ComputeDangerZone(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger)
+        {
+            DangerZone z;
+            ForesightException.ThrowUnlessOk(TryComputeDangerZone(trajectory, count, danger, out z), "ComputeDangerZone");
+            return z;
+        }
+
+        /// <summary>Whether <paramref name="point"/> [Units: m] is safe at <paramref name="time"/>
+        /// [Units: s]: outside the blast from the fuse time on, farther than ContactRadius
+        /// from the projectile before it.</summary>
+        /// <returns>Ok or TryComputeDangerZone's refusals (safe is then false).</returns>
+        public static Status TryIsPointSafe(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger, DVec3 point,
+                                            float time, out bool safe)
+        {
+            int n = Count(trajectory, count);
+            int flag;
+            Status s = Native.fs_is_point_safe(ref First(trajectory, n), new UIntPtr((uint)n), ref danger, point, time,
+                                               out flag);
+            safe = s == Status.Ok && flag != 0;
+            return s;
+        }
+
+        /// <summary>TryIsPointSafe, throwing ForesightException.</summary>
+        public static bool IsPointSafe(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger, DVec3 point,
+                                       float time)
+        {
+            bool safe;
+            ForesightException.ThrowUnlessOk(TryIsPointSafe(trajectory, count, danger, point, time, out safe), "IsPointSafe");
+            return safe;
+        }
+
+        /// <summary>When danger starts at <paramref name="point"/> [Units: m].</summary>
+        /// <returns>Ok or TryComputeDangerZone's refusals.</returns>
+        public static Status TryFindDangerStart(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger,
+                                                DVec3 point, out DangerStart start)
+        {
+            start = default(DangerStart);
+            int n = Count(trajectory, count);
+            return Native.fs_find_danger_start(ref First(trajectory, n), new UIntPtr((uint)n), ref danger, point,
+                                               out start);
+        }
+
+        /// <summary>TryFindDangerStart, throwing ForesightException.</summary>
+        public static DangerStart FindDangerStart(TrajectoryPoint[] trajectory, int count, ProjectileDanger danger,
+                                                  DVec3 point)
+        {
+            DangerStart d;
+            ForesightException.ThrowUnlessOk(TryFindDangerStart(trajectory, count, danger, point, out d), "FindDangerStart");
+            return d;
+        }
+
+        /// <summary>The earliest time in [fromTime, untilTime] [Units: s] at which the projectile
+        /// comes within <paramref name="distance"/> [Units: m] of <paramref name="point"/>.</summary>
+        /// <returns>Ok, the trajectory's refusals or InvalidRadius.</returns>
+        public static Status TryFindPathApproach(TrajectoryPoint[] trajectory, int count, DVec3 point, float distance,
+                                                 float fromTime, float untilTime, out DangerStart start)
+        {
+            start = default(DangerStart);
+            int n = Count(trajectory, count);
+            return Native.fs_find_path_approach(ref First(trajectory, n), new UIntPtr((uint)n), point, distance, fromTime,
+                                                untilTime, out start);
+        }
+
+        /// <summary>TryFindPathApproach, throwing ForesightException.</summary>
+        public static DangerStart FindPathApproach(TrajectoryPoint[] trajectory, int count, DVec3 point, float distance,
+                                                   float fromTime, float untilTime)
+        {
+            DangerStart d;
+            ForesightException.ThrowUnlessOk(TryFindPathApproach(trajectory, count, point, distance, fromTime, untilTime,
+                                                                 out d),
+                                             "FindPathApproach");
+            return d;
+        }
+
+        /// <summary>The projectile's closest approach to <paramref name="point"/> over
+        /// [fromTime, untilTime] [Units: s].</summary>
+        /// <returns>Ok, the trajectory's refusals or NonFiniteResult.</returns>
+        public static Status TryFindClosestPathApproach(TrajectoryPoint[] trajectory, int count, DVec3 point,
+                                                        float fromTime, float untilTime, out ClosestApproach approach)
+        {
+            approach = default(ClosestApproach);
+            int n = Count(trajectory, count);
+            return Native.fs_find_closest_path_approach(ref First(trajectory, n), new UIntPtr((uint)n), point, fromTime,
+                                                        untilTime, out approach);
+        }
+
+        /// <summary>TryFindClosestPathApproach, throwing ForesightException.</summary>
+        public static ClosestApproach FindClosestPathApproach(TrajectoryPoint[] trajectory, int count, DVec3 point,
+                                                              float fromTime, float untilTime)
+        {
+            ClosestApproach a;
+            ForesightException.ThrowUnlessOk(TryFindClosestPathApproach(trajectory, count, point, fromTime, untilTime,
+                                                                        out a),
+                                             "FindClosestPathApproach");
+            return a;
+        }
+
+        /// <summary>The C++ VehicleBody defaults (identity orientation, at rest, box (0.9, 0.7, 2.2)).</summary>
+        public static VehicleBody DefaultVehicleBody { get { return Native.fs_vehicle_body_default(); } }
+
+        /// <summary>The C++ CharacterBody defaults (a sphere of radius 0.4 m at rest at the origin).</summary>
+        public static CharacterBody DefaultCharacterBody { get { return Native.fs_character_body_default(); } }
+
+        /// <summary>The C++ ApproachSettings defaults (tolerance 1e-3 m, 65536 evaluations).</summary>
+        public static ApproachSettings DefaultApproachSettings { get { return Native.fs_approach_settings_default(); } }
+
+        /// <summary>The separation of the vehicle and the character at <paramref name="time"/>
+        /// [Units: s]: exact, &lt;= 0 when they overlap [Units: m].</summary>
+        /// <returns>Ok, InvalidSetting, NonFiniteInput, ZeroQuaternion, ZeroVector,
+        /// DegenerateShape, InvalidRadius, NegativeTime or NonFiniteResult.</returns>
+        public static Status TryComputeVehicleSeparation(VehicleBody vehicle, CharacterBody character, float time,
+                                                         out float separation)
+        {
+            separation = default(float);
+            return Native.fs_compute_vehicle_separation(ref vehicle, ref character, time, out separation);
+        }
+
+        /// <summary>TryComputeVehicleSeparation, throwing ForesightException.</summary>
+        public static float ComputeVehicleSeparation(VehicleBody vehicle, CharacterBody character, float time)
+        {
+            float d;
+            ForesightException.ThrowUnlessOk(TryComputeVehicleSeparation(vehicle, character, time, out d),
+                                             "ComputeVehicleSeparation");
+            return d;
+        }
+
+        /// <summary>The first time in [0, horizon] [Units: s] at which they touch (never later
+        /// than the true first overlap).</summary>
+        /// <returns>As TryComputeVehicleSeparation, InvalidStep (settings), TooManySteps.</returns>
+        public static Status TryFindVehicleContact(VehicleBody vehicle, CharacterBody character, float horizon,
+                                                   ApproachSettings settings, out VehicleContact contact)
+        {
+            contact = default(VehicleContact);
+            return Native.fs_find_vehicle_contact(ref vehicle, ref character, horizon, ref settings, out contact);
+        }
+
+        /// <summary>TryFindVehicleContact, throwing ForesightException.</summary>
+        public static VehicleContact FindVehicleContact(VehicleBody vehicle, CharacterBody character, float horizon,
+                                                        ApproachSettings settings)
+        {
+            VehicleContact c;
+            ForesightException.ThrowUnlessOk(TryFindVehicleContact(vehicle, character, horizon, settings, out c),
+                                             "FindVehicleContact");
+            return c;
+        }
+
+        /// <summary>The closest approach in [0, horizon] [Units: s].</summary>
+        /// <returns>As TryFindVehicleContact.</returns>
+        public static Status TryFindClosestVehicleApproach(VehicleBody vehicle, CharacterBody character, float horizon,
+                                                           ApproachSettings settings, out ClosestApproach approach)
+        {
+            approach = default(ClosestApproach);
+            return Native.fs_find_closest_vehicle_approach(ref vehicle, ref character, horizon, ref settings, out approach);
+        }
+
+        /// <summary>TryFindClosestVehicleApproach, throwing ForesightException.</summary>
+        public static ClosestApproach FindClosestVehicleApproach(VehicleBody vehicle, CharacterBody character,
+                                                                 float horizon, ApproachSettings settings)
+        {
+            ClosestApproach a;
+            ForesightException.ThrowUnlessOk(TryFindClosestVehicleApproach(vehicle, character, horizon, settings, out a),
+                                             "FindClosestVehicleApproach");
+            return a;
+        }
+    }
+
     /// <summary>Network dead reckoning: the DIS models and the batch extrapolation
     /// (dead_reckoning.h, replication.h).</summary>
     public static class DeadReckoning

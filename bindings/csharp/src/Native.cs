@@ -53,6 +53,19 @@ namespace Foresight
         [DllImport(Library)] internal static extern AimShot fs_aim_shot_default();
         [DllImport(Library)] internal static extern Status fs_aim_projectile(ref AimShot shot, ref AimTarget target, ref FiringSolution solutions, UIntPtr capacity, out UIntPtr count);
 
+        [DllImport(Library)] internal static extern Status fs_position_on_trajectory(ref TrajectoryPoint trajectory, UIntPtr count, float time, out DVec3 result);
+        [DllImport(Library)] internal static extern Status fs_compute_danger_zone(ref TrajectoryPoint trajectory, UIntPtr count, ref ProjectileDanger danger, out DangerZone result);
+        [DllImport(Library)] internal static extern Status fs_is_point_safe(ref TrajectoryPoint trajectory, UIntPtr count, ref ProjectileDanger danger, DVec3 point, float time, out int safe);
+        [DllImport(Library)] internal static extern Status fs_find_danger_start(ref TrajectoryPoint trajectory, UIntPtr count, ref ProjectileDanger danger, DVec3 point, out DangerStart result);
+        [DllImport(Library)] internal static extern Status fs_find_path_approach(ref TrajectoryPoint trajectory, UIntPtr count, DVec3 point, float distance, float fromTime, float untilTime, out DangerStart result);
+        [DllImport(Library)] internal static extern Status fs_find_closest_path_approach(ref TrajectoryPoint trajectory, UIntPtr count, DVec3 point, float fromTime, float untilTime, out ClosestApproach result);
+        [DllImport(Library)] internal static extern VehicleBody fs_vehicle_body_default();
+        [DllImport(Library)] internal static extern CharacterBody fs_character_body_default();
+        [DllImport(Library)] internal static extern ApproachSettings fs_approach_settings_default();
+        [DllImport(Library)] internal static extern Status fs_compute_vehicle_separation(ref VehicleBody vehicle, ref CharacterBody character, float time, out float separation);
+        [DllImport(Library)] internal static extern Status fs_find_vehicle_contact(ref VehicleBody vehicle, ref CharacterBody character, float horizon, ref ApproachSettings settings, out VehicleContact result);
+        [DllImport(Library)] internal static extern Status fs_find_closest_vehicle_approach(ref VehicleBody vehicle, ref CharacterBody character, float horizon, ref ApproachSettings settings, out ClosestApproach result);
+
         [DllImport(Library)] internal static extern IntPtr fs_dr_algorithm_name(DeadReckoningAlgorithm algorithm);
         [DllImport(Library)] internal static extern Status fs_dr_predict(ref DeadReckoningState state, float time, out DeadReckoningResult result);
         [DllImport(Library)] internal static extern Status fs_dr_predict_batch(ref DeadReckoningState states, ref double timestamps, UIntPtr count, double time, ref DeadReckoningResult results, out UIntPtr refused);

@@ -588,6 +588,120 @@ namespace Foresight
         [FieldOffset(44)] public float Reserved;
     }
 
+    // ---- Danger ----------------------------------------------------------------------------
+
+    /// <summary>A predicted grenade as a danger (fs_projectile_danger). 12 bytes: FuseTime 0,
+    /// BlastRadius 4, ContactRadius 8.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 12)]
+    public struct ProjectileDanger
+    {
+        /// <summary>When it explodes [Units: s] [Limit: >= 0].</summary>
+        [FieldOffset(0)] public float FuseTime;
+        /// <summary>Radius of the blast around its centre [Units: m] [Limit: >= 0].</summary>
+        [FieldOffset(4)] public float BlastRadius;
+        /// <summary>Before the fuse, a point this close to the projectile is unsafe; 0: nothing
+        /// is dangerous before the fuse [Units: m] [Limit: >= 0].</summary>
+        [FieldOffset(8)] public float ContactRadius;
+    }
+
+    /// <summary>Where and when a projectile explodes (fs_danger_zone). 32 bytes: Center 0,
+    /// Radius 24, Time 28.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 32)]
+    public struct DangerZone
+    {
+        /// <summary>The projectile's position at the fuse time [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Center;
+        /// <summary>The blast radius [Units: m].</summary>
+        [FieldOffset(24)] public float Radius;
+        /// <summary>The fuse time; dangerous from then on [Units: s].</summary>
+        [FieldOffset(28)] public float Time;
+    }
+
+    /// <summary>When something starts (fs_danger_start). 8 bytes: ever 0, Time 4.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 8)]
+    public struct DangerStart
+    {
+        [FieldOffset(0)] private int ever;
+        /// <summary>The earliest time [Units: s] (0 when it never happens).</summary>
+        [FieldOffset(4)] public float Time;
+
+        /// <summary>True when it happens, at Time.</summary>
+        public bool Ever { get { return ever != 0; } }
+    }
+
+    /// <summary>A closest approach (fs_closest_approach). 8 bytes: Distance 0, Time 4.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 8)]
+    public struct ClosestApproach
+    {
+        /// <summary>The smallest distance [Units: m]; for vehicles the separation (negative
+        /// when overlapping).</summary>
+        [FieldOffset(0)] public float Distance;
+        /// <summary>When it happens [Units: s].</summary>
+        [FieldOffset(4)] public float Time;
+    }
+
+    /// <summary>A vehicle as an oriented box on the exact path of PredictExact
+    /// (fs_vehicle_body). 104 bytes: State 0, Settings 64, HalfExtents 80, BoxCenter 92.
+    /// <see cref="Danger.DefaultVehicleBody"/> gives the defaults.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 104)]
+    public struct VehicleBody
+    {
+        /// <summary>At t = 0.</summary>
+        [FieldOffset(0)] public VehicleState State;
+        /// <summary>Frame of the angular velocity, forward axis.</summary>
+        [FieldOffset(64)] public VehicleSettings Settings;
+        /// <summary>The box, local axes [Units: m] [Limit: each > 0] (default (0.9, 0.7, 2.2)).</summary>
+        [FieldOffset(80)] public Vector3 HalfExtents;
+        /// <summary>The box's centre from State.Position, local axes [Units: m] (default 0).</summary>
+        [FieldOffset(92)] public Vector3 BoxCenter;
+    }
+
+    /// <summary>A character: a sphere, or a capsule of constant direction, moving as
+    /// p + v t + a t^2 / 2 (fs_character_body). 64 bytes: Position 0, Velocity 24,
+    /// Acceleration 36, Radius 48, HalfAxis 52.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 64)]
+    public struct CharacterBody
+    {
+        /// <summary>The centre at t = 0 [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Position;
+        /// <summary>[Units: m/s]</summary>
+        [FieldOffset(24)] public Vector3 Velocity;
+        /// <summary>[Units: m/s^2]</summary>
+        [FieldOffset(36)] public Vector3 Acceleration;
+        /// <summary>[Units: m] [Limit: >= 0] (default 0.4).</summary>
+        [FieldOffset(48)] public float Radius;
+        /// <summary>Half of the capsule's inner segment, world axes [Units: m]; zero for a sphere.</summary>
+        [FieldOffset(52)] public Vector3 HalfAxis;
+    }
+
+    /// <summary>Tolerance and work cap of the vehicle queries (fs_approach_settings). 8 bytes:
+    /// Tolerance 0, MaxEvaluations 4.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 8)]
+    public struct ApproachSettings
+    {
+        /// <summary>Distance tolerance [Units: m] [Limit: > 0, finite] (default 1e-3).</summary>
+        [FieldOffset(0)] public float Tolerance;
+        /// <summary>Separations computed per query at most [Limit: >= 1] (default 65536).</summary>
+        [FieldOffset(4)] public uint MaxEvaluations;
+    }
+
+    /// <summary>The first contact of a vehicle and a character (fs_vehicle_contact). 16 bytes:
+    /// contact 0, Time 4, Separation 8, Evaluations 12.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 16)]
+    public struct VehicleContact
+    {
+        [FieldOffset(0)] private int contact;
+        /// <summary>Time of first contact [Units: s], valid when Contact.</summary>
+        [FieldOffset(4)] public float Time;
+        /// <summary>The separation at Time (at the horizon if none) [Units: m].</summary>
+        [FieldOffset(8)] public float Separation;
+        /// <summary>Separations computed.</summary>
+        [FieldOffset(12)] public uint Evaluations;
+
+        /// <summary>True when they come within the tolerance before the horizon.</summary>
+        public bool Contact { get { return contact != 0; } }
+    }
+
     // ---- Dead reckoning --------------------------------------------------------------------
 
     /// <summary>The DIS (IEEE 1278.1) dead-reckoning models (FS_DR_*).</summary>
