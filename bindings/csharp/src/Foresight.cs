@@ -714,6 +714,77 @@ namespace Foresight
         }
     }
 
+    /// <summary>Throw planning (throw_planner.h): throws that put a grenade near a target when
+    /// its fuse ends, bank shots included. Allocates nothing.</summary>
+    public static class ThrowPlanner
+    {
+        // Never written: the library writes nothing through a capacity of 0.
+        private static ThrowPlan noPlans;
+        private static TrajectoryPoint noPoints;
+
+        /// <summary>The C++ ThrowPlanRequest defaults (its settings: Projectiles.DefaultSettings).</summary>
+        public static ThrowPlanRequest DefaultRequest { get { return Native.fs_throw_plan_request_default(); } }
+
+        /// <summary>Scratch points that let the planner record every first impact (0 for a
+        /// refused request).</summary>
+        public static int ScratchSize(ThrowPlanRequest request)
+        {
+            ulong n = (ulong)Native.fs_throw_plan_scratch_size(ref request);
+            return n > int.MaxValue ? int.MaxValue : (int)n;
+        }
+
+        /// <summary>Plans throws for <paramref name="request"/> in <paramref name="world"/> (null:
+        /// nothing). To draw a plan: Projectiles.Predict(request.Start, plan.LaunchVelocity,
+        /// request.FuseTime, request.Settings, world, ...).</summary>
+        /// <param name="request">Start, target, fuse, speeds, forward model and budget.</param>
+        /// <param name="world">What the grenade bounces off; null: nothing.</param>
+        /// <param name="plans">Receives up to min(MaxPlans, length) plans, closest first.</param>
+        /// <param name="scratch">Trajectory scratch of ScratchSize points to record every first
+        /// impact; may be shorter or null.</param>
+        /// <param name="result">What was done (default on a refusal).</param>
+        /// <returns>Ok (also when nothing was found), InvalidSetting, NonFiniteInput,
+        /// InvalidFuse, InvalidRadius, InvalidSpeed, InvalidIterations, InvalidStep, the
+        /// settings' refusals or TooManySteps.</returns>
+        public static Status TryPlan(ThrowPlanRequest request, World world, ThrowPlan[] plans, TrajectoryPoint[] scratch,
+                                     out ThrowPlanResult result)
+        {
+            int np = plans == null ? 0 : plans.Length, ns = scratch == null ? 0 : scratch.Length;
+            return Plan(ref request, world, ref FirstPlan(plans), np, ref FirstPoint(scratch), ns, out result);
+        }
+
+        private static ref ThrowPlan FirstPlan(ThrowPlan[] plans)
+        {
+            if (plans == null || plans.Length == 0) return ref noPlans;
+            return ref plans[0];
+        }
+
+        private static ref TrajectoryPoint FirstPoint(TrajectoryPoint[] points)
+        {
+            if (points == null || points.Length == 0) return ref noPoints;
+            return ref points[0];
+        }
+
+        private static Status Plan(ref ThrowPlanRequest request, World world, ref ThrowPlan plans, int np,
+                                   ref TrajectoryPoint scratch, int ns, out ThrowPlanResult result)
+        {
+            result = default(ThrowPlanResult);
+            if (world == null)
+                return Native.fs_plan_throw(ref request, IntPtr.Zero, ref plans, new UIntPtr((uint)np), ref scratch,
+                                            new UIntPtr((uint)ns), out result);
+            return Native.fs_plan_throw(ref request, world.Handle, ref plans, new UIntPtr((uint)np), ref scratch,
+                                        new UIntPtr((uint)ns), out result);
+        }
+
+        /// <summary>TryPlan, throwing ForesightException.</summary>
+        public static ThrowPlanResult Plan(ThrowPlanRequest request, World world, ThrowPlan[] plans,
+                                           TrajectoryPoint[] scratch = null)
+        {
+            ThrowPlanResult result;
+            ForesightException.ThrowUnlessOk(TryPlan(request, world, plans, scratch, out result), "PlanThrow");
+            return result;
+        }
+    }
+
     /// <summary>Network dead reckoning: the DIS models and the batch extrapolation
     /// (dead_reckoning.h, replication.h).</summary>
     public static class DeadReckoning

@@ -66,6 +66,11 @@ namespace Foresight
         [DllImport(Library)] internal static extern Status fs_find_vehicle_contact(ref VehicleBody vehicle, ref CharacterBody character, float horizon, ref ApproachSettings settings, out VehicleContact result);
         [DllImport(Library)] internal static extern Status fs_find_closest_vehicle_approach(ref VehicleBody vehicle, ref CharacterBody character, float horizon, ref ApproachSettings settings, out ClosestApproach result);
 
+        [DllImport(Library)] internal static extern ThrowPlanRequest fs_throw_plan_request_default();
+        [DllImport(Library)] internal static extern UIntPtr fs_throw_plan_scratch_size(ref ThrowPlanRequest request);
+        [DllImport(Library)] internal static extern Status fs_plan_throw(ref ThrowPlanRequest request, WorldHandle world, ref ThrowPlan plans, UIntPtr capacity, ref TrajectoryPoint scratch, UIntPtr scratchCapacity, out ThrowPlanResult result);
+        [DllImport(Library)] internal static extern Status fs_plan_throw(ref ThrowPlanRequest request, IntPtr noWorld, ref ThrowPlan plans, UIntPtr capacity, ref TrajectoryPoint scratch, UIntPtr scratchCapacity, out ThrowPlanResult result);
+
         [DllImport(Library)] internal static extern IntPtr fs_dr_algorithm_name(DeadReckoningAlgorithm algorithm);
         [DllImport(Library)] internal static extern Status fs_dr_predict(ref DeadReckoningState state, float time, out DeadReckoningResult result);
         [DllImport(Library)] internal static extern Status fs_dr_predict_batch(ref DeadReckoningState states, ref double timestamps, UIntPtr count, double time, ref DeadReckoningResult results, out UIntPtr refused);

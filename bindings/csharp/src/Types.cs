@@ -702,6 +702,122 @@ namespace Foresight
         public bool Contact { get { return contact != 0; } }
     }
 
+    // ---- Throw planning --------------------------------------------------------------------
+
+    /// <summary>Five floats (a C <c>float[5]</c> field). 20 bytes.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 20)]
+    public struct Float5
+    {
+        /// <summary>Element 0.</summary>
+        [FieldOffset(0)] public float E0;
+        /// <summary>Element 1.</summary>
+        [FieldOffset(4)] public float E1;
+        /// <summary>Element 2.</summary>
+        [FieldOffset(8)] public float E2;
+        /// <summary>Element 3.</summary>
+        [FieldOffset(12)] public float E3;
+        /// <summary>Element 4.</summary>
+        [FieldOffset(16)] public float E4;
+    }
+
+    /// <summary>Caps on the work of the throw planner (fs_throw_plan_budget). 56 bytes:
+    /// AzimuthSamples 0, ElevationSamples 4, SpeedSamples 8, Refinements 12,
+    /// RefinementPredictions 16, MaxPredictions 20, MaxTotalSteps 24, GridStep 32,
+    /// SeedLandingFractions 36.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 56)]
+    public struct ThrowPlanBudget
+    {
+        /// <summary>Grid: directions around the up axis (default 16).</summary>
+        [FieldOffset(0)] public uint AzimuthSamples;
+        /// <summary>Grid: elevations from -30 to +75 degrees (default 5).</summary>
+        [FieldOffset(4)] public uint ElevationSamples;
+        /// <summary>Grid: speeds (default 3).</summary>
+        [FieldOffset(8)] public uint SpeedSamples;
+        /// <summary>Candidates refined at most [Limit: 1 .. 32] (default 6).</summary>
+        [FieldOffset(12)] public uint Refinements;
+        /// <summary>Predictions per refinement at most (default 24).</summary>
+        [FieldOffset(16)] public uint RefinementPredictions;
+        /// <summary>Predictions per call at most (default 400).</summary>
+        [FieldOffset(20)] public uint MaxPredictions;
+        /// <summary>max_predictions x steps per prediction at most (default 2^24).</summary>
+        [FieldOffset(24)] public ulong MaxTotalSteps;
+        /// <summary>The grid's time step (Exact) [Units: s] [Limit: >= 0; 0: the request's] (default 0.1).</summary>
+        [FieldOffset(32)] public float GridStep;
+        /// <summary>Seeds: first landing at these fractions of the fuse time [Limit: (0, 1]; others skipped].</summary>
+        [FieldOffset(36)] public Float5 SeedLandingFractions;
+    }
+
+    /// <summary>What to plan (fs_throw_plan_request). 176 bytes: Start 0, Target 24,
+    /// AcceptanceRadius 48, FuseTime 52, MaxSpeed 56, MinSpeed 60, Settings 64, MaxPlans 112,
+    /// DistinctAngle 116, Budget 120. <see cref="ThrowPlanner.DefaultRequest"/> gives the defaults.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 176)]
+    public struct ThrowPlanRequest
+    {
+        /// <summary>Launch position (the sphere's centre) [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Start;
+        /// <summary>Where the grenade should be at the fuse time [Units: m].</summary>
+        [FieldOffset(24)] public DVec3 Target;
+        /// <summary>A plan ends within this of Target [Units: m] [Limit: > 0] (default 0.5).</summary>
+        [FieldOffset(48)] public float AcceptanceRadius;
+        /// <summary>Launch to blast [Units: s] [Limit: > 0] (default 3).</summary>
+        [FieldOffset(52)] public float FuseTime;
+        /// <summary>Launch speed cap [Units: m/s] [Limit: > 0] (default 20).</summary>
+        [FieldOffset(56)] public float MaxSpeed;
+        /// <summary>Lowest launch speed [Units: m/s] [Limit: 0 .. MaxSpeed] (default 0).</summary>
+        [FieldOffset(60)] public float MinSpeed;
+        /// <summary>The forward model (method, gravity, materials, radius, step, caps).</summary>
+        [FieldOffset(64)] public ProjectileSettings Settings;
+        /// <summary>Plans wanted [Limit: >= 1] (default 3).</summary>
+        [FieldOffset(112)] public uint MaxPlans;
+        /// <summary>Plans differ by this angle at least [Units: rad] [Limit: 0 .. pi] (default 0.1).</summary>
+        [FieldOffset(116)] public float DistinctAngle;
+        /// <summary>Caps on the work.</summary>
+        [FieldOffset(120)] public ThrowPlanBudget Budget;
+    }
+
+    /// <summary>One throw that works (fs_throw_plan). 88 bytes: LaunchVelocity 0, Distance 12,
+    /// FinalPosition 16, Bounces 40, at_rest 44, FirstImpactTime 48, FirstImpactNormal 52,
+    /// FirstImpactPosition 64.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 88)]
+    public struct ThrowPlan
+    {
+        /// <summary>[Units: m/s]; speed within [MinSpeed, MaxSpeed].</summary>
+        [FieldOffset(0)] public Vector3 LaunchVelocity;
+        /// <summary>From the final position to the target [Units: m].</summary>
+        [FieldOffset(12)] public float Distance;
+        /// <summary>Where the grenade is at the fuse time [Units: m].</summary>
+        [FieldOffset(16)] public DVec3 FinalPosition;
+        /// <summary>Bounces until the fuse time.</summary>
+        [FieldOffset(40)] public uint Bounces;
+        [FieldOffset(44)] private int atRest;
+        /// <summary>[Units: s]; below 0 when none (or not recorded: scratch too small).</summary>
+        [FieldOffset(48)] public float FirstImpactTime;
+        /// <summary>Unit normal of the first impact; zero when none.</summary>
+        [FieldOffset(52)] public Vector3 FirstImpactNormal;
+        /// <summary>[Units: m]; the start when none.</summary>
+        [FieldOffset(64)] public DVec3 FirstImpactPosition;
+
+        /// <summary>True when resting on a surface at the fuse time.</summary>
+        public bool AtRest { get { return atRest != 0; } }
+    }
+
+    /// <summary>What the throw planner did (fs_throw_plan_result). 32 bytes: PlanCount 0,
+    /// Predictions 8, ClosestDistance 12, ClosestVelocity 16, Reserved 28.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 32)]
+    public struct ThrowPlanResult
+    {
+        /// <summary>Plans written, closest first.</summary>
+        [FieldOffset(0)] public ulong PlanCount;
+        /// <summary>Forward predictions run.</summary>
+        [FieldOffset(8)] public uint Predictions;
+        /// <summary>Closest any tried throw came [Units: m]; float.MaxValue when none finished.</summary>
+        [FieldOffset(12)] public float ClosestDistance;
+        /// <summary>The launch velocity of that throw [Units: m/s].</summary>
+        [FieldOffset(16)] public Vector3 ClosestVelocity;
+        /// <summary>Padding: written as 0.</summary>
+        [FieldOffset(28)] public float Reserved;
+    }
+
     // ---- Dead reckoning --------------------------------------------------------------------
 
     /// <summary>The DIS (IEEE 1278.1) dead-reckoning models (FS_DR_*).</summary>

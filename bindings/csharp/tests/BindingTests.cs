@@ -82,7 +82,9 @@ internal static class BindingTests
         { "fs_projectile_danger", typeof(ProjectileDanger) }, { "fs_danger_zone", typeof(DangerZone) },
         { "fs_danger_start", typeof(DangerStart) }, { "fs_closest_approach", typeof(ClosestApproach) },
         { "fs_vehicle_body", typeof(VehicleBody) }, { "fs_character_body", typeof(CharacterBody) },
-        { "fs_approach_settings", typeof(ApproachSettings) }, { "fs_vehicle_contact", typeof(VehicleContact) }, { "fs_dr_receiver_counters", typeof(ReceiverCounters) },
+        { "fs_approach_settings", typeof(ApproachSettings) },
+        { "fs_throw_plan_budget", typeof(ThrowPlanBudget) }, { "fs_throw_plan_request", typeof(ThrowPlanRequest) },
+        { "fs_throw_plan", typeof(ThrowPlan) }, { "fs_throw_plan_result", typeof(ThrowPlanResult) }, { "fs_vehicle_contact", typeof(VehicleContact) }, { "fs_dr_receiver_counters", typeof(ReceiverCounters) },
     };
 
     private static readonly Dictionary<string, int[]> CFieldTypes = new Dictionary<string, int[]> {
@@ -97,15 +99,14 @@ internal static class BindingTests
     private static readonly HashSet<string> NotBoundStructs = new HashSet<string> {
         "fs_mesh_report", "fs_cast_hit", "fs_segment_cast", 
         
-         "fs_throw_plan_request", "fs_throw_plan_budget", "fs_throw_plan",
-        "fs_throw_plan_result",
+         
     };
     private static readonly HashSet<string> NotBoundFunctions = new HashSet<string> {
         "fs_world_add_mesh", "fs_embree_available", "fs_world_create_embree", "fs_world_load_mesh", "fs_world_commit",
         "fs_world_create_callback", 
         
         
-         "fs_throw_plan_request_default", "fs_throw_plan_scratch_size", "fs_plan_throw",
+         
     };
 
     // Every FS_API function of the header has a P/Invoke declaration (or is listed as not bound).
@@ -198,6 +199,13 @@ internal static class BindingTests
                 foreach (string fieldName in line.Substring(space + 1).Split(','))
                 {
                     string f = fieldName.Trim();
+                    int count = 1;  // a C array field "name[N]": N elements, one C# field of N times the size
+                    Match array = Regex.Match(f, @"^(\w+)\[(\d+)\]$");
+                    if (array.Success)
+                    {
+                        f = array.Groups[1].Value;
+                        count = int.Parse(array.Groups[2].Value);
+                    }
                     offset = (offset + sa[1] - 1) / sa[1] * sa[1];
                     maxAlign = Math.Max(maxAlign, sa[1]);
                     FieldInfo field = FindField(type, f);
@@ -210,9 +218,9 @@ internal static class BindingTests
                         if (documented.TryGetValue(f, out documentedOffset))
                             Check(documentedOffset == offset, name + "." + f + ": documented " + documentedOffset + ", C " + offset);
                         Type ft = field.FieldType.IsEnum ? Enum.GetUnderlyingType(field.FieldType) : field.FieldType;
-                        Check(Marshal.SizeOf(ft) == sa[0], name + "." + f + ": C# field size " + Marshal.SizeOf(ft));
+                        Check(Marshal.SizeOf(ft) == sa[0] * count, name + "." + f + ": C# field size " + Marshal.SizeOf(ft));
                     }
-                    offset += sa[0];
+                    offset += sa[0] * count;
                 }
             }
             offset = (offset + maxAlign - 1) / maxAlign * maxAlign;
@@ -700,6 +708,61 @@ internal static class BindingTests
                "FindClosestVehicleApproach(NaN)");
     }
 
+    // ---- Throw planning --------------------------------------------------------------------
+
+    private static void TestThrowPlanner()
+    {
+        ThrowPlanRequest request = ThrowPlanner.DefaultRequest;
+        Check(request.AcceptanceRadius == 0.5f && request.FuseTime == 3 && request.MaxSpeed == 20 && request.MaxPlans == 3,
+              "plan request defaults");
+        Check(request.Budget.AzimuthSamples == 16 && request.Budget.MaxPredictions == 400 &&
+              request.Settings.Method == ProjectileMethod.Exact, "plan budget defaults");
+        using (World world = new World())
+        {
+            world.AddPlane(Axes.Up, 0);
+            request.Start = new DVec3(0, 1.5, 0);
+            request.Target = new DVec3(0, 0, 12);
+            request.Settings.Radius = 0.05f;
+            request.Settings.Friction = 0.4f;
+            ThrowPlan[] plans = new ThrowPlan[4];
+            TrajectoryPoint[] scratch = new TrajectoryPoint[ThrowPlanner.ScratchSize(request)];
+            Check(scratch.Length > 0, "scratch size");
+            ThrowPlanResult result = ThrowPlanner.Plan(request, world, plans, scratch);
+            Check(result.PlanCount >= 1 && result.PlanCount <= 3 && result.Predictions > 0, "plans found: " + result.PlanCount);
+            // The forward model confirms each plan, bit for bit.
+            for (int i = 0; i < (int)result.PlanCount; ++i)
+            {
+                ProjectileResult drawn =
+                    Projectiles.Predict(request.Start, plans[i].LaunchVelocity, request.FuseTime, request.Settings, world);
+                Check(drawn.Position.Equals(plans[i].FinalPosition) && drawn.Bounces == plans[i].Bounces, "plan " + i + " drawn");
+                double dx = drawn.Position.X - 0, dy = drawn.Position.Y - 0, dz = drawn.Position.Z - 12;
+                double distance = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                Check(distance <= 0.5 + 1e-6, "plan " + i + " within the acceptance radius: " + distance);
+                Near(plans[i].Distance, distance, Tol, "plan distance");
+                Check(plans[i].LaunchVelocity.Length() <= 20 * (1 + 1e-6), "plan speed within MaxSpeed");
+            }
+            ThrowPlanResult none = ThrowPlanner.Plan(request, world, null);
+            Check(none.PlanCount == 0, "no plan buffer: none written");
+            ThrowPlanResult r;
+            ThrowPlanRequest bad = request;
+            bad.FuseTime = 0;
+            Is(ThrowPlanner.TryPlan(bad, world, plans, scratch, out r), Status.InvalidFuse, "fuse 0");
+            bad = request;
+            bad.AcceptanceRadius = 0;
+            Is(ThrowPlanner.TryPlan(bad, world, plans, scratch, out r), Status.InvalidRadius, "acceptance 0");
+            bad = request;
+            bad.MaxSpeed = 0;
+            Is(ThrowPlanner.TryPlan(bad, world, plans, scratch, out r), Status.InvalidSpeed, "max speed 0");
+            bad = request;
+            bad.Settings.Method = (ProjectileMethod)9;
+            Is(ThrowPlanner.TryPlan(bad, world, plans, scratch, out r), Status.InvalidSetting, "method 9");
+            Check(ThrowPlanner.ScratchSize(bad) == 0, "scratch size of a refused request");
+            bad = request;
+            bad.Target.X = double.NaN;
+            Throws(() => ThrowPlanner.Plan(bad, world, plans), Status.NonFiniteInput, "Plan(NaN target)");
+        }
+    }
+
     // ---- Aim -------------------------------------------------------------------------------
 
     private static void TestAim()
@@ -985,6 +1048,7 @@ internal static class BindingTests
         TestProjectiles();
         TestEngineProfiles();
         TestDanger();
+        TestThrowPlanner();
         TestAim();
         TestDeadReckoning();
         TestNoAllocation();
