@@ -174,17 +174,42 @@ namespace Foresight
         }
     }
 
-    /// <summary>Owns a native fs_world.</summary>
+    /// <summary>Owns a native fs_world (and a callback world's handler, freed after it).</summary>
     internal sealed class WorldHandle : SafeHandleZeroOrMinusOneIsInvalid
     {
+        /// <summary>A callback world's handler, pinned for the native world's life.</summary>
+        internal GCHandle Handler;
+
         /// <summary>An empty handle, filled by the marshaller.</summary>
         public WorldHandle() : base(true) {}
 
         protected override bool ReleaseHandle()
         {
             Native.fs_world_destroy(handle);
+            if (Handler.IsAllocated) Handler.Free();
             return true;
         }
+    }
+
+    /// <summary>A game's own ray or sphere cast answering a callback world (its physics
+    /// engine's: Unity's Physics.SphereCast, Godot's PhysicsDirectSpaceState). Return true and
+    /// fill <paramref name="hit"/> on a hit, false when the cast hits nothing. Report the closest
+    /// surface the segment enters (moving against its normal); a segment that starts on a
+    /// surface and moves into it hits at fraction 0. Called on the predicting thread, about once
+    /// per step. An exception is caught and reported as an invalid hit (the prediction returns
+    /// InvalidCallbackHit).</summary>
+    public delegate bool CastHandler(SegmentCast cast, ref CastHit hit);
+
+    /// <summary>Marks a static method that native code calls (Unity's IL2CPP needs it; the
+    /// attribute is recognised by its name).</summary>
+    [AttributeUsage(AttributeTargets.Method)]
+    internal sealed class MonoPInvokeCallbackAttribute : Attribute
+    {
+        /// <summary>The delegate type of the callback.</summary>
+        public MonoPInvokeCallbackAttribute(Type type) { Type = type; }
+
+        /// <summary>The delegate type of the callback.</summary>
+        public Type Type { get; private set; }
     }
 
     /// <summary>A static collision world (fs_world): planes, spheres, boxes, triangles. Dispose
@@ -202,11 +227,148 @@ namespace Foresight
             if (Handle.IsInvalid) throw new OutOfMemoryException("fs_world_create");
         }
 
+        private World(WorldHandle handle) { Handle = handle; }
+
+        /// <summary>True when this library was built with the Embree backend.</summary>
+        public static bool EmbreeAvailable { get { return Native.fs_embree_available() != 0; } }
+
+        /// <summary>A world for large levels: meshes in an Embree BVH plus the built-in shapes.
+        /// Add shapes and meshes, then call Commit once before predicting (and again after
+        /// adding more). Throws NotSupportedException when the library has no Embree backend,
+        /// OutOfMemoryException when the allocation fails.</summary>
+        public static World CreateEmbree()
+        {
+            if (!EmbreeAvailable) throw new NotSupportedException("foresight_c was built without the Embree backend");
+            WorldHandle h = Native.fs_world_create_embree();
+            if (h.IsInvalid) throw new OutOfMemoryException("fs_world_create_embree");
+            return new World(h);
+        }
+
+        // Native code calls this for every cast of a callback world; `context` is the GCHandle
+        // of the world's handler. Static (IL2CPP), and no exception crosses into native code.
+        private static readonly Native.NativeCast Trampoline = Cast;
+
+        [MonoPInvokeCallback(typeof(Native.NativeCast))]
+        private static int Cast(IntPtr context, ref SegmentCast cast, ref CastHit hit)
+        {
+            try
+            {
+                CastHandler handler = (CastHandler)GCHandle.FromIntPtr(context).Target;
+                return handler(cast, ref hit) ? 1 : 0;
+            }
+            catch (Exception)
+            {
+                hit.Fraction = float.NaN;  // an invalid hit: the prediction returns InvalidCallbackHit
+                return 1;
+            }
+        }
+
+        /// <summary>A world whose casts <paramref name="handler"/> answers: how a game lets its
+        /// own physics engine answer. Shapes cannot be added to it (InvalidSetting). Every hit is
+        /// checked: a prediction that receives an invalid one returns InvalidCallbackHit. The
+        /// handler stays alive until the world is disposed.</summary>
+        public static World CreateCallback(CastHandler handler)
+        {
+            if (handler == null) throw new ArgumentNullException("handler");
+            GCHandle pinned = GCHandle.Alloc(handler);
+            WorldHandle h = Native.fs_world_create_callback(Trampoline, GCHandle.ToIntPtr(pinned));
+            if (h.IsInvalid)
+            {
+                pinned.Free();
+                throw new OutOfMemoryException("fs_world_create_callback");
+            }
+            h.Handler = pinned;
+            return new World(h);
+        }
+
         /// <summary>True once disposed.</summary>
         public bool IsDisposed { get { return Handle.IsClosed; } }
 
         /// <summary>Frees the native world (idempotent).</summary>
         public void Dispose() { Handle.Dispose(); }
+
+        /// <summary>Adds an indexed triangle mesh (three indices per triangle, two-sided, no
+        /// material of its own). Brute force in a plain world (a few thousand triangles); in an
+        /// Embree world into its BVH (call Commit afterwards). The whole mesh is refused for a
+        /// non-finite vertex (NonFiniteInput), an index count not a multiple of 3, an index out
+        /// of range or no usable triangle (DegenerateShape); degenerate triangles are skipped
+        /// and counted.</summary>
+        /// <param name="vertices">[Units: m]</param>
+        /// <param name="indices">Three per triangle, into <paramref name="vertices"/>.</param>
+        /// <param name="report">The counts (default on a refusal).</param>
+        /// <returns>Ok, NullPointer (a null array), NonFiniteInput, DegenerateShape,
+        /// InvalidSetting (a callback world) or OutOfMemory.</returns>
+        public Status TryAddMesh(DVec3[] vertices, uint[] indices, out MeshReport report)
+        {
+            report = default(MeshReport);
+            if (vertices == null || indices == null) return Status.NullPointer;
+            if (vertices.Length == 0 || indices.Length == 0) return Status.DegenerateShape;
+            return Native.fs_world_add_mesh(Handle, ref vertices[0], new UIntPtr((uint)vertices.Length), ref indices[0],
+                                            new UIntPtr((uint)indices.Length), out report);
+        }
+
+        /// <summary>TryAddMesh, throwing ForesightException.</summary>
+        public MeshReport AddMesh(DVec3[] vertices, uint[] indices)
+        {
+            MeshReport report;
+            ForesightException.ThrowUnlessOk(TryAddMesh(vertices, indices, out report), "AddMesh");
+            return report;
+        }
+
+        private static string ErrorText(byte[] error)
+        {
+            int n = Array.IndexOf(error, (byte)0);
+            return System.Text.Encoding.UTF8.GetString(error, 0, n < 0 ? error.Length : n);
+        }
+
+        /// <summary>Loads a mesh file into an Embree world: Wavefront OBJ (.obj) or glTF 2.0
+        /// (.gltf, .glb), by extension. Allocates (a load-time call).</summary>
+        /// <param name="path">The file.</param>
+        /// <param name="report">The counts (default on a refusal).</param>
+        /// <param name="error">Why, on BackendFailed (the file named); else empty.</param>
+        /// <returns>Ok, NullPointer, InvalidSetting (not an Embree world, an unknown extension)
+        /// or BackendFailed.</returns>
+        public Status TryLoadMesh(string path, out MeshReport report, out string error)
+        {
+            report = default(MeshReport);
+            error = "";
+            if (path == null) return Status.NullPointer;
+            byte[] utf8 = System.Text.Encoding.UTF8.GetBytes(path + "\0");
+            byte[] text = new byte[512];
+            Status s = Native.fs_world_load_mesh(Handle, utf8, out report, text, new UIntPtr((uint)text.Length));
+            if (s != Status.Ok) error = ErrorText(text);
+            return s;
+        }
+
+        /// <summary>TryLoadMesh, throwing ForesightException (its message includes the reason).</summary>
+        public MeshReport LoadMesh(string path)
+        {
+            MeshReport report;
+            string error;
+            Status s = TryLoadMesh(path, out report, out error);
+            if (s != Status.Ok) throw new ForesightException(s, "LoadMesh(" + path + ")" + (error.Length > 0 ? ": " + error : ""));
+            return report;
+        }
+
+        /// <summary>Builds an Embree world's BVH; needed before predicting, after the last add.
+        /// Other worlds have nothing to build: Ok. Not thread-safe with predictions.</summary>
+        /// <param name="error">Why, on BackendFailed (the world then answers by brute force).</param>
+        /// <returns>Ok or BackendFailed.</returns>
+        public Status TryCommit(out string error)
+        {
+            byte[] text = new byte[512];
+            Status s = Native.fs_world_commit(Handle, text, new UIntPtr((uint)text.Length));
+            error = s == Status.Ok ? "" : ErrorText(text);
+            return s;
+        }
+
+        /// <summary>TryCommit, throwing ForesightException.</summary>
+        public void Commit()
+        {
+            string error;
+            Status s = TryCommit(out error);
+            if (s != Status.Ok) throw new ForesightException(s, "Commit: " + error);
+        }
 
         /// <summary>Adds a plane; nothing is added unless Ok.</summary>
         /// <returns>Ok, NonFiniteInput, ZeroVector, InvalidRestitution or OutOfMemory.</returns>

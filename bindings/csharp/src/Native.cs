@@ -38,6 +38,17 @@ namespace Foresight
         [DllImport(Library)] internal static extern Status fs_world_add_triangle(WorldHandle world, ref TriangleShape triangle, ref SurfaceMaterial material);
         [DllImport(Library)] internal static extern Status fs_world_add_triangle(WorldHandle world, ref TriangleShape triangle, IntPtr noMaterial);
 
+        [DllImport(Library)] internal static extern Status fs_world_add_mesh(WorldHandle world, ref DVec3 vertices, UIntPtr vertexCount, ref uint indices, UIntPtr indexCount, out MeshReport report);
+        [DllImport(Library)] internal static extern int fs_embree_available();
+        [DllImport(Library)] internal static extern WorldHandle fs_world_create_embree();
+        [DllImport(Library)] internal static extern Status fs_world_load_mesh(WorldHandle world, byte[] utf8Path, out MeshReport report, byte[] error, UIntPtr errorCapacity);
+        [DllImport(Library)] internal static extern Status fs_world_commit(WorldHandle world, byte[] error, UIntPtr errorCapacity);
+        [DllImport(Library)] internal static extern WorldHandle fs_world_create_callback(NativeCast cast, IntPtr context);
+
+        /// <summary>fs_cast_function.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        internal delegate int NativeCast(IntPtr context, ref SegmentCast cast, ref CastHit hit);
+
         [DllImport(Library)] internal static extern ProjectileSettings fs_projectile_settings_default();
         [DllImport(Library)] internal static extern UIntPtr fs_trajectory_capacity(float time, ref ProjectileSettings settings);
         [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, WorldHandle world, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);

@@ -255,6 +255,51 @@ namespace Foresight
         [FieldOffset(48)] public DVec3 C;
     }
 
+    /// <summary>What adding a mesh did (fs_mesh_report). 24 bytes: Triangles 0,
+    /// DegenerateTriangles 8, FirstDegenerateTriangle 16.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 24)]
+    public struct MeshReport
+    {
+        /// <summary>Triangles added.</summary>
+        [FieldOffset(0)] public ulong Triangles;
+        /// <summary>Triangles skipped (no area, or a sliver).</summary>
+        [FieldOffset(8)] public ulong DegenerateTriangles;
+        /// <summary>0-based index in the mesh of the first skipped one.</summary>
+        [FieldOffset(16)] public ulong FirstDegenerateTriangle;
+    }
+
+    /// <summary>A cast a callback world answers (fs_segment_cast): a segment, or a sphere swept
+    /// along it. 40 bytes: Origin 0, Displacement 24, Radius 36.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 40)]
+    public struct SegmentCast
+    {
+        /// <summary>Start, the sphere's centre [Units: m].</summary>
+        [FieldOffset(0)] public DVec3 Origin;
+        /// <summary>End minus start [Units: m]; never zero-length.</summary>
+        [FieldOffset(24)] public Vector3 Displacement;
+        /// <summary>Swept sphere radius [Units: m]; 0 casts a point (a ray).</summary>
+        [FieldOffset(36)] public float Radius;
+    }
+
+    /// <summary>The first hit of a SegmentCast, filled by a callback world's handler
+    /// (fs_cast_hit). Before the call: Fraction 1, Position the segment's end, Normal +Y,
+    /// Restitution and Friction -1 (no material of its own). 48 bytes: Fraction 0,
+    /// Restitution 4, Position 8, Normal 32, Friction 44.</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 48)]
+    public struct CastHit
+    {
+        /// <summary>Where along the segment [Limit: 0 .. 1]: Origin + Fraction * Displacement.</summary>
+        [FieldOffset(0)] public float Fraction;
+        /// <summary>The surface's own restitution [Limit: 0 .. 1, or negative: none].</summary>
+        [FieldOffset(4)] public float Restitution;
+        /// <summary>The sphere's centre at the hit [Units: m] [Limit: finite].</summary>
+        [FieldOffset(8)] public DVec3 Position;
+        /// <summary>Surface normal facing against the motion [Limit: non-zero, finite].</summary>
+        [FieldOffset(32)] public Vector3 Normal;
+        /// <summary>The surface's own friction [Limit: >= 0, or negative: none].</summary>
+        [FieldOffset(44)] public float Friction;
+    }
+
     // ---- Projectiles -----------------------------------------------------------------------
 
     /// <summary>The projectile integrators (FS_METHOD_*).</summary>
