@@ -25,10 +25,12 @@
 /// uses its trajectory buffer as scratch space). A NULL
 /// pointer where one is required gives FS_STATUS_NULL_POINTER; an int32_t enumeration field
 /// outside its constants gives FS_STATUS_INVALID_SETTING (fs_dr_state::algorithm: as in C++,
-/// FS_STATUS_INVALID_ALGORITHM). Nothing throws, nothing aborts. Only fs_world_create, the
-/// fs_world_add_* functions and fs_dr_receiver_create allocate. Every function is safe to call
-/// from several threads at once, except that a world must not be changed (add, destroy) while
-/// another thread uses it, and a receiver is used by one thread at a time.
+/// FS_STATUS_INVALID_ALGORITHM). Nothing throws, nothing aborts. Only the fs_world_create*
+/// functions, fs_world_add_*, fs_world_load_mesh, fs_world_commit, fs_dr_receiver_create and
+/// (the first time on a thread for a trajectory size) the danger functions allocate. Every
+/// function is safe to call from several threads at once, except that a world must not be
+/// changed (add, destroy) while another thread uses it, and a receiver is used by one thread at
+/// a time.
 
 #include <stddef.h>
 #include <stdint.h>
