@@ -32,7 +32,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     chromium
     godot3-server libbox2d-dev
-    python3 python3-pip python3-venv python3-pybind11 pybind11-dev python3-numpy python3-pytest
+    python3 python3-dev python3-pip python3-venv python3-pybind11 pybind11-dev python3-numpy python3-pytest
     mono-devel emscripten
 )
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi

@@ -248,7 +248,7 @@ private:
         const CollisionWorld* world = mWorld;
         mWorld = &planeWorld;
         mCoastPositions[0] = mPosition;
-        std::uint64_t taken = 0;
+        std::size_t taken = 0;  // size_t: indexes mCoastPositions (32 bits on wasm32)
         double travel = 0.0;
         bool sunk = false;
         outcome = StepOutcome::Next;
@@ -350,12 +350,13 @@ private:
             --mCoastWait;
             return 0;
         }
-        const std::uint64_t n = std::min<std::uint64_t>(mCoastSteps, steps - k + 1);
+        // size_t: indexes mCoastPositions (32 bits on wasm32); at most kMaxCoastSteps.
+        const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(mCoastSteps, steps - k + 1));
         if (n < 2) return 0;
         const double dt = mRec.dt;
         DVec3 position = mPosition, velocity = mVelocity;
         mCoastPositions[0] = position;
-        for (std::uint64_t j = 1; j <= n; ++j) {
+        for (std::size_t j = 1; j <= n; ++j) {
             DVec3 v, freeMotion;
             freeStep(false, velocity, v, freeMotion);
             if (glm::length(v) * dt > mProfile.maxStepDistance) return 0;  // Box2D's limit acts
@@ -372,7 +373,7 @@ private:
             if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
             return 0;
         }
-        for (std::uint64_t j = 1; j <= n; ++j) {
+        for (std::size_t j = 1; j <= n; ++j) {
             spinDown();
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
@@ -1637,7 +1638,8 @@ private:
         const double cfmFactor = 1.0 / (1.0 + cfmCoefficient);
         const double maxCorrective = 3.0;         // normalized_max_corrective_velocity [m/s]
         const double maxSpin = 0.25 * M_PI / dt;  // at most 45 degrees of rotation per step
-        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        // Per unit mass; 0 when the sphere does not turn (rotation locked, or a point).
+        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
         DVec3 vel = v0;  // undamped: damping is applied after the sub-steps
         const DVec3 start = mPosition;
         DVec3 x = mPosition;
@@ -1943,7 +1945,9 @@ private:
             anchor[i] = start - (s.gap + mRadius) * s.normal;
             arm[i] = rotated(-mRadius * s.normal, turn);
         }
-        const double invInertia = inverseInertiaFactor() / (mRadius * mRadius);  // per unit mass
+        // Per unit mass; 0 when the sphere does not turn (rotation locked, or a point: radius 0
+        // would divide by zero).
+        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
         for (int iteration = 0; iteration < 2; ++iteration) {
             for (int i = 0; i < mCount; ++i) {
                 const Surface& s = mSurfaces[i];

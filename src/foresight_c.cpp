@@ -282,7 +282,7 @@ namespace {
 // be undefined behaviour for such values.
 Real toReal(double x) {
     if constexpr (kDoublePrecision) {
-        return x;
+        return static_cast<Real>(x);  // the identity (a cast for the float branch's type check)
     } else {
         constexpr double kMax = std::numeric_limits<float>::max();
         if (x > kMax) return std::numeric_limits<float>::infinity();

@@ -310,7 +310,7 @@ private:
             return false;
         }
         const std::uint64_t n = mClearSteps;
-        std::uint64_t points = 1;
+        std::size_t points = 1;  // size_t: indexes mClearPath (32 bits on wasm32)
         mClearPath[0] = p0;
         for (std::uint64_t j = 1; j <= n; ++j) {
             // run()'s grid points (the end time last).

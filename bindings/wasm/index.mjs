@@ -1,0 +1,761 @@
+// foresight for JavaScript: a thin layer over the C API (include/foresight/foresight_c.h)
+// compiled to WebAssembly (dist/foresight_core.mjs). Structs are written to and read from the
+// module's memory at the offsets foresight_c.h documents; nothing else is duplicated here.
+//
+// Units and axes are the library's: metres, seconds, radians; +Y up, +Z forward.
+
+import createForesightCore from './dist/foresight_core.mjs';
+
+/** The ABI version this layer was written for (FS_ABI_VERSION of foresight_c.h). */
+const ABI_VERSION = 1;
+
+/** fs_status values by name (foresight_c.h). */
+export const Status = Object.freeze({
+    OK: 0,
+    NON_FINITE_INPUT: 1,
+    NEGATIVE_TIME: 2,
+    INVALID_STEP: 3,
+    INVALID_ITERATIONS: 4,
+    INVALID_RESTITUTION: 5,
+    INVALID_FRICTION: 6,
+    INVALID_RADIUS: 7,
+    ZERO_QUATERNION: 8,
+    ZERO_VECTOR: 9,
+    DEGENERATE_SHAPE: 10,
+    TOO_MANY_STEPS: 11,
+    TOO_MANY_EVENTS: 12,
+    NON_FINITE_RESULT: 13,
+    INVALID_ALGORITHM: 14,
+    INVALID_SPEED: 15,
+    INVALID_FUSE: 16,
+    INVALID_SETTING: 17,
+    TIME_WENT_BACKWARDS: 18,
+    NO_UPDATE: 19,
+    OUT_OF_RANGE: 20,
+    BUFFER_TOO_SMALL: 1000,
+    NULL_POINTER: 1001,
+    OUT_OF_MEMORY: 1002,
+});
+const statusNames = new Map(Object.entries(Status).map(([name, value]) => [value, name]));
+
+/** Projectile integrators by name (FS_METHOD_*). */
+export const Method = Object.freeze({ exact: 0, stepped: 1, engine: 2 });
+/** Physics engines FS_METHOD_ENGINE follows, by name (FS_ENGINE_*). */
+export const Engine = Object.freeze({
+    custom: 0, jolt: 1, physx: 2, rapier: 3, bullet: 4, godot3: 5, godot3Bullet: 6, box2d: 7,
+});
+/** What a trajectory point marks (FS_EVENT_*), the values of `trajectory.event`. */
+export const TrajectoryEvent = Object.freeze({ start: 0, step: 1, bounce: 2, rest: 3, hit: 4, end: 5 });
+/** The axes of a vehicle's angular velocity (FS_FRAME_*). */
+export const Frame = Object.freeze({ body: 0, world: 1 });
+/** What fixes an aimed shot's launch velocity (FS_AIM_*). */
+export const AimConstraint = Object.freeze({ speed: 0, horizontalSpeed: 1, apexAboveStart: 2, apexAboveTarget: 3 });
+
+/**
+ * What the library refused, thrown by every call that gets a status other than OK. `message` is
+ * "<function>: <the library's status message>", e.g. "predictLinear: time must be >= 0".
+ */
+export class ForesightError extends Error {
+    /**
+     * @param {string} operation  the function that failed.
+     * @param {number} status     the fs_status value.
+     * @param {string} text       the library's description of it.
+     */
+    constructor(operation, status, text) {
+        super(`${operation}: ${text}`);
+        this.name = 'ForesightError';
+        /** The fs_status value (see Status). */
+        this.status = status;
+        /** Its name in Status, e.g. "NEGATIVE_TIME". */
+        this.code = statusNames.get(status) ?? 'UNKNOWN';
+    }
+}
+
+// ---- Reading the caller's values --------------------------------------------------------------
+
+function num(value, name) {
+    if (typeof value !== 'number') throw new TypeError(`${name} must be a number, got ${typeof value}`);
+    return value;
+}
+
+function vec(v, name) {
+    if (v !== null && typeof v === 'object') {
+        if (typeof v.length === 'number') {
+            if (v.length === 3) return [num(v[0], `${name}[0]`), num(v[1], `${name}[1]`), num(v[2], `${name}[2]`)];
+        } else if ('x' in v) {
+            return [num(v.x, `${name}.x`), num(v.y, `${name}.y`), num(v.z, `${name}.z`)];
+        }
+    }
+    throw new TypeError(`${name} must be {x, y, z} or [x, y, z]`);
+}
+
+function quat(q, name) {
+    if (q !== null && typeof q === 'object') {
+        if (typeof q.length === 'number') {
+            if (q.length === 4) {
+                return [num(q[0], `${name}[0]`), num(q[1], `${name}[1]`), num(q[2], `${name}[2]`), num(q[3], `${name}[3]`)];
+            }
+        } else if ('w' in q) {
+            return [num(q.x, `${name}.x`), num(q.y, `${name}.y`), num(q.z, `${name}.z`), num(q.w, `${name}.w`)];
+        }
+    }
+    throw new TypeError(`${name} must be {x, y, z, w} or [x, y, z, w]`);
+}
+
+function uint32(value, name) {
+    if (value === Infinity) return 0xffffffff;
+    if (!Number.isInteger(value) || value < 0 || value > 0xffffffff) {
+        throw new RangeError(`${name} must be an integer in 0 .. 4294967295 (or Infinity)`);
+    }
+    return value;
+}
+
+function int32(value, name) {
+    if (!Number.isInteger(value) || value < -0x80000000 || value > 0x7fffffff) {
+        throw new RangeError(`${name} must be a 32-bit integer`);
+    }
+    return value;
+}
+
+function enumValue(table, value, name) {
+    if (typeof value === 'number') return int32(value, name);
+    if (typeof value === 'string' && Object.hasOwn(table, value)) return table[value];
+    throw new RangeError(`${name} must be one of ${Object.keys(table).join(', ')}`);
+}
+
+function checkKeys(object, allowed, name) {
+    if (object === undefined || object === null) return {};
+    if (typeof object !== 'object') throw new TypeError(`${name} must be an object`);
+    for (const key of Object.keys(object)) {
+        if (!allowed.includes(key)) throw new TypeError(`${name}: unknown field "${key}" (known: ${allowed.join(', ')})`);
+    }
+    return object;
+}
+
+const xyz = (a) => ({ x: a[0], y: a[1], z: a[2] });
+
+const projectileKeys = ['method', 'engine', 'gravity', 'step', 'restitution', 'friction', 'radius', 'maxBounces',
+    'maxSteps', 'maxEvents'];
+const shotKeys = ['from', 'constraint', 'speed', 'apexHeight', 'gravity', 'maxTime'];
+
+/**
+ * Loads the WebAssembly module (embedded in dist/foresight_core.mjs: nothing is fetched) and
+ * returns the API. Each call makes an instance with its own memory.
+ * @returns {Promise<Foresight>}
+ */
+export async function loadForesight() {
+    const core = await createForesightCore();
+    return new Foresight(core);
+}
+export default loadForesight;
+
+// Offsets in the scratch block (bytes; every struct at a multiple of 8).
+const IN_A = 0; // first input struct (up to 80 bytes)
+const IN_B = 128; // second input struct
+const OUT = 256; // output struct (up to 80 bytes)
+const MATERIAL = 384; // fs_material, then a size_t count at +16
+const COUNT = 400;
+const SOLUTIONS = 448; // FS_MAX_FIRING_SOLUTIONS fs_firing_solution (4 * 48 bytes)
+const POSITION = 640; // fs_dvec3
+const VELOCITY = 672; // fs_vec3
+const SCRATCH_BYTES = 1024;
+const POINT_BYTES = 56; // sizeof(fs_trajectory_point)
+const MAX_SOLUTIONS = 4;
+
+/**
+ * The API on one WebAssembly instance (made by loadForesight). Every function takes plain
+ * objects or arrays and returns plain objects; a refused input throws ForesightError.
+ */
+export class Foresight {
+    #core;
+    #memory;
+    #buffer = null;
+    #f64;
+    #f32;
+    #i32;
+    #u32;
+    #scratch;
+    #points = 0; // trajectory buffer
+    #capacity = 0; // its size in points
+    #messages = new Map();
+    #projectileDefaults;
+    #shotDefaults;
+    #vehicleDefaults;
+
+    /** @param {object} core  the emscripten module (use loadForesight). */
+    constructor(core) {
+        this.#core = core;
+        this.#memory = core.asm.memory;
+        if (core._fs_abi_version() !== ABI_VERSION) {
+            throw new Error(`foresight: the module has ABI ${core._fs_abi_version()}, this layer ${ABI_VERSION}`);
+        }
+        this.#scratch = core._malloc(SCRATCH_BYTES);
+        this.#reserve(256);
+        const s = this.#scratch;
+        core._fsw_projectile_settings_default(s + IN_A);
+        this.#projectileDefaults = Object.freeze(this.#readProjectileSettings(s + IN_A));
+        core._fsw_aim_shot_default(s + IN_A);
+        this.#views();
+        const b = (s + IN_A) >> 2;
+        this.#shotDefaults = Object.freeze({
+            constraint: this.#i32[b + 6], speed: this.#f32[b + 7], apexHeight: this.#f32[b + 8],
+            gravity: Object.freeze(xyz(this.#f32.subarray(b + 9, b + 12))), maxTime: this.#f32[b + 12],
+        });
+        core._fsw_vehicle_settings_default(s + IN_A);
+        this.#views();
+        this.#vehicleDefaults = Object.freeze({
+            frame: this.#i32[b], forward: Object.freeze(xyz(this.#f32.subarray(b + 1, b + 4))),
+        });
+    }
+
+    // The typed arrays on the module's memory (new ones after it grew).
+    #views() {
+        const buffer = this.#memory.buffer;
+        if (buffer !== this.#buffer) {
+            this.#buffer = buffer;
+            this.#f64 = new Float64Array(buffer);
+            this.#f32 = new Float32Array(buffer);
+            this.#i32 = new Int32Array(buffer);
+            this.#u32 = new Uint32Array(buffer);
+        }
+    }
+
+    #reserve(points) {
+        if (points <= this.#capacity) return;
+        if (this.#points !== 0) this.#core._free(this.#points);
+        this.#points = this.#core._malloc(points * POINT_BYTES);
+        if (this.#points === 0) {
+            this.#capacity = 0;
+            throw new ForesightError('predictProjectile', Status.OUT_OF_MEMORY, 'out of memory');
+        }
+        this.#capacity = points;
+    }
+
+    /**
+     * The library's description of a status value, e.g. "time must be >= 0".
+     * @param {number} status  an fs_status value.
+     * @returns {string}
+     */
+    statusMessage(status) {
+        let text = this.#messages.get(status);
+        if (text === undefined) {
+            const pointer = this.#core._fs_status_message(status);
+            this.#views();
+            const bytes = new Uint8Array(this.#buffer, pointer);
+            text = new TextDecoder().decode(bytes.subarray(0, bytes.indexOf(0)));
+            this.#messages.set(status, text);
+        }
+        return text;
+    }
+
+    #check(status, operation) {
+        if (status !== Status.OK) throw new ForesightError(operation, status, this.statusMessage(status));
+    }
+
+    /** The C API's ABI version (FS_ABI_VERSION). @returns {number} */
+    abiVersion() {
+        return this.#core._fs_abi_version();
+    }
+
+    /**
+     * The end of the module's heap [bytes]: constant across calls that free what they allocate
+     * (a diagnostic for leak checks).
+     * @returns {number}
+     */
+    heapEnd() {
+        return this.#core._fsw_heap_end() >>> 0;
+    }
+
+    // ---- Characters ---------------------------------------------------------------------------
+
+    #writePointState(at, state, name) {
+        if (state === null || typeof state !== 'object') throw new TypeError(`${name} must be {position, velocity}`);
+        const p = vec(state.position, `${name}.position`);
+        const v = vec(state.velocity, `${name}.velocity`);
+        this.#views();
+        const d = at >> 3, f = at >> 2;
+        this.#f64[d] = p[0]; this.#f64[d + 1] = p[1]; this.#f64[d + 2] = p[2];
+        this.#f32[f + 6] = v[0]; this.#f32[f + 7] = v[1]; this.#f32[f + 8] = v[2];
+        this.#f32[f + 9] = 0;
+    }
+
+    #readPointState(at) {
+        this.#views();
+        const d = at >> 3, f = at >> 2;
+        return {
+            position: xyz(this.#f64.subarray(d, d + 3)),
+            velocity: xyz(this.#f32.subarray(f + 6, f + 9)),
+        };
+    }
+
+    /**
+     * Constant velocity: position `p + v t`, velocity unchanged.
+     * @param {{position: Vec3Like, velocity: Vec3Like}} state  position [m], velocity [m/s].
+     * @param {number} time  horizon [s], >= 0 (rounded to float).
+     * @returns {{position: Vec3, velocity: Vec3}}
+     */
+    predictLinear(state, time) {
+        const s = this.#scratch;
+        this.#writePointState(s + IN_A, state, 'state');
+        this.#check(this.#core._fs_predict_linear(s + IN_A, num(time, 'time'), s + OUT), 'predictLinear');
+        return this.#readPointState(s + OUT);
+    }
+
+    /**
+     * Constant acceleration: position `p + v t + a t^2 / 2`, velocity `v + a t`.
+     * @param {{position: Vec3Like, velocity: Vec3Like}} state  position [m], velocity [m/s].
+     * @param {Vec3Like} acceleration  [m/s^2], world axes.
+     * @param {number} time  horizon [s], >= 0.
+     * @returns {{position: Vec3, velocity: Vec3}}
+     */
+    predictAccelerated(state, acceleration, time) {
+        const s = this.#scratch;
+        this.#writePointState(s + IN_A, state, 'state');
+        const a = vec(acceleration, 'acceleration');
+        const f = (s + IN_B) >> 2;
+        this.#f32[f] = a[0]; this.#f32[f + 1] = a[1]; this.#f32[f + 2] = a[2];
+        this.#check(this.#core._fsw_predict_accelerated(s + IN_A, s + IN_B, num(time, 'time'), s + OUT),
+            'predictAccelerated');
+        return this.#readPointState(s + OUT);
+    }
+
+    // ---- Vehicles -----------------------------------------------------------------------------
+
+    #writeVehicle(at, state, settings) {
+        if (state === null || typeof state !== 'object') {
+            throw new TypeError('state must be {position, velocity, orientation, angularVelocity}');
+        }
+        const p = vec(state.position, 'state.position');
+        const v = vec(state.velocity, 'state.velocity');
+        const q = quat(state.orientation ?? [0, 0, 0, 1], 'state.orientation');
+        const w = vec(state.angularVelocity, 'state.angularVelocity');
+        const options = checkKeys(settings, ['frame', 'forward'], 'settings');
+        const frame = enumValue(Frame, options.frame ?? this.#vehicleDefaults.frame, 'settings.frame');
+        const forward = vec(options.forward ?? this.#vehicleDefaults.forward, 'settings.forward');
+        this.#views();
+        const d = at >> 3, f = at >> 2;
+        this.#f64[d] = p[0]; this.#f64[d + 1] = p[1]; this.#f64[d + 2] = p[2];
+        this.#f32.set(v, f + 6);
+        this.#f32.set(q, f + 9);
+        this.#f32.set(w, f + 13);
+        const g = (this.#scratch + IN_B) >> 2;
+        this.#i32[g] = frame;
+        this.#f32.set(forward, g + 1);
+    }
+
+    #readVehicle(at) {
+        this.#views();
+        const d = at >> 3, f = at >> 2, q = this.#f32;
+        return {
+            position: xyz(this.#f64.subarray(d, d + 3)),
+            velocity: xyz(q.subarray(f + 6, f + 9)),
+            orientation: { x: q[f + 9], y: q[f + 10], z: q[f + 11], w: q[f + 12] },
+            angularVelocity: xyz(q.subarray(f + 13, f + 16)),
+        };
+    }
+
+    /**
+     * The reference article's vehicle loop: `iterations` equal steps of moving, turning and
+     * putting the velocity on the new forward axis.
+     * @param {VehicleStateLike} state  position [m], velocity [m/s], orientation (local-to-world
+     *     quaternion, default identity), angularVelocity [rad/s] in the settings' frame.
+     * @param {number} time  [s], >= 0.
+     * @param {number} [iterations=4]  1 .. 1048576.
+     * @param {VehicleSettings} [settings]  frame ('body' default, or 'world') and forward axis (+Z).
+     * @returns {VehicleState}
+     */
+    predictVehicleIterative(state, time, iterations = 4, settings = undefined) {
+        const s = this.#scratch;
+        this.#writeVehicle(s + IN_A, state, settings);
+        this.#check(this.#core._fs_predict_vehicle_iterative(s + IN_A, num(time, 'time'),
+            int32(iterations, 'iterations'), s + IN_B, s + OUT), 'predictVehicleIterative');
+        return this.#readVehicle(s + OUT);
+    }
+
+    /**
+     * The exact arc of the same motion: a circle of radius |v| / |w| when the angular velocity is
+     * perpendicular to the forward axis.
+     * @param {VehicleStateLike} state  as for predictVehicleIterative.
+     * @param {number} time  [s], >= 0.
+     * @param {VehicleSettings} [settings]  frame and forward axis.
+     * @returns {VehicleState}
+     */
+    predictVehicleExact(state, time, settings = undefined) {
+        const s = this.#scratch;
+        this.#writeVehicle(s + IN_A, state, settings);
+        this.#check(this.#core._fs_predict_vehicle_exact(s + IN_A, num(time, 'time'), s + IN_B, s + OUT),
+            'predictVehicleExact');
+        return this.#readVehicle(s + OUT);
+    }
+
+    // ---- Worlds -------------------------------------------------------------------------------
+
+    /**
+     * A new, empty static collision world (planes, spheres, boxes, triangles). Free it with
+     * `delete()` (or `dispose()`, or a `using` declaration): its memory is the module's, which
+     * JavaScript's garbage collector does not see.
+     * @returns {World}
+     */
+    createWorld() {
+        const pointer = this.#core._fs_world_create();
+        if (pointer === 0) throw new ForesightError('createWorld', Status.OUT_OF_MEMORY, 'out of memory');
+        return new World(this, pointer, this.#core);
+    }
+
+    /** @internal writes a material (or none) and returns its address or 0. */
+    _material(material) {
+        if (material === undefined || material === null) return 0;
+        const m = checkKeys(material, ['restitution', 'friction'], 'material');
+        const at = this.#scratch + MATERIAL;
+        this.#views();
+        this.#f32[at >> 2] = num(m.restitution ?? -1, 'material.restitution');
+        this.#f32[(at >> 2) + 1] = num(m.friction ?? -1, 'material.friction');
+        return at;
+    }
+
+    /** @internal the scratch block, typed arrays fresh. */
+    _scratch() {
+        this.#views();
+        return { at: this.#scratch + IN_A, f64: this.#f64, f32: this.#f32 };
+    }
+
+    /** @internal */
+    _check(status, operation) {
+        this.#check(status, operation);
+    }
+
+    // ---- Projectiles --------------------------------------------------------------------------
+
+    /**
+     * The library's default projectile settings (the reference article's): method 'exact',
+     * gravity (0, -9.81, 0) m/s^2, step 0.02 s, restitution 0.5, friction 0, radius 0 m, no bounce
+     * limit (maxBounces 4294967295), maxSteps 1048576, maxEvents 65536, engine 'jolt'.
+     * @returns {ProjectileSettings}
+     */
+    projectileSettings() {
+        return { ...this.#projectileDefaults, gravity: { ...this.#projectileDefaults.gravity } };
+    }
+
+    #readProjectileSettings(at) {
+        this.#views();
+        const f = at >> 2;
+        const methodName = Object.keys(Method).find((k) => Method[k] === this.#i32[f]);
+        const engineName = Object.keys(Engine).find((k) => Engine[k] === this.#i32[f + 11]);
+        return {
+            method: methodName, gravity: xyz(this.#f32.subarray(f + 1, f + 4)), step: this.#f32[f + 4],
+            restitution: this.#f32[f + 5], friction: this.#f32[f + 6], radius: this.#f32[f + 7],
+            maxBounces: this.#u32[f + 8], maxSteps: this.#u32[f + 9], maxEvents: this.#u32[f + 10],
+            engine: engineName,
+        };
+    }
+
+    #writeProjectileSettings(at, settings) {
+        const o = checkKeys(settings, projectileKeys, 'settings');
+        const d = this.#projectileDefaults;
+        const method = enumValue(Method, o.method ?? d.method, 'settings.method');
+        const engine = enumValue(Engine, o.engine ?? d.engine, 'settings.engine');
+        const gravity = vec(o.gravity ?? d.gravity, 'settings.gravity');
+        const step = num(o.step ?? d.step, 'settings.step');
+        const restitution = num(o.restitution ?? d.restitution, 'settings.restitution');
+        const friction = num(o.friction ?? d.friction, 'settings.friction');
+        const radius = num(o.radius ?? d.radius, 'settings.radius');
+        const maxBounces = uint32(o.maxBounces ?? d.maxBounces, 'settings.maxBounces');
+        const maxSteps = uint32(o.maxSteps ?? d.maxSteps, 'settings.maxSteps');
+        const maxEvents = uint32(o.maxEvents ?? d.maxEvents, 'settings.maxEvents');
+        this.#views();
+        const f = at >> 2;
+        this.#i32[f] = method;
+        this.#f32.set(gravity, f + 1);
+        this.#f32[f + 4] = step;
+        this.#f32[f + 5] = restitution;
+        this.#f32[f + 6] = friction;
+        this.#f32[f + 7] = radius;
+        this.#u32[f + 8] = maxBounces;
+        this.#u32[f + 9] = maxSteps;
+        this.#u32[f + 10] = maxEvents;
+        this.#i32[f + 11] = engine;
+    }
+
+    /**
+     * Predicts a projectile (a grenade, a thrown or fired object) under constant gravity, bouncing
+     * off `options.world`.
+     * @param {Vec3Like} position  start [m] (the sphere's centre when settings.radius > 0).
+     * @param {Vec3Like} velocity  start velocity [m/s], at most 1e6 m/s.
+     * @param {number} time  prediction time, e.g. a fuse [s], >= 0.
+     * @param {ProjectileOptions} [options]  settings (fields of ProjectileSettings, defaults for
+     *     the missing ones), world (null: free flight), trajectory (default true: return the points).
+     * @returns {ProjectileResult}
+     */
+    predictProjectile(position, velocity, time, options = {}) {
+        const o = checkKeys(options, ['settings', 'world', 'trajectory'], 'options');
+        const p = vec(position, 'position');
+        const v = vec(velocity, 'velocity');
+        const t = num(time, 'time');
+        const world = o.world === undefined || o.world === null ? 0 : worldPointer(o.world, this);
+        const wantTrajectory = o.trajectory ?? true;
+        const s = this.#scratch;
+        this.#writeProjectileSettings(s + IN_B, o.settings);
+        const d = (s + POSITION) >> 3, f = (s + VELOCITY) >> 2;
+        this.#f64[d] = p[0]; this.#f64[d + 1] = p[1]; this.#f64[d + 2] = p[2];
+        this.#f32[f] = v[0]; this.#f32[f + 1] = v[1]; this.#f32[f + 2] = v[2];
+        const core = this.#core;
+        const capacity = wantTrajectory ? this.#capacity : 0;
+        let status = core._fsw_predict_projectile(s + POSITION, s + VELOCITY, t, s + IN_B, world,
+            capacity ? this.#points : 0, capacity, s + OUT);
+        if (status === Status.BUFFER_TOO_SMALL) {
+            this.#views();
+            const o32 = (s + OUT) >> 2;
+            const needed = this.#u32[o32 + 18] + this.#u32[o32 + 19] * 2 ** 32;
+            this.#reserve(Math.max(needed, 2 * this.#capacity));
+            status = core._fsw_predict_projectile(s + POSITION, s + VELOCITY, t, s + IN_B, world, this.#points,
+                this.#capacity, s + OUT);
+        }
+        this.#check(status, 'predictProjectile');
+        this.#views();
+        const r = (s + OUT) >> 2, rd = (s + OUT) >> 3, q = this.#f32, i = this.#i32;
+        const result = {
+            position: xyz(this.#f64.subarray(rd, rd + 3)),
+            velocity: xyz(q.subarray(r + 6, r + 9)),
+            time: q[r + 9],
+            bounces: this.#u32[r + 10],
+            atRest: i[r + 11] !== 0,
+            stoppedAtHit: i[r + 12] !== 0,
+            hitNormal: xyz(q.subarray(r + 13, r + 16)),
+            trajectory: null,
+        };
+        if (wantTrajectory) result.trajectory = this.#readTrajectory(this.#u32[r + 16]);
+        return result;
+    }
+
+    #readTrajectory(n) {
+        const trajectory = {
+            length: n,
+            time: new Float32Array(n),
+            event: new Int32Array(n),
+            position: new Float64Array(3 * n),
+            velocity: new Float32Array(3 * n),
+            normal: new Float32Array(3 * n),
+        };
+        const f64 = this.#f64, f32 = this.#f32, i32 = this.#i32;
+        for (let k = 0, at = this.#points; k < n; ++k, at += POINT_BYTES) {
+            const f = at >> 2, d = (at + 8) >> 3;
+            trajectory.time[k] = f32[f];
+            trajectory.event[k] = i32[f + 1];
+            trajectory.position[3 * k] = f64[d];
+            trajectory.position[3 * k + 1] = f64[d + 1];
+            trajectory.position[3 * k + 2] = f64[d + 2];
+            trajectory.velocity[3 * k] = f32[f + 8];
+            trajectory.velocity[3 * k + 1] = f32[f + 9];
+            trajectory.velocity[3 * k + 2] = f32[f + 10];
+            trajectory.normal[3 * k] = f32[f + 11];
+            trajectory.normal[3 * k + 1] = f32[f + 12];
+            trajectory.normal[3 * k + 2] = f32[f + 13];
+        }
+        return trajectory;
+    }
+
+    // ---- Aim ----------------------------------------------------------------------------------
+
+    /**
+     * The library's default shot: constraint 'speed', speed 0 m/s, apexHeight 0 m, gravity
+     * (0, -9.81, 0) m/s^2, maxTime 60 s.
+     * @returns {object}
+     */
+    aimShotDefaults() {
+        return { ...this.#shotDefaults, gravity: { ...this.#shotDefaults.gravity } };
+    }
+
+    /**
+     * Every way to hit a target moving as `p + v t + a t^2 / 2` from `shot.from` in free space,
+     * earliest first (low arc before high arc); an empty array when nothing reaches it.
+     * @param {AimShot} shot  from [m], constraint ('speed' default, 'horizontalSpeed',
+     *     'apexAboveStart', 'apexAboveTarget'), speed [m/s], apexHeight [m], gravity [m/s^2],
+     *     maxTime [s].
+     * @param {AimTarget} target  position [m], velocity [m/s] (default 0), acceleration [m/s^2] (default 0).
+     * @returns {FiringSolution[]}
+     */
+    aimProjectile(shot, target) {
+        const o = checkKeys(shot, shotKeys, 'shot');
+        const t = checkKeys(target, ['position', 'velocity', 'acceleration'], 'target');
+        const d = this.#shotDefaults;
+        const from = vec(o.from, 'shot.from');
+        const constraint = enumValue(AimConstraint, o.constraint ?? d.constraint, 'shot.constraint');
+        const speed = num(o.speed ?? d.speed, 'shot.speed');
+        const apexHeight = num(o.apexHeight ?? d.apexHeight, 'shot.apexHeight');
+        const gravity = vec(o.gravity ?? d.gravity, 'shot.gravity');
+        const maxTime = num(o.maxTime ?? d.maxTime, 'shot.maxTime');
+        const position = vec(t.position, 'target.position');
+        const velocity = vec(t.velocity ?? [0, 0, 0], 'target.velocity');
+        const acceleration = vec(t.acceleration ?? [0, 0, 0], 'target.acceleration');
+        const s = this.#scratch;
+        this.#views();
+        let dd = (s + IN_A) >> 3, f = (s + IN_A) >> 2;
+        this.#f64[dd] = from[0]; this.#f64[dd + 1] = from[1]; this.#f64[dd + 2] = from[2];
+        this.#i32[f + 6] = constraint;
+        this.#f32[f + 7] = speed;
+        this.#f32[f + 8] = apexHeight;
+        this.#f32.set(gravity, f + 9);
+        this.#f32[f + 12] = maxTime;
+        this.#f32[f + 13] = 0;
+        dd = (s + IN_B) >> 3; f = (s + IN_B) >> 2;
+        this.#f64[dd] = position[0]; this.#f64[dd + 1] = position[1]; this.#f64[dd + 2] = position[2];
+        this.#f32.set(velocity, f + 6);
+        this.#f32.set(acceleration, f + 9);
+        this.#check(this.#core._fs_aim_projectile(s + IN_A, s + IN_B, s + SOLUTIONS, MAX_SOLUTIONS, s + COUNT),
+            'aimProjectile');
+        this.#views();
+        const count = this.#u32[(s + COUNT) >> 2];
+        const solutions = [];
+        for (let k = 0; k < count; ++k) {
+            const at = s + SOLUTIONS + 48 * k, q = at >> 2, h = (at + 16) >> 3;
+            solutions.push({
+                velocity: xyz(this.#f32.subarray(q, q + 3)),
+                time: this.#f32[q + 3],
+                hit: xyz(this.#f64.subarray(h, h + 3)),
+                elevation: this.#f32[q + 10],
+            });
+        }
+        return solutions;
+    }
+}
+
+const worlds = new WeakMap(); // World -> {pointer, owner}
+
+function worldPointer(world, owner) {
+    const entry = worlds.get(world);
+    if (entry === undefined) throw new TypeError('options.world must be a World made by createWorld');
+    if (entry.owner !== owner) throw new TypeError('options.world belongs to another foresight instance');
+    if (entry.pointer === 0) throw new Error('options.world has been deleted');
+    return entry.pointer;
+}
+
+/**
+ * A static collision world (foresight::StaticWorld) in the module's memory: free it with
+ * `delete()`. Shapes are checked as the C++ checks them; a refused one throws ForesightError
+ * and is not added.
+ */
+export class World {
+    #owner;
+    #core;
+
+    /** @internal use Foresight.createWorld. */
+    constructor(owner, pointer, core) {
+        this.#owner = owner;
+        this.#core = core;
+        worlds.set(this, { pointer, owner });
+    }
+
+    #pointer(operation) {
+        const entry = worlds.get(this);
+        if (entry.pointer === 0) throw new Error(`${operation}: the world has been deleted`);
+        return entry.pointer;
+    }
+
+    /** Whether delete() has been called. @returns {boolean} */
+    get deleted() {
+        return worlds.get(this).pointer === 0;
+    }
+
+    /**
+     * Adds a one-sided infinite plane `dot(normal, x) = distance`, solid behind it.
+     * @param {{normal: Vec3Like, distance: number}} plane  normal (non-zero, normalised here),
+     *     distance [m].
+     * @param {Material} [material]  the surface's own restitution and friction (method 'engine').
+     * @returns {World} this world.
+     */
+    addPlane(plane, material = undefined) {
+        const world = this.#pointer('addPlane');
+        const o = checkKeys(plane, ['normal', 'distance'], 'plane');
+        const n = vec(o.normal, 'plane.normal');
+        const distance = num(o.distance ?? 0, 'plane.distance');
+        const m = this.#owner._material(material);
+        const { at, f64, f32 } = this.#owner._scratch();
+        f32.set(n, at >> 2);
+        f32[(at >> 2) + 3] = 0;
+        f64[(at >> 3) + 2] = distance;
+        this.#owner._check(this.#core._fs_world_add_plane(world, at, m), 'addPlane');
+        return this;
+    }
+
+    /**
+     * Adds a solid sphere.
+     * @param {{center: Vec3Like, radius: number}} sphere  center [m], radius [m] > 0.
+     * @param {Material} [material]
+     * @returns {World} this world.
+     */
+    addSphere(sphere, material = undefined) {
+        const world = this.#pointer('addSphere');
+        const o = checkKeys(sphere, ['center', 'radius'], 'sphere');
+        const c = vec(o.center, 'sphere.center');
+        const radius = num(o.radius, 'sphere.radius');
+        const m = this.#owner._material(material);
+        const { at, f64, f32 } = this.#owner._scratch();
+        f64.set(c, at >> 3);
+        f32[(at >> 2) + 6] = radius;
+        f32[(at >> 2) + 7] = 0;
+        this.#owner._check(this.#core._fs_world_add_sphere(world, at, m), 'addSphere');
+        return this;
+    }
+
+    /**
+     * Adds a solid box rotated about its centre.
+     * @param {{center: Vec3Like, halfExtents: Vec3Like, orientation?: QuatLike, rounding?: number}} box
+     *     center [m], halfExtents [m] > 0 along its local axes, orientation (local-to-world,
+     *     default identity), rounding radius of edges and corners [m] (default 0).
+     * @param {Material} [material]
+     * @returns {World} this world.
+     */
+    addBox(box, material = undefined) {
+        const world = this.#pointer('addBox');
+        const o = checkKeys(box, ['center', 'halfExtents', 'orientation', 'rounding'], 'box');
+        const c = vec(o.center, 'box.center');
+        const h = vec(o.halfExtents, 'box.halfExtents');
+        const q = quat(o.orientation ?? [0, 0, 0, 1], 'box.orientation');
+        const rounding = num(o.rounding ?? 0, 'box.rounding');
+        const m = this.#owner._material(material);
+        const { at, f64, f32 } = this.#owner._scratch();
+        f64.set(c, at >> 3);
+        f32.set(h, (at >> 2) + 6);
+        f32.set(q, (at >> 2) + 9);
+        f32[(at >> 2) + 13] = rounding;
+        this.#owner._check(this.#core._fs_world_add_box(world, at, m), 'addBox');
+        return this;
+    }
+
+    /**
+     * Adds a two-sided triangle.
+     * @param {{a: Vec3Like, b: Vec3Like, c: Vec3Like}} triangle  vertices [m] (an area of at
+     *     least 1e-12 m^2).
+     * @param {Material} [material]
+     * @returns {World} this world.
+     */
+    addTriangle(triangle, material = undefined) {
+        const world = this.#pointer('addTriangle');
+        const o = checkKeys(triangle, ['a', 'b', 'c'], 'triangle');
+        const a = vec(o.a, 'triangle.a'), b = vec(o.b, 'triangle.b'), c = vec(o.c, 'triangle.c');
+        const m = this.#owner._material(material);
+        const { at, f64 } = this.#owner._scratch();
+        f64.set(a, at >> 3);
+        f64.set(b, (at >> 3) + 3);
+        f64.set(c, (at >> 3) + 6);
+        this.#owner._check(this.#core._fs_world_add_triangle(world, at, m), 'addTriangle');
+        return this;
+    }
+
+    /** Frees the world's memory; later calls with it throw. A second delete() does nothing. */
+    delete() {
+        const entry = worlds.get(this);
+        if (entry.pointer !== 0) {
+            this.#core._fs_world_destroy(entry.pointer);
+            entry.pointer = 0;
+        }
+    }
+
+    /** The same as delete(). */
+    dispose() {
+        this.delete();
+    }
+}
+if (typeof Symbol.dispose === 'symbol') {
+    World.prototype[Symbol.dispose] = World.prototype.delete;
+}
