@@ -5,8 +5,10 @@
 #include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/danger.h>
+#include <foresight/dead_reckoning.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
+#include <foresight/replication.h>
 #include <foresight/static_world.h>
 #include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
@@ -203,6 +205,47 @@ static_assert(FS_AIM_SPEED == static_cast<int>(AimConstraint::Speed) &&
               FS_AIM_APEX_ABOVE_START == static_cast<int>(AimConstraint::ApexAboveStart) &&
               FS_AIM_APEX_ABOVE_TARGET == static_cast<int>(AimConstraint::ApexAboveTarget));
 static_assert(FS_MAX_FIRING_SOLUTIONS == kMaxFiringSolutions);
+static_assert(sizeof(fs_dr_state) == 80 && alignof(fs_dr_state) == 8);
+static_assert(offsetof(fs_dr_state, velocity) == 24 && offsetof(fs_dr_state, acceleration) == 36 &&
+              offsetof(fs_dr_state, orientation) == 48 && offsetof(fs_dr_state, angular_velocity) == 64 &&
+              offsetof(fs_dr_state, algorithm) == 76);
+static_assert(sizeof(fs_dr_result) == 56 && alignof(fs_dr_result) == 8);
+static_assert(offsetof(fs_dr_result, velocity) == 24 && offsetof(fs_dr_result, orientation) == 36 &&
+              offsetof(fs_dr_result, reserved) == 52);
+static_assert(sizeof(fs_dr_receiver_settings) == 36 && alignof(fs_dr_receiver_settings) == 4);
+static_assert(offsetof(fs_dr_receiver_settings, smoothing) == 4 && offsetof(fs_dr_receiver_settings, blend_time) == 8 &&
+              offsetof(fs_dr_receiver_settings, decay_half_life) == 12 &&
+              offsetof(fs_dr_receiver_settings, teleport_distance) == 16 &&
+              offsetof(fs_dr_receiver_settings, extrapolation_limit) == 20 &&
+              offsetof(fs_dr_receiver_settings, interpolation_delay) == 24 &&
+              offsetof(fs_dr_receiver_settings, max_future_skew) == 28 &&
+              offsetof(fs_dr_receiver_settings, restart_after) == 32);
+static_assert(sizeof(fs_dr_pose) == 56 && alignof(fs_dr_pose) == 8);
+static_assert(offsetof(fs_dr_pose, velocity) == 24 && offsetof(fs_dr_pose, orientation) == 36 &&
+              offsetof(fs_dr_pose, held) == 52);
+static_assert(sizeof(fs_dr_receiver_counters) == 80 && offsetof(fs_dr_receiver_counters, clock_restarts) == 72);
+static_assert(FS_DR_STATIC == static_cast<int>(DeadReckoningAlgorithm::Static) &&
+              FS_DR_FPW == static_cast<int>(DeadReckoningAlgorithm::Fpw) &&
+              FS_DR_RPW == static_cast<int>(DeadReckoningAlgorithm::Rpw) &&
+              FS_DR_RVW == static_cast<int>(DeadReckoningAlgorithm::Rvw) &&
+              FS_DR_FVW == static_cast<int>(DeadReckoningAlgorithm::Fvw) &&
+              FS_DR_FPB == static_cast<int>(DeadReckoningAlgorithm::Fpb) &&
+              FS_DR_RPB == static_cast<int>(DeadReckoningAlgorithm::Rpb) &&
+              FS_DR_RVB == static_cast<int>(DeadReckoningAlgorithm::Rvb) &&
+              FS_DR_FVB == static_cast<int>(DeadReckoningAlgorithm::Fvb));
+static_assert(FS_DR_MODE_EXTRAPOLATE == static_cast<int>(ReceiverMode::Extrapolate) &&
+              FS_DR_MODE_INTERPOLATE == static_cast<int>(ReceiverMode::Interpolate));
+static_assert(FS_DR_SMOOTH_SNAP == static_cast<int>(Smoothing::Snap) &&
+              FS_DR_SMOOTH_LINEAR_BLEND == static_cast<int>(Smoothing::LinearBlend) &&
+              FS_DR_SMOOTH_PROJECTIVE_VELOCITY == static_cast<int>(Smoothing::ProjectiveVelocityBlending) &&
+              FS_DR_SMOOTH_EXPONENTIAL_DECAY == static_cast<int>(Smoothing::ExponentialDecay));
+static_assert(FS_DR_ACCEPTED == static_cast<int>(UpdateOutcome::Accepted) &&
+              FS_DR_SNAPPED == static_cast<int>(UpdateOutcome::Snapped) &&
+              FS_DR_BUFFERED == static_cast<int>(UpdateOutcome::Buffered) &&
+              FS_DR_OUT_OF_ORDER == static_cast<int>(UpdateOutcome::OutOfOrder) &&
+              FS_DR_DUPLICATE == static_cast<int>(UpdateOutcome::Duplicate) &&
+              FS_DR_INVALID == static_cast<int>(UpdateOutcome::Invalid) &&
+              FS_DR_TOO_FAR_AHEAD == static_cast<int>(UpdateOutcome::TooFarAhead));
 
 static_assert(sizeof(fs_segment_cast) == 40 && alignof(fs_segment_cast) == 8);
 static_assert(offsetof(fs_segment_cast, displacement) == 24 && offsetof(fs_segment_cast, radius) == 36);
@@ -225,6 +268,11 @@ struct fs_world {
 #if FORESIGHT_C_WITH_EMBREE
     std::unique_ptr<EmbreeWorld> embree;
 #endif
+};
+
+// And the C++ receiver.
+struct fs_dr_receiver {
+    DeadReckoningReceiver receiver;
 };
 
 namespace {
@@ -628,6 +676,39 @@ fs_status predictInto(fs_dvec3 position, fs_vec3 velocity, float time, const Pro
     out->trajectory_needed = result.trajectoryNeeded;
     if (capacity > 0 && result.trajectoryNeeded > result.trajectorySize) return FS_STATUS_BUFFER_TOO_SMALL;
     return FS_STATUS_OK;
+}
+
+// An algorithm outside 1 to 9 becomes 0, which the C++ refuses (InvalidAlgorithm): a plain
+// cast to the uint8_t enumeration would wrap 257 to 1.
+DeadReckoningState toCpp(const fs_dr_state& s) {
+    DeadReckoningState r;
+    r.algorithm =
+        static_cast<DeadReckoningAlgorithm>(s.algorithm >= FS_DR_STATIC && s.algorithm <= FS_DR_FVB ? s.algorithm : 0);
+    r.position = toCpp(s.position);
+    r.velocity = toCpp(s.velocity);
+    r.acceleration = toCpp(s.acceleration);
+    r.orientation = toCpp(s.orientation);
+    r.angularVelocity = toCpp(s.angular_velocity);
+    return r;
+}
+fs_dr_result toC(const DeadReckoningResult& r) {
+    return fs_dr_result{toCPosition(r.position), toC(r.velocity), toC(r.orientation), 0.0f};
+}
+
+// False for a mode or smoothing outside their enumerations.
+bool toCpp(const fs_dr_receiver_settings& s, ReceiverSettings& out) {
+    if (s.mode < FS_DR_MODE_EXTRAPOLATE || s.mode > FS_DR_MODE_INTERPOLATE) return false;
+    if (s.smoothing < FS_DR_SMOOTH_SNAP || s.smoothing > FS_DR_SMOOTH_EXPONENTIAL_DECAY) return false;
+    out.mode = static_cast<ReceiverMode>(s.mode);
+    out.smoothing = static_cast<Smoothing>(s.smoothing);
+    out.blendTime = s.blend_time;
+    out.decayHalfLife = s.decay_half_life;
+    out.teleportDistance = s.teleport_distance;
+    out.extrapolationLimit = s.extrapolation_limit;
+    out.interpolationDelay = s.interpolation_delay;
+    out.maxFutureSkew = s.max_future_skew;
+    out.restartAfter = s.restart_after;
+    return true;
 }
 
 }  // namespace
@@ -1169,6 +1250,93 @@ fs_status fs_rendered_position(const fs_trajectory_point* trajectory, size_t cou
         return FS_STATUS_NON_FINITE_RESULT;
     *out = toCPosition(position);
     return FS_STATUS_OK;
+}
+
+const char* fs_dr_algorithm_name(int32_t algorithm) noexcept {
+    if (algorithm < FS_DR_STATIC || algorithm > FS_DR_FVB) return "?";
+    return deadReckoningAlgorithmName(static_cast<DeadReckoningAlgorithm>(algorithm));
+}
+
+fs_status fs_dr_predict(const fs_dr_state* state, float time, fs_dr_result* out) noexcept {
+    if (state == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    DeadReckoningResult result;
+    const Status s = predictDeadReckoning(toCpp(*state), time, result);
+    if (s == Status::Ok) *out = toC(result);
+    return toC(s);
+}
+
+fs_status fs_dr_predict_batch(const fs_dr_state* states, const double* timestamps, size_t count, double time,
+                              fs_dr_result* out, size_t* refused) noexcept {
+    if (count > 0 && (states == nullptr || timestamps == nullptr || out == nullptr)) return FS_STATUS_NULL_POINTER;
+    // One entity at a time through the C++ batch call (its age and refusal rules), converting on
+    // the way: no allocation.
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const DeadReckoningState state = toCpp(states[i]);
+        DeadReckoningResult result;
+        n += predictDeadReckoningBatch(std::span<const DeadReckoningState>(&state, 1),
+                                       std::span<const double>(timestamps + i, 1), time,
+                                       std::span<DeadReckoningResult>(&result, 1));
+        out[i] = toC(result);
+    }
+    if (refused != nullptr) *refused = n;
+    return FS_STATUS_OK;
+}
+
+fs_dr_receiver_settings fs_dr_receiver_settings_default(void) noexcept {
+    const ReceiverSettings d;
+    return fs_dr_receiver_settings{static_cast<int32_t>(d.mode),
+                                   static_cast<int32_t>(d.smoothing),
+                                   d.blendTime,
+                                   d.decayHalfLife,
+                                   d.teleportDistance,
+                                   d.extrapolationLimit,
+                                   d.interpolationDelay,
+                                   d.maxFutureSkew,
+                                   d.restartAfter};
+}
+
+fs_status fs_dr_receiver_create(const fs_dr_receiver_settings* settings, fs_dr_receiver** out) noexcept {
+    if (settings == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    ReceiverSettings cppSettings;
+    if (!toCpp(*settings, cppSettings)) return FS_STATUS_INVALID_SETTING;
+    const Status s = validateReceiverSettings(cppSettings);
+    if (s != Status::Ok) return toC(s);
+    auto* receiver = new (std::nothrow) fs_dr_receiver{DeadReckoningReceiver(cppSettings)};
+    if (receiver == nullptr) return FS_STATUS_OUT_OF_MEMORY;
+    *out = receiver;
+    return FS_STATUS_OK;
+}
+
+void fs_dr_receiver_destroy(fs_dr_receiver* receiver) noexcept { delete receiver; }
+
+fs_status fs_dr_receiver_receive(fs_dr_receiver* receiver, double timestamp, const fs_dr_state* state,
+                                 double receive_time, int32_t* outcome) noexcept {
+    if (receiver == nullptr || state == nullptr) return FS_STATUS_NULL_POINTER;
+    const UpdateOutcome o = receiver->receiver.receive(timestamp, toCpp(*state), receive_time);
+    if (outcome != nullptr) *outcome = static_cast<int32_t>(o);
+    return FS_STATUS_OK;
+}
+
+fs_status fs_dr_receiver_sample(fs_dr_receiver* receiver, double time, fs_dr_pose* out) noexcept {
+    if (receiver == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    ReceivedPose pose;
+    const Status s = receiver->receiver.sample(time, pose);
+    if (s == Status::Ok)
+        *out = fs_dr_pose{toCPosition(pose.position), toC(pose.velocity), toC(pose.orientation), pose.held ? 1 : 0};
+    return toC(s);
+}
+
+fs_status fs_dr_receiver_get_counters(const fs_dr_receiver* receiver, fs_dr_receiver_counters* out) noexcept {
+    if (receiver == nullptr || out == nullptr) return FS_STATUS_NULL_POINTER;
+    const ReceiverCounters& c = receiver->receiver.counters();
+    *out = fs_dr_receiver_counters{c.accepted, c.snaps, c.teleports,     c.outOfOrder,  c.duplicates,
+                                   c.invalid,  c.held,  c.futureUpdates, c.tooFarAhead, c.clockRestarts};
+    return FS_STATUS_OK;
+}
+
+void fs_dr_receiver_reset(fs_dr_receiver* receiver) noexcept {
+    if (receiver != nullptr) receiver->receiver.reset();
 }
 
 }  // extern "C"

@@ -5,8 +5,10 @@
 #include <foresight/aim.h>
 #include <foresight/character.h>
 #include <foresight/danger.h>
+#include <foresight/dead_reckoning.h>
 #include <foresight/foresight_c.h>
 #include <foresight/projectile.h>
+#include <foresight/replication.h>
 #include <foresight/static_world.h>
 #include <foresight/throw_planner.h>
 #include <foresight/vehicle.h>
@@ -19,6 +21,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -775,4 +778,137 @@ TEST(CApi, EngineProfilesMatchCpp) {
             << i;
     }
     fs_world_destroy(cWorld);
+}
+
+namespace {
+
+// A random dead-reckoning update: any of the nine models, now and then an invalid field.
+DeadReckoningState randomDeadReckoning(Random& random, std::int32_t& algorithm) {
+    DeadReckoningState s;
+    algorithm = random.chance(0.03) ? random.integer(-1, 300) : random.integer(1, kDeadReckoningAlgorithmCount);
+    s.algorithm = static_cast<DeadReckoningAlgorithm>(algorithm >= 1 && algorithm <= 9 ? algorithm : 0);
+    s.position = RVec3(random.vec(1000.0f));
+    s.velocity = random.vec(50.0f);
+    s.acceleration = random.vec(10.0f);
+    s.orientation = glm::normalize(quat(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1), 1.0f));
+    if (random.chance(0.03)) s.orientation = quat(0, 0, 0, 0);
+    s.angularVelocity = random.chance(0.1) ? Vec3(0.0f) : random.vec(3.0f);
+    if (random.chance(0.03)) s.velocity.y = std::numeric_limits<float>::quiet_NaN();
+    return s;
+}
+
+fs_dr_state toC(const DeadReckoningState& s, std::int32_t algorithm) {
+    return fs_dr_state{toCPosition(s.position), toC(s.velocity),        toC(s.acceleration),
+                       toC(s.orientation),      toC(s.angularVelocity), algorithm};
+}
+
+bool same(const fs_dr_result& c, const DeadReckoningResult& r) {
+    return samePosition(c.position, r.position) && same(c.velocity, r.velocity) && same(c.orientation, r.orientation);
+}
+
+}  // namespace
+
+TEST(CApi, DeadReckoningMatchesCpp) {
+    Random random(23);
+    std::vector<DeadReckoningState> states;
+    std::vector<fs_dr_state> cStates;
+    std::vector<double> timestamps;
+    for (int i = 0; i < kCases; ++i) {
+        std::int32_t algorithm = 0;
+        const DeadReckoningState state = randomDeadReckoning(random, algorithm);
+        const fs_dr_state cState = toC(state, algorithm);
+        const float time = random.time(5.0f);
+        DeadReckoningResult cpp;
+        fs_dr_result c{};
+        const Status s = predictDeadReckoning(state, time, cpp);
+        ASSERT_EQ(fs_dr_predict(&cState, time, &c), static_cast<fs_status>(s)) << i;
+        if (s == Status::Ok) {
+            EXPECT_TRUE(same(c, cpp)) << i;
+        }
+        states.push_back(state);
+        cStates.push_back(cState);
+        timestamps.push_back(random.uniform(0.0f, 10.0f));
+    }
+    std::vector<DeadReckoningResult> cpp(states.size());
+    std::vector<fs_dr_result> c(states.size());
+    const std::size_t cppRefused = predictDeadReckoningBatch(states, timestamps, 6.0, cpp);
+    std::size_t refused = 0;
+    ASSERT_EQ(fs_dr_predict_batch(cStates.data(), timestamps.data(), c.size(), 6.0, c.data(), &refused), FS_STATUS_OK);
+    EXPECT_EQ(refused, cppRefused);
+    EXPECT_GT(refused, 0u);  // the random invalid fields are exercised
+    for (std::size_t i = 0; i < c.size(); ++i) EXPECT_TRUE(same(c[i], cpp[i])) << i;
+}
+
+TEST(CApi, DeadReckoningReceiverMatchesCpp) {
+    // Every mode and smoothing, a stream of noisy, late, duplicated and invalid updates, sampled
+    // every frame: outcomes, statuses, poses and counters equal.
+    for (int mode = FS_DR_MODE_EXTRAPOLATE; mode <= FS_DR_MODE_INTERPOLATE; ++mode) {
+        for (int smoothing = FS_DR_SMOOTH_SNAP; smoothing <= FS_DR_SMOOTH_EXPONENTIAL_DECAY; ++smoothing) {
+            Random random(static_cast<std::uint32_t>(100 + mode * 10 + smoothing));
+            fs_dr_receiver_settings cSettings = fs_dr_receiver_settings_default();
+            cSettings.mode = mode;
+            cSettings.smoothing = smoothing;
+            ReceiverSettings settings;
+            settings.mode = static_cast<ReceiverMode>(mode);
+            settings.smoothing = static_cast<Smoothing>(smoothing);
+            DeadReckoningReceiver cpp(settings);
+            fs_dr_receiver* c = nullptr;
+            ASSERT_EQ(fs_dr_receiver_create(&cSettings, &c), FS_STATUS_OK);
+            double time = 0.0;
+            for (int frame = 0; frame < 400; ++frame) {
+                time += 1.0 / 60.0;
+                if (random.chance(0.2)) {
+                    std::int32_t algorithm = 0;
+                    const DeadReckoningState state = randomDeadReckoning(random, algorithm);
+                    const fs_dr_state cState = toC(state, algorithm);
+                    const double stamp = time - random.uniform(0.0f, 0.3f);
+                    std::int32_t outcome = -1;
+                    const UpdateOutcome o = cpp.receive(stamp, state, time);
+                    ASSERT_EQ(fs_dr_receiver_receive(c, stamp, &cState, time, &outcome), FS_STATUS_OK);
+                    EXPECT_EQ(outcome, static_cast<std::int32_t>(o)) << frame;
+                }
+                ReceivedPose pose;
+                fs_dr_pose cPose{};
+                const Status s = cpp.sample(time, pose);
+                ASSERT_EQ(fs_dr_receiver_sample(c, time, &cPose), static_cast<fs_status>(s)) << frame;
+                if (s == Status::Ok) {
+                    EXPECT_TRUE(samePosition(cPose.position, pose.position)) << frame;
+                    EXPECT_TRUE(same(cPose.velocity, pose.velocity)) << frame;
+                    EXPECT_TRUE(same(cPose.orientation, pose.orientation)) << frame;
+                    EXPECT_EQ(cPose.held, pose.held ? 1 : 0) << frame;
+                }
+            }
+            fs_dr_receiver_counters counters{};
+            ASSERT_EQ(fs_dr_receiver_get_counters(c, &counters), FS_STATUS_OK);
+            const ReceiverCounters& k = cpp.counters();
+            EXPECT_EQ(counters.accepted, k.accepted);
+            EXPECT_EQ(counters.snaps, k.snaps);
+            EXPECT_EQ(counters.teleports, k.teleports);
+            EXPECT_EQ(counters.out_of_order, k.outOfOrder);
+            EXPECT_EQ(counters.duplicates, k.duplicates);
+            EXPECT_EQ(counters.invalid, k.invalid);
+            EXPECT_EQ(counters.held, k.held);
+            EXPECT_EQ(counters.future_updates, k.futureUpdates);
+            EXPECT_EQ(counters.too_far_ahead, k.tooFarAhead);
+            EXPECT_EQ(counters.clock_restarts, k.clockRestarts);
+            EXPECT_GT(k.accepted, 0u);
+            fs_dr_receiver_destroy(c);
+        }
+    }
+}
+
+TEST(CApi, DeadReckoningDefaults) {
+    const ReceiverSettings d;
+    const fs_dr_receiver_settings c = fs_dr_receiver_settings_default();
+    EXPECT_EQ(c.mode, static_cast<int>(d.mode));
+    EXPECT_EQ(c.smoothing, static_cast<int>(d.smoothing));
+    EXPECT_TRUE(same(c.blend_time, d.blendTime));
+    EXPECT_TRUE(same(c.decay_half_life, d.decayHalfLife));
+    EXPECT_TRUE(same(c.teleport_distance, d.teleportDistance));
+    EXPECT_TRUE(same(c.extrapolation_limit, d.extrapolationLimit));
+    EXPECT_TRUE(same(c.interpolation_delay, d.interpolationDelay));
+    EXPECT_TRUE(same(c.max_future_skew, d.maxFutureSkew));
+    EXPECT_TRUE(same(c.restart_after, d.restartAfter));
+    for (int a = 1; a <= kDeadReckoningAlgorithmCount; ++a)
+        EXPECT_STREQ(fs_dr_algorithm_name(a), deadReckoningAlgorithmName(static_cast<DeadReckoningAlgorithm>(a)));
 }

@@ -1283,6 +1283,171 @@ static void test_aim(void) {
     for (i = 0; i < FS_MAX_FIRING_SOLUTIONS; ++i) CHECK(solutions[i].time == untouched[i].time);
 }
 
+/* ---- Dead reckoning ------------------------------------------------------------------------- */
+
+static fs_dr_state dr_state(int32_t algorithm) {
+    fs_dr_state s;
+    memset(&s, 0, sizeof s);
+    s.position = dvec3(1.0, 2.0, 3.0);
+    s.velocity = vec3(4.0f, 0.0f, -2.0f);
+    s.acceleration = vec3(0.0f, -2.0f, 1.0f);
+    s.orientation = identity();
+    s.angular_velocity = vec3(0.0f, 0.0f, 0.0f);
+    s.algorithm = algorithm;
+    return s;
+}
+
+static void test_dead_reckoning(void) {
+    fs_dr_state s = dr_state(FS_DR_FPW);
+    fs_dr_result r, untouched;
+    fs_dr_state states[3];
+    double timestamps[3];
+    fs_dr_result results[3];
+    size_t refused = 99;
+    const double t = 0.5;
+
+    CHECK(strcmp(fs_dr_algorithm_name(FS_DR_STATIC), "STATIC") == 0);
+    CHECK(strcmp(fs_dr_algorithm_name(FS_DR_RVB), "RVB") == 0);
+    CHECK(strcmp(fs_dr_algorithm_name(0), "?") == 0 && strcmp(fs_dr_algorithm_name(257), "?") == 0);
+
+    /* FPW: p + v t. */
+    CHECK_STATUS(fs_dr_predict(&s, (float)t, &r), FS_STATUS_OK);
+    CHECK_NEAR(r.position.x, 1.0 + 4.0 * t, kTol);
+    CHECK_NEAR(r.position.y, 2.0, kTol);
+    CHECK_NEAR(r.position.z, 3.0 - 2.0 * t, kTol);
+    CHECK(r.velocity.x == 4.0f && r.velocity.z == -2.0f && r.orientation.w == 1.0f && r.reserved == 0.0f);
+
+    /* FVW: p + v t + a t^2 / 2, velocity v + a t. */
+    s.algorithm = FS_DR_FVW;
+    CHECK_STATUS(fs_dr_predict(&s, (float)t, &r), FS_STATUS_OK);
+    CHECK_NEAR(r.position.y, 2.0 - 2.0 * t * t / 2.0, kTol);
+    CHECK_NEAR(r.position.z, 3.0 - 2.0 * t + t * t / 2.0, kTol);
+    CHECK_NEAR(r.velocity.y, -2.0 * t, kTol);
+
+    /* RPB: a body velocity (0, 0, v) turning at w about +Y traces a circle of radius v / w:
+     * after t, position p + (r (1 - cos wt), 0, r sin wt) and the yaw wt. */
+    s = dr_state(FS_DR_RPB);
+    s.velocity = vec3(0.0f, 0.0f, 10.0f);
+    s.angular_velocity = vec3(0.0f, 0.5f, 0.0f);
+    CHECK_STATUS(fs_dr_predict(&s, 2.0f, &r), FS_STATUS_OK);
+    CHECK_NEAR(r.position.x, 1.0 + 20.0 * (1.0 - cos(1.0)), kTol);
+    CHECK_NEAR(r.position.y, 2.0, kTol);
+    CHECK_NEAR(r.position.z, 3.0 + 20.0 * sin(1.0), kTol);
+    CHECK_NEAR(r.orientation.y, sin(0.5), kTol);
+    CHECK_NEAR(r.orientation.w, cos(0.5), kTol);
+    CHECK_NEAR(r.velocity.z, 10.0, kTol); /* body axes: unchanged */
+
+    /* Refusals: out untouched. */
+    memset(&untouched, 0x5a, sizeof untouched);
+    r = untouched;
+    s = dr_state(FS_DR_FPW);
+    CHECK_STATUS(fs_dr_predict(NULL, 1.0f, &r), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_predict(&s, 1.0f, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_predict(&s, -1.0f, &r), FS_STATUS_NEGATIVE_TIME);
+    CHECK_STATUS(fs_dr_predict(&s, NAN, &r), FS_STATUS_NON_FINITE_INPUT);
+    s.algorithm = 0;
+    CHECK_STATUS(fs_dr_predict(&s, 1.0f, &r), FS_STATUS_INVALID_ALGORITHM);
+    s.algorithm = 257; /* would wrap to 1 in a uint8_t */
+    CHECK_STATUS(fs_dr_predict(&s, 1.0f, &r), FS_STATUS_INVALID_ALGORITHM);
+    s = dr_state(FS_DR_FPW);
+    s.velocity.y = NAN;
+    CHECK_STATUS(fs_dr_predict(&s, 1.0f, &r), FS_STATUS_NON_FINITE_INPUT);
+    s = dr_state(FS_DR_FPW);
+    s.orientation.w = 0.0f;
+    CHECK_STATUS(fs_dr_predict(&s, 1.0f, &r), FS_STATUS_ZERO_QUATERNION);
+    CHECK(memcmp(&r, &untouched, sizeof r) == 0);
+
+    /* Batch: ages time - timestamp, clamped at 0; a refused entity keeps its state. */
+    states[0] = dr_state(FS_DR_FPW);
+    states[1] = dr_state(FS_DR_FPW);
+    states[2] = dr_state(FS_DR_FPW);
+    states[2].orientation.w = 0.0f;
+    timestamps[0] = 10.0;
+    timestamps[1] = 11.0; /* stamped after `time`: age 0 */
+    timestamps[2] = 10.0;
+    CHECK_STATUS(fs_dr_predict_batch(states, timestamps, 3, 10.5, results, &refused), FS_STATUS_OK);
+    CHECK(refused == 1);
+    CHECK_NEAR(results[0].position.x, 1.0 + 4.0 * 0.5, kTol);
+    CHECK(results[1].position.x == 1.0 && results[1].position.z == 3.0);
+    CHECK(results[2].position.x == 1.0 && results[2].velocity.x == 4.0f);
+    CHECK_STATUS(fs_dr_predict_batch(NULL, NULL, 0, 0.0, NULL, NULL), FS_STATUS_OK);
+    CHECK_STATUS(fs_dr_predict_batch(states, NULL, 3, 0.0, results, NULL), FS_STATUS_NULL_POINTER);
+}
+
+static void test_dead_reckoning_receiver(void) {
+    fs_dr_receiver_settings settings = fs_dr_receiver_settings_default();
+    fs_dr_receiver* receiver = NULL;
+    fs_dr_receiver_counters counters;
+    fs_dr_state s = dr_state(FS_DR_FPW);
+    fs_dr_pose pose;
+    int32_t outcome = -1;
+
+    CHECK(settings.mode == FS_DR_MODE_EXTRAPOLATE && settings.smoothing == FS_DR_SMOOTH_PROJECTIVE_VELOCITY);
+    CHECK(settings.blend_time == 0.2f && settings.decay_half_life == 0.1f && settings.teleport_distance == 10.0f);
+    CHECK(settings.extrapolation_limit == 0.25f && settings.interpolation_delay == 0.1f);
+    CHECK(settings.max_future_skew == 1.0f && settings.restart_after == 10.0f);
+
+    settings.mode = 2;
+    CHECK_STATUS(fs_dr_receiver_create(&settings, &receiver), FS_STATUS_INVALID_SETTING);
+    settings = fs_dr_receiver_settings_default();
+    settings.smoothing = -1;
+    CHECK_STATUS(fs_dr_receiver_create(&settings, &receiver), FS_STATUS_INVALID_SETTING);
+    settings = fs_dr_receiver_settings_default();
+    settings.blend_time = 0.0f;
+    CHECK_STATUS(fs_dr_receiver_create(&settings, &receiver), FS_STATUS_INVALID_SETTING);
+    CHECK(receiver == NULL);
+    CHECK_STATUS(fs_dr_receiver_create(NULL, &receiver), FS_STATUS_NULL_POINTER);
+
+    settings = fs_dr_receiver_settings_default();
+    settings.smoothing = FS_DR_SMOOTH_SNAP;
+    CHECK_STATUS(fs_dr_receiver_create(&settings, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_receiver_create(&settings, &receiver), FS_STATUS_OK);
+    CHECK(receiver != NULL);
+    if (receiver == NULL) return;
+
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, 0.0, &pose), FS_STATUS_NO_UPDATE);
+    /* The first update snaps; sampling 0.2 s after its timestamp shows p + v 0.2. */
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 1.0, &s, 1.05, &outcome), FS_STATUS_OK);
+    CHECK(outcome == FS_DR_SNAPPED);
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, 1.2, &pose), FS_STATUS_OK);
+    CHECK_NEAR(pose.position.x, 1.0 + 4.0 * 0.2, kTol);
+    CHECK_NEAR(pose.position.z, 3.0 - 2.0 * 0.2, kTol);
+    CHECK(pose.held == 0 && pose.velocity.x == 4.0f);
+    /* Past extrapolation_limit (0.25 s) the pose holds at p + v 0.25. */
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, 2.0, &pose), FS_STATUS_OK);
+    CHECK_NEAR(pose.position.x, 1.0 + 4.0 * 0.25, kTol);
+    CHECK(pose.held == 1);
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, NAN, &pose), FS_STATUS_NON_FINITE_INPUT);
+
+    /* A duplicate, an older one, an invalid one: dropped and counted. */
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 1.0, &s, 1.1, &outcome), FS_STATUS_OK);
+    CHECK(outcome == FS_DR_DUPLICATE);
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 0.5, &s, 1.1, &outcome), FS_STATUS_OK);
+    CHECK(outcome == FS_DR_OUT_OF_ORDER);
+    s.algorithm = 99;
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 1.5, &s, 1.5, &outcome), FS_STATUS_OK);
+    CHECK(outcome == FS_DR_INVALID);
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 1.5, &s, 1.5, NULL), FS_STATUS_OK);
+    CHECK_STATUS(fs_dr_receiver_receive(receiver, 1.5, NULL, 1.5, &outcome), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_receiver_receive(NULL, 1.5, &s, 1.5, &outcome), FS_STATUS_NULL_POINTER);
+
+    CHECK_STATUS(fs_dr_receiver_get_counters(receiver, &counters), FS_STATUS_OK);
+    CHECK(counters.accepted == 1 && counters.snaps == 1 && counters.duplicates == 1);
+    CHECK(counters.out_of_order == 1 && counters.invalid == 2 && counters.held == 1);
+    CHECK_STATUS(fs_dr_receiver_get_counters(NULL, &counters), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_receiver_get_counters(receiver, NULL), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_receiver_sample(NULL, 1.0, &pose), FS_STATUS_NULL_POINTER);
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, 1.0, NULL), FS_STATUS_NULL_POINTER);
+
+    fs_dr_receiver_reset(receiver);
+    fs_dr_receiver_reset(NULL);
+    CHECK_STATUS(fs_dr_receiver_get_counters(receiver, &counters), FS_STATUS_OK);
+    CHECK(counters.accepted == 0 && counters.invalid == 0);
+    CHECK_STATUS(fs_dr_receiver_sample(receiver, 1.0, &pose), FS_STATUS_NO_UPDATE);
+    fs_dr_receiver_destroy(receiver);
+    fs_dr_receiver_destroy(NULL);
+}
+
 int main(void) {
     test_version_and_statuses();
     test_defaults();
@@ -1301,6 +1466,8 @@ int main(void) {
     test_danger_vehicle();
     test_plan_throw();
     test_aim();
+    test_dead_reckoning();
+    test_dead_reckoning_receiver();
     if (failures != 0) {
         fprintf(stderr, "c_api_test: %d check(s) failed\n", failures);
         return 1;

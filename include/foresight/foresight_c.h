@@ -24,10 +24,13 @@
 /// FS_STATUS_OK is returned (fs_predict_projectile also on FS_STATUS_BUFFER_TOO_SMALL, and it
 /// uses its trajectory buffer as scratch space). A NULL
 /// pointer where one is required gives FS_STATUS_NULL_POINTER; an int32_t enumeration field
-/// outside its constants gives FS_STATUS_INVALID_SETTING. Nothing throws, nothing aborts. Only
-/// fs_world_create and the fs_world_add_* functions allocate. Every function is safe to call
-/// from several threads at once, except that a world must not be changed (add, destroy) while
-/// another thread uses it.
+/// outside its constants gives FS_STATUS_INVALID_SETTING (fs_dr_state::algorithm: as in C++,
+/// FS_STATUS_INVALID_ALGORITHM). Nothing throws, nothing aborts. Only the fs_world_create*
+/// functions, fs_world_add_*, fs_world_load_mesh, fs_world_commit, fs_dr_receiver_create and
+/// (the first time on a thread for a trajectory size) the danger functions allocate. Every
+/// function is safe to call from several threads at once, except that a world must not be
+/// changed (add, destroy) while another thread uses it, and a receiver is used by one thread at
+/// a time.
 
 #include <stddef.h>
 #include <stdint.h>
@@ -85,12 +88,12 @@ enum {
     FS_STATUS_TOO_MANY_STEPS = 11,       ///< The prediction would take more steps than max_steps.
     FS_STATUS_TOO_MANY_EVENTS = 12,      ///< The prediction hit max_events (bounces and contact changes).
     FS_STATUS_NON_FINITE_RESULT = 13,    ///< The inputs are valid but so large that the result overflows.
-    FS_STATUS_INVALID_ALGORITHM = 14,    ///< A dead-reckoning algorithm outside 1 to 9 (not used yet here).
+    FS_STATUS_INVALID_ALGORITHM = 14,    ///< A dead-reckoning algorithm outside 1 to 9.
     FS_STATUS_INVALID_SPEED = 15,        ///< A speed is zero, negative or not finite.
     FS_STATUS_INVALID_FUSE = 16,         ///< A fuse time is zero, negative or not finite.
     FS_STATUS_INVALID_SETTING = 17,      ///< A settings field (an enumeration too) is outside its range.
     FS_STATUS_TIME_WENT_BACKWARDS = 18,  ///< A time is earlier than the previous call's (not used yet here).
-    FS_STATUS_NO_UPDATE = 19,            ///< No update accepted yet (not used yet here).
+    FS_STATUS_NO_UPDATE = 19,            ///< A dead-reckoning receiver has no update yet.
     FS_STATUS_OUT_OF_RANGE = 20,         ///< Beyond the precision envelope: a position farther than 1e5 m
                                          ///< (1e8 m in a double-precision build) on an axis, a speed above 1e6 m/s.
     /// C API only: the prediction succeeded but the trajectory has more points than the buffer
@@ -913,6 +916,172 @@ FS_API size_t fs_throw_plan_scratch_size(const fs_throw_plan_request* request) F
 FS_API fs_status fs_plan_throw(const fs_throw_plan_request* request, const fs_world* world, fs_throw_plan* plans,
                                size_t capacity, fs_trajectory_point* scratch, size_t scratch_capacity,
                                fs_throw_plan_result* out) FS_NOEXCEPT;
+
+/* ---- Dead reckoning (network replication) ------------------------------------------------- */
+
+/// The DIS (IEEE 1278.1) dead-reckoning models (fs_dr_state::algorithm); dead_reckoning.h
+/// documents each. F/R: fixed or rotating orientation; P/V: constant velocity or acceleration;
+/// W/B: velocity and acceleration in world or body axes.
+enum {
+    FS_DR_STATIC = 1,  ///< does not move or turn.
+    FS_DR_FPW = 2,     ///< fixed orientation, constant world velocity: `p + v t`.
+    FS_DR_RPW = 3,     ///< rotating, constant world velocity.
+    FS_DR_RVW = 4,     ///< rotating, constant world acceleration: `p + v t + a t^2 / 2`.
+    FS_DR_FVW = 5,     ///< fixed orientation, constant world acceleration.
+    FS_DR_FPB = 6,     ///< fixed orientation, constant body velocity.
+    FS_DR_RPB = 7,     ///< rotating, constant body velocity (turns with the body).
+    FS_DR_RVB = 8,     ///< rotating, constant body acceleration.
+    FS_DR_FVB = 9,     ///< fixed orientation, constant body acceleration.
+};
+
+/// The state an entity last reported (foresight::DeadReckoningState). 80 bytes, alignment 8:
+/// position 0, velocity 24, acceleration 36, orientation 48, angular_velocity 64, algorithm 76.
+typedef struct fs_dr_state {
+    fs_dvec3 position;         ///< [Units: m], world axes.
+    fs_vec3 velocity;          ///< [Units: m/s]; world axes (FS_DR_*W) or body axes (FS_DR_*B).
+    fs_vec3 acceleration;      ///< [Units: m/s^2]; axes as `velocity`; used by RVW, FVW, RVB, FVB.
+    fs_quat orientation;       ///< body-to-world; non-zero (normalised here).
+    fs_vec3 angular_velocity;  ///< [Units: rad/s], body axes; used by RPW, RVW, RPB, RVB.
+    int32_t algorithm;         ///< FS_DR_* (1 to 9); another value gives INVALID_ALGORITHM.
+} fs_dr_state;
+
+/// An extrapolated state (foresight::DeadReckoningResult). 56 bytes, alignment 8: position 0,
+/// velocity 24, orientation 36, reserved 52.
+typedef struct fs_dr_result {
+    fs_dvec3 position;    ///< [Units: m], world axes.
+    fs_vec3 velocity;     ///< [Units: m/s], in the input velocity's axes (world *W, body *B).
+    fs_quat orientation;  ///< body-to-world, unit.
+    float reserved;       ///< padding: written as 0.
+} fs_dr_result;
+
+/// The DIS name of an algorithm: "STATIC", "FPW", ... "FVB"; "?" for another value. Never NULL,
+/// static.
+FS_API const char* fs_dr_algorithm_name(int32_t algorithm) FS_NOEXCEPT;
+
+/// Extrapolates `state` by `time` with its algorithm (foresight::predictDeadReckoning).
+/// @param state  the last update (every field checked, used or not).
+/// @param time   [Units: s] [Limit: >= 0, finite], since the update's timestamp.
+/// @param out    receives the extrapolated state; written only on OK.
+/// @return OK, NULL_POINTER, INVALID_ALGORITHM, NON_FINITE_INPUT, ZERO_QUATERNION,
+///         NEGATIVE_TIME or NON_FINITE_RESULT.
+FS_API fs_status fs_dr_predict(const fs_dr_state* state, float time, fs_dr_result* out) FS_NOEXCEPT;
+
+/// Extrapolates `count` entities to one time (foresight::predictDeadReckoningBatch): entity i's
+/// result is fs_dr_predict(&states[i], (float)max(time - timestamps[i], 0)) bit for bit. An
+/// entity that is refused (or has a NaN timestamp) gets its state as given (age 0, velocity and
+/// orientation copied) and is counted. Allocates nothing.
+/// @param states      `count` updates (may be NULL when count is 0).
+/// @param timestamps  `count` timestamps [Units: s] (may be NULL when count is 0).
+/// @param count       entities.
+/// @param time        [Units: s] the time to extrapolate to.
+/// @param out         `count` results (may be NULL when count is 0).
+/// @param refused     receives the number of entities refused (may be NULL).
+/// @return OK (also when entities are refused) or NULL_POINTER (nothing written).
+FS_API fs_status fs_dr_predict_batch(const fs_dr_state* states, const double* timestamps, size_t count, double time,
+                                     fs_dr_result* out, size_t* refused) FS_NOEXCEPT;
+
+/// How a receiver shows a remote entity (fs_dr_receiver_settings::mode).
+enum {
+    FS_DR_MODE_EXTRAPOLATE = 0,  ///< the newest update extrapolated to now, with smoothing.
+    FS_DR_MODE_INTERPOLATE = 1,  ///< interpolation_delay in the past, between buffered updates.
+};
+
+/// How a receiver hides corrections in FS_DR_MODE_EXTRAPOLATE (fs_dr_receiver_settings::smoothing).
+enum {
+    FS_DR_SMOOTH_SNAP = 0,                 ///< jump to the new update's extrapolation.
+    FS_DR_SMOOTH_LINEAR_BLEND = 1,         ///< blend old to new over blend_time.
+    FS_DR_SMOOTH_PROJECTIVE_VELOCITY = 2,  ///< projective velocity blending (default).
+    FS_DR_SMOOTH_EXPONENTIAL_DECAY = 3,    ///< the offset decays with half-life decay_half_life.
+};
+
+/// What fs_dr_receiver_receive did with an update (foresight::UpdateOutcome).
+enum {
+    FS_DR_ACCEPTED = 0,       ///< applied, smoothed.
+    FS_DR_SNAPPED = 1,        ///< applied with a snap (first update, Snap, teleport, sender restart).
+    FS_DR_BUFFERED = 2,       ///< Interpolate mode: stored.
+    FS_DR_OUT_OF_ORDER = 3,   ///< dropped: older than what is shown.
+    FS_DR_DUPLICATE = 4,      ///< dropped: same timestamp as one already received.
+    FS_DR_INVALID = 5,        ///< dropped: NaN/infinite fields, zero quaternion, unknown algorithm.
+    FS_DR_TOO_FAR_AHEAD = 6,  ///< dropped: stamped more than max_future_skew after its receive time.
+};
+
+/// A receiver's settings (foresight::ReceiverSettings; replication.h documents each).
+/// fs_dr_receiver_settings_default() gives the C++ defaults. 36 bytes, alignment 4: mode 0,
+/// smoothing 4, blend_time 8, decay_half_life 12, teleport_distance 16, extrapolation_limit 20,
+/// interpolation_delay 24, max_future_skew 28, restart_after 32.
+typedef struct fs_dr_receiver_settings {
+    int32_t mode;               ///< FS_DR_MODE_* (default EXTRAPOLATE).
+    int32_t smoothing;          ///< FS_DR_SMOOTH_* (default PROJECTIVE_VELOCITY).
+    float blend_time;           ///< [Units: s] [Limit: > 0, finite] (default 0.2).
+    float decay_half_life;      ///< [Units: s] [Limit: > 0, finite] (default 0.1).
+    float teleport_distance;    ///< [Units: m] [Limit: > 0; infinity disables] (default 10).
+    float extrapolation_limit;  ///< [Units: s] [Limit: >= 0; infinity disables] (default 0.25).
+    float interpolation_delay;  ///< [Units: s] [Limit: > 0, finite] (default 0.1).
+    float max_future_skew;      ///< [Units: s] [Limit: >= 0; infinity disables] (default 1).
+    float restart_after;        ///< [Units: s] [Limit: > 0; infinity disables] (default 10).
+} fs_dr_receiver_settings;
+
+/// The pose a receiver shows (foresight::ReceivedPose). 56 bytes, alignment 8: position 0,
+/// velocity 24, orientation 36, held 52.
+typedef struct fs_dr_pose {
+    fs_dvec3 position;    ///< [Units: m], world axes.
+    fs_vec3 velocity;     ///< [Units: m/s], world axes (converted for body-axis models).
+    fs_quat orientation;  ///< body-to-world, unit.
+    int32_t held;         ///< 1: extrapolation_limit stopped the extrapolation; else 0.
+} fs_dr_pose;
+
+/// A receiver's counters (foresight::ReceiverCounters). 80 bytes, alignment 8, ten uint64_t in
+/// this order.
+typedef struct fs_dr_receiver_counters {
+    uint64_t accepted;        ///< updates applied or buffered.
+    uint64_t snaps;           ///< updates that snapped.
+    uint64_t teleports;       ///< snaps caused by teleport_distance.
+    uint64_t out_of_order;    ///< FS_DR_OUT_OF_ORDER updates.
+    uint64_t duplicates;      ///< FS_DR_DUPLICATE updates.
+    uint64_t invalid;         ///< FS_DR_INVALID updates.
+    uint64_t held;            ///< samples that returned a held pose.
+    uint64_t future_updates;  ///< updates stamped after their receive time (within max_future_skew).
+    uint64_t too_far_ahead;   ///< FS_DR_TOO_FAR_AHEAD updates.
+    uint64_t clock_restarts;  ///< older updates taken as a sender restart.
+} fs_dr_receiver_counters;
+
+/// A receiver of one remote entity (foresight::DeadReckoningReceiver): extrapolates or
+/// interpolates its updates and blends corrections. Opaque: made by fs_dr_receiver_create,
+/// freed by fs_dr_receiver_destroy. Fixed size: only creating it allocates.
+typedef struct fs_dr_receiver fs_dr_receiver;
+
+/// The defaults of foresight::ReceiverSettings (see fs_dr_receiver_settings).
+FS_API fs_dr_receiver_settings fs_dr_receiver_settings_default(void) FS_NOEXCEPT;
+
+/// Makes a receiver after checking `settings`.
+/// @param settings  the settings (required).
+/// @param out       receives the receiver (written only on OK); free it with fs_dr_receiver_destroy.
+/// @return OK, NULL_POINTER, INVALID_SETTING (an enumeration or a range) or OUT_OF_MEMORY.
+FS_API fs_status fs_dr_receiver_create(const fs_dr_receiver_settings* settings, fs_dr_receiver** out) FS_NOEXCEPT;
+
+/// Frees a receiver. NULL is allowed (does nothing).
+FS_API void fs_dr_receiver_destroy(fs_dr_receiver* receiver) FS_NOEXCEPT;
+
+/// Takes an update stamped `timestamp` (sender clock) arriving at `receive_time`; bad or stale
+/// updates are dropped and counted (the outcome says which).
+/// @param timestamp     [Units: s] the sender's time of the state.
+/// @param receive_time  [Units: s] the receiver's time now; a correction starts here.
+/// @param outcome       receives an FS_DR_ACCEPTED ... FS_DR_TOO_FAR_AHEAD value (may be NULL).
+/// @return OK (whatever the outcome) or NULL_POINTER (receiver, state).
+FS_API fs_status fs_dr_receiver_receive(fs_dr_receiver* receiver, double timestamp, const fs_dr_state* state,
+                                        double receive_time, int32_t* outcome) FS_NOEXCEPT;
+
+/// The pose to show at `time` [Units: s] (times may go backwards).
+/// @return OK, NULL_POINTER, NO_UPDATE (nothing accepted yet), NON_FINITE_INPUT (time) or
+///         NON_FINITE_RESULT (only with an infinite extrapolation_limit); `out` written only on OK.
+FS_API fs_status fs_dr_receiver_sample(fs_dr_receiver* receiver, double time, fs_dr_pose* out) FS_NOEXCEPT;
+
+/// The counters since creation or the last reset.
+/// @return OK or NULL_POINTER.
+FS_API fs_status fs_dr_receiver_get_counters(const fs_dr_receiver* receiver, fs_dr_receiver_counters* out) FS_NOEXCEPT;
+
+/// Forgets every update and counter (the settings stay). NULL is allowed (does nothing).
+FS_API void fs_dr_receiver_reset(fs_dr_receiver* receiver) FS_NOEXCEPT;
 
 #ifdef __cplusplus
 }  // extern "C"
