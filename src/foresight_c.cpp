@@ -645,20 +645,31 @@ fs_status predictInto(fs_dvec3 position, fs_vec3 velocity, float time, const Pro
     // The trajectory is predicted in C++ layout into the caller's buffer, then converted in
     // place, last point first: an fs_trajectory_point is at least as large as a TrajectoryPoint,
     // so C point i covers only C++ points i and later (already converted, or read just before).
-    // No allocation.
+    // No allocation. Only the points a prediction usually needs are made C++ points first
+    // (trajectoryCapacity: all of a Stepped or Engine trajectory, an Exact one with up to 64
+    // events), so that a large buffer costs nothing per call; a prediction that needs more, when
+    // the buffer has the room, runs again on the whole buffer (deterministic: the same result).
     static_assert(sizeof(TrajectoryPoint) <= sizeof(fs_trajectory_point));
     static_assert(alignof(TrajectoryPoint) <= alignof(fs_trajectory_point));
     std::optional<CheckedCallbackWorld> callbackWorld;
     const CollisionWorld* cppWorld = worldFor(world, callbackWorld);
-    std::span<TrajectoryPoint> trajectory;
-    if (capacity > 0) {
-        auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
-        std::uninitialized_default_construct_n(first, capacity);
-        trajectory = std::span<TrajectoryPoint>(first, capacity);
-    }
+    auto* first = reinterpret_cast<TrajectoryPoint*>(static_cast<void*>(points));
+    std::size_t prepared = 0;
+    const auto prepare = [&](std::size_t count) {
+        if (count > prepared) std::uninitialized_default_construct_n(first + prepared, count - prepared);
+        prepared = std::max(prepared, count);
+        return capacity > 0 ? std::span<TrajectoryPoint>(first, prepared) : std::span<TrajectoryPoint>();
+    };
+    const bool usual = std::isfinite(time) && time >= 0.0f && validateProjectileSettings(cppSettings) == Status::Ok;
+    std::span<TrajectoryPoint> trajectory =
+        prepare(std::min(capacity, usual ? trajectoryCapacity(time, cppSettings) : std::size_t{16}));
     ProjectileResult result;
-    const Status s =
-        predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
+    Status s = predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
+    if (s == Status::Ok && result.trajectoryNeeded > prepared && capacity > prepared &&
+        !(callbackWorld && callbackWorld->invalid())) {
+        trajectory = prepare(capacity);
+        s = predictProjectile(toCpp(position), toCpp(velocity), time, cppSettings, cppWorld, trajectory, result);
+    }
     if (callbackWorld && callbackWorld->invalid()) return FS_STATUS_INVALID_CALLBACK_HIT;
     if (s != Status::Ok) return toC(s);
     for (std::size_t i = result.trajectorySize; i-- > 0;) {

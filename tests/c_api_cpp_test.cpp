@@ -912,3 +912,42 @@ TEST(CApi, DeadReckoningDefaults) {
     for (int a = 1; a <= kDeadReckoningAlgorithmCount; ++a)
         EXPECT_STREQ(fs_dr_algorithm_name(a), deadReckoningAlgorithmName(static_cast<DeadReckoningAlgorithm>(a)));
 }
+
+// A ball that bounces hundreds of times (restitution 0.95 on a floor): more events than the C API
+// prepares at first (trajectoryCapacity's 64), so it predicts again on the whole buffer. Its
+// trajectory must still be the C++ one, point for point, and a buffer one point too small must
+// say how many are needed.
+TEST(CApi, LongExactTrajectoryMatchesCpp) {
+    StaticWorld world;
+    ASSERT_EQ(world.add(Plane{Vec3(0, 1, 0), 0}), Status::Ok);
+    fs_world* cWorld = fs_world_create();
+    ASSERT_NE(cWorld, nullptr);
+    const fs_plane cPlane{{0, 1, 0}, 0.0f, 0.0};
+    ASSERT_EQ(fs_world_add_plane(cWorld, &cPlane, nullptr), FS_STATUS_OK);
+    ProjectileSettings settings;
+    settings.restitution = 0.95f;
+    fs_projectile_settings cSettings = fs_projectile_settings_default();
+    cSettings.restitution = 0.95f;
+    std::vector<TrajectoryPoint> cppPoints(8192);
+    std::vector<fs_trajectory_point> cPoints(8192);
+    ProjectileResult cpp;
+    ASSERT_EQ(predictProjectile(RVec3(0, 1, 0), Vec3(1, 0, 0), 20.0f, settings, &world, cppPoints, cpp), Status::Ok);
+    ASSERT_GT(cpp.bounces, 64u);
+    ASSERT_GT(cpp.trajectorySize, trajectoryCapacity(20.0f, settings));
+    fs_projectile_result c{};
+    ASSERT_EQ(fs_predict_projectile(fs_dvec3{0, 1, 0}, fs_vec3{1, 0, 0}, 20.0f, &cSettings, cWorld, cPoints.data(),
+                                    cPoints.size(), &c),
+              FS_STATUS_OK);
+    EXPECT_EQ(c.bounces, cpp.bounces);
+    ASSERT_EQ(c.trajectory_size, cpp.trajectorySize);
+    for (std::size_t k = 0; k < cpp.trajectorySize; ++k) {
+        EXPECT_TRUE(same(cPoints[k].time, cppPoints[k].time)) << k;
+        EXPECT_TRUE(samePosition(cPoints[k].position, cppPoints[k].position)) << k;
+    }
+    EXPECT_EQ(fs_predict_projectile(fs_dvec3{0, 1, 0}, fs_vec3{1, 0, 0}, 20.0f, &cSettings, cWorld, cPoints.data(),
+                                    cpp.trajectorySize - 1, &c),
+              FS_STATUS_BUFFER_TOO_SMALL);
+    EXPECT_EQ(c.trajectory_needed, cpp.trajectoryNeeded);
+    EXPECT_EQ(c.trajectory_size, cpp.trajectorySize - 1);
+    fs_world_destroy(cWorld);
+}

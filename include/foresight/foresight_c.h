@@ -365,7 +365,9 @@ typedef struct fs_cast_hit {
 /// the segment enters (moving against its normal); a segment that starts on a surface and moves
 /// into it hits at fraction 0; a segment that starts deep inside a solid, or moves away from a
 /// surface, does not hit it. It is called on the thread that predicts, many times per
-/// prediction (about one call per step), and must not throw, longjmp or unwind across the call.
+/// prediction (about one call per step; an Exact prediction with more than 64 bounces and
+/// contact changes into a buffer with room for them runs twice), must answer the same cast the
+/// same way, and must not throw, longjmp or unwind across the call.
 typedef int32_t (*fs_cast_function)(void* context, const fs_segment_cast* cast, fs_cast_hit* hit);
 
 /// A world whose casts are answered by `cast(context, ...)` (foresight::CallbackWorld): how a
