@@ -99,6 +99,14 @@ if ! grep -q 'viewer\.demo_page' <<<"$registered"; then
     echo "test.sh: the viewer's browser tests are not registered in build/ (Node.js, viewer/node_modules or chromium missing?)" >&2
     exit 1
 fi
+# The language bindings must be there too: install-deps.sh installs Python with pybind11 and
+# NumPy, mono and emscripten, and CMake registers each binding's tests when it finds them.
+for binding in python_pytest csharp_binding wasm.api; do
+    if ! grep -q "$binding" <<<"$registered"; then
+        echo "test.sh: the $binding tests are not registered in build/ (a binding's toolchain missing? see bindings/)" >&2
+        exit 1
+    fi
+done
 run_ctest build
 
 step "installing build/ into a temporary prefix and building examples/ against it"
