@@ -47,6 +47,11 @@ EMSCRIPTEN_KEEPALIVE void fsw_aim_shot_default(fs_aim_shot* out) noexcept {
     if (out != nullptr) *out = fs_aim_shot_default();
 }
 
+/// Writes fs_dr_receiver_settings_default() to `out`.
+EMSCRIPTEN_KEEPALIVE void fsw_dr_receiver_settings_default(fs_dr_receiver_settings* out) noexcept {
+    if (out != nullptr) *out = fs_dr_receiver_settings_default();
+}
+
 /// The end of the heap (sbrk(0)) [Units: bytes]: the allocator takes more memory only when what it
 /// freed is not enough, so a loop that frees all it allocates leaves it where it was (the package's
 /// leak test).
