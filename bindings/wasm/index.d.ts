@@ -269,6 +269,68 @@ export interface FiringSolution {
     elevation: number;
 }
 
+/** A predicted grenade as a danger. */
+export interface ProjectileDanger {
+    /** when it explodes [s] >= 0. */
+    fuseTime: number;
+    /** the blast's radius [m] >= 0. */
+    blastRadius: number;
+    /** before the fuse, closer than this to the grenade is unsafe [m] (default 0). */
+    contactRadius?: number;
+}
+export interface DangerZone {
+    /** the grenade at the fuse time [m]. */
+    center: Vec3;
+    /** [m] */
+    radius: number;
+    /** the fuse time [s]. */
+    time: number;
+}
+export interface ClosestApproach {
+    /** [m]; for vehicles the separation, negative when they overlap. */
+    distance: number;
+    /** [s] */
+    time: number;
+}
+/** A vehicle as an oriented box on the exact arc of predictVehicleExact. */
+export interface VehicleBody extends Omit<VehicleStateLike, 'angularVelocity'>, VehicleSettings {
+    /** [rad/s] in `frame`; default 0. */
+    angularVelocity?: Vec3Like;
+    /** [m] > 0, local axes (default 0.9, 0.7, 2.2). */
+    halfExtents?: Vec3Like;
+    /** the box's centre from position, local axes [m] (default 0). */
+    boxCenter?: Vec3Like;
+}
+/** A character: a sphere, or a capsule of constant direction, moving as p + v t + a t^2 / 2. */
+export interface CharacterBody {
+    /** [m] */
+    position: Vec3Like;
+    /** [m/s], default 0. */
+    velocity?: Vec3Like;
+    /** [m/s^2], default 0. */
+    acceleration?: Vec3Like;
+    /** [m] >= 0 (default 0.4). */
+    radius?: number;
+    /** half the capsule's inner segment, world axes [m]; default 0 (a sphere). */
+    halfAxis?: Vec3Like;
+}
+export interface ApproachSettings {
+    /** [m] > 0 (default 0.001). */
+    tolerance?: number;
+    /** separations computed per query at most (default 65536). */
+    maxEvaluations?: number;
+}
+export interface VehicleContact {
+    /** they come within the tolerance before the horizon. */
+    contact: boolean;
+    /** first contact [s], valid when contact. */
+    time: number;
+    /** the separation at time (at the horizon if no contact) [m]. */
+    separation: number;
+    /** separations computed. */
+    evaluations: number;
+}
+
 /** A remote entity's last update for dead reckoning. */
 export interface DeadReckoningStateLike {
     /** [m], world axes. */
@@ -446,6 +508,28 @@ export declare class Foresight {
     };
     /** Every firing solution, earliest first; [] when unreachable. */
     aimProjectile(shot: AimShot, target: AimTarget): FiringSolution[];
+    /** Where and when a predicted grenade explodes (trajectory as predictProjectile returns it). */
+    computeDangerZone(trajectory: Trajectory, danger: ProjectileDanger): DangerZone;
+    /** Whether point [m] is safe at time [s]. */
+    isPointSafe(trajectory: Trajectory, danger: ProjectileDanger, point: Vec3Like, time: number): boolean;
+    /** When danger starts at point [m] [s]; null: never. */
+    findDangerStart(trajectory: Trajectory, danger: ProjectileDanger, point: Vec3Like): number | null;
+    /** The path's closest approach to point over [fromTime, untilTime] [s] (defaults: 0, the last point's time). */
+    findClosestPathApproach(trajectory: Trajectory, point: Vec3Like, fromTime?: number, untilTime?: number): ClosestApproach;
+    /** The first contact of a vehicle and a character within horizon [s]. */
+    findVehicleContact(
+        vehicle: VehicleBody,
+        character: CharacterBody,
+        horizon: number,
+        settings?: ApproachSettings,
+    ): VehicleContact;
+    /** The closest approach of a vehicle and a character within horizon [s]. */
+    findClosestVehicleApproach(
+        vehicle: VehicleBody,
+        character: CharacterBody,
+        horizon: number,
+        settings?: ApproachSettings,
+    ): ClosestApproach;
     /** The DIS name of an algorithm ("STATIC" ... "FVB"; "?" for another value). */
     deadReckoningAlgorithmName(algorithm: DeadReckoningName | number): string;
     /** A remote entity's last update extrapolated by time [s] >= 0 with its algorithm. */

@@ -155,6 +155,9 @@ const receiverKeys = ['mode', 'smoothing', 'blendTime', 'decayHalfLife', 'telepo
 const counterNames = ['accepted', 'snaps', 'teleports', 'outOfOrder', 'duplicates', 'invalid', 'held', 'futureUpdates',
     'tooFarAhead', 'clockRestarts'];
 const outcomeNames = Object.keys(ReceiveOutcome);
+const vehicleBodyKeys = ['position', 'velocity', 'orientation', 'angularVelocity', 'frame', 'forward', 'halfExtents',
+    'boxCenter'];
+const characterKeys = ['position', 'velocity', 'acceleration', 'radius', 'halfAxis'];
 const nameOf = (table, value) => Object.keys(table).find((k) => table[k] === value);
 
 /**
@@ -203,6 +206,9 @@ export class Foresight {
     #shotDefaults;
     #vehicleDefaults;
     #receiverDefaults;
+    #vehicleBodyDefaults;
+    #characterDefaults;
+    #approachDefaults;
     #batch = 0; // dead-reckoning batch buffer: states, timestamps, results
     #batchCapacity = 0; // its size in entities
 
@@ -230,6 +236,18 @@ export class Foresight {
         this.#vehicleDefaults = Object.freeze({
             frame: this.#i32[b], forward: Object.freeze(xyz(this.#f32.subarray(b + 1, b + 4))),
         });
+        core._fsw_vehicle_body_default(s + IN_A);
+        this.#views();
+        this.#vehicleBodyDefaults = Object.freeze({
+            halfExtents: Object.freeze(xyz(this.#f32.subarray(b + 20, b + 23))),
+            boxCenter: Object.freeze(xyz(this.#f32.subarray(b + 23, b + 26))),
+        });
+        core._fsw_character_body_default(s + IN_A);
+        this.#views();
+        this.#characterDefaults = Object.freeze({ radius: this.#f32[b + 12] });
+        core._fsw_approach_settings_default(s + IN_A);
+        this.#views();
+        this.#approachDefaults = Object.freeze({ tolerance: this.#f32[b], maxEvaluations: this.#u32[b + 1] });
         core._fsw_dr_receiver_settings_default(s + IN_A);
         this.#views();
         this.#receiverDefaults = Object.freeze({
@@ -791,6 +809,225 @@ export class Foresight {
             trajectory.normal[3 * k + 2] = f32[f + 13];
         }
         return trajectory;
+    }
+
+    // ---- Danger -------------------------------------------------------------------------------
+
+    // Writes a trajectory as predictProjectile returns it ({length, time, event, position,
+    // velocity, normal}) to the trajectory buffer; returns its length.
+    #writeTrajectory(trajectory, operation) {
+        if (trajectory === null || typeof trajectory !== 'object' || !Number.isInteger(trajectory.length)) {
+            throw new TypeError(`${operation}: trajectory must be a trajectory returned by predictProjectile`);
+        }
+        const n = trajectory.length;
+        for (const [key, per] of [['time', 1], ['event', 1], ['position', 3], ['velocity', 3], ['normal', 3]]) {
+            const a = trajectory[key];
+            if (a === null || typeof a !== 'object' || a.length !== per * n) {
+                throw new RangeError(`${operation}: trajectory.${key} must have ${per * n} numbers`);
+            }
+        }
+        this.#reserve(n);
+        this.#views();
+        const f64 = this.#f64, f32 = this.#f32, i32 = this.#i32;
+        const { time, event, position, velocity, normal } = trajectory;
+        for (let k = 0, at = this.#points; k < n; ++k, at += POINT_BYTES) {
+            const f = at >> 2, d = (at + 8) >> 3;
+            f32[f] = time[k];
+            i32[f + 1] = event[k];
+            f64[d] = position[3 * k]; f64[d + 1] = position[3 * k + 1]; f64[d + 2] = position[3 * k + 2];
+            f32[f + 8] = velocity[3 * k]; f32[f + 9] = velocity[3 * k + 1]; f32[f + 10] = velocity[3 * k + 2];
+            f32[f + 11] = normal[3 * k]; f32[f + 12] = normal[3 * k + 1]; f32[f + 13] = normal[3 * k + 2];
+        }
+        return n;
+    }
+
+    #writeDanger(at, danger) {
+        const o = checkKeys(danger, ['fuseTime', 'blastRadius', 'contactRadius'], 'danger');
+        const fuse = num(o.fuseTime, 'danger.fuseTime');
+        const blast = num(o.blastRadius, 'danger.blastRadius');
+        const contact = num(o.contactRadius ?? 0, 'danger.contactRadius');
+        this.#views();
+        this.#f32[at >> 2] = fuse;
+        this.#f32[(at >> 2) + 1] = blast;
+        this.#f32[(at >> 2) + 2] = contact;
+    }
+
+    #writePoint(point, name) {
+        const p = vec(point, name);
+        this.#views();
+        this.#f64.set(p, (this.#scratch + POSITION) >> 3);
+        return this.#scratch + POSITION;
+    }
+
+    /**
+     * Where and when a predicted grenade explodes (foresight::computeDangerZone): its position
+     * on the trajectory at the fuse time, the blast radius, the fuse time.
+     * @param {Trajectory} trajectory  as predictProjectile returns it (run long enough to reach the fuse).
+     * @param {ProjectileDanger} danger  fuseTime [s] >= 0, blastRadius [m] >= 0, contactRadius [m]
+     *     (default 0: nothing is dangerous before the fuse).
+     * @returns {{center: Vec3, radius: number, time: number}}
+     */
+    computeDangerZone(trajectory, danger) {
+        const n = this.#writeTrajectory(trajectory, 'computeDangerZone');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        this.#check(this.#core._fs_compute_danger_zone(this.#points, n, s + IN_A, s + OUT), 'computeDangerZone');
+        this.#views();
+        const d = (s + OUT) >> 3, f = (s + OUT) >> 2;
+        return { center: xyz(this.#f64.subarray(d, d + 3)), radius: this.#f32[f + 6], time: this.#f32[f + 7] };
+    }
+
+    /**
+     * Whether `point` is safe at `time` (foresight::isPointSafe): outside the blast from the fuse
+     * time on (exactly blastRadius away is unsafe), farther than contactRadius from the
+     * projectile before it.
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {ProjectileDanger} danger
+     * @param {Vec3Like} point  [m].
+     * @param {number} time  [s].
+     * @returns {boolean}
+     */
+    isPointSafe(trajectory, danger, point, time) {
+        const n = this.#writeTrajectory(trajectory, 'isPointSafe');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        const at = this.#writePoint(point, 'point');
+        this.#check(this.#core._fsw_is_point_safe(this.#points, n, s + IN_A, at, num(time, 'time'), s + COUNT),
+            'isPointSafe');
+        this.#views();
+        return this.#i32[(s + COUNT) >> 2] !== 0;
+    }
+
+    /**
+     * When danger starts at `point` (foresight::findDangerStart): the earliest time isPointSafe
+     * says false, or null when it never does.
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {ProjectileDanger} danger
+     * @param {Vec3Like} point  [m].
+     * @returns {number|null}  [s].
+     */
+    findDangerStart(trajectory, danger, point) {
+        const n = this.#writeTrajectory(trajectory, 'findDangerStart');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        const at = this.#writePoint(point, 'point');
+        this.#check(this.#core._fsw_find_danger_start(this.#points, n, s + IN_A, at, s + OUT), 'findDangerStart');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return this.#i32[f] !== 0 ? this.#f32[f + 1] : null;
+    }
+
+    /**
+     * The projectile's closest approach to `point` over [fromTime, untilTime], exact per segment
+     * (foresight::findClosestPathApproach).
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {Vec3Like} point  [m].
+     * @param {number} [fromTime]  [s] (default 0).
+     * @param {number} [untilTime]  [s] (default the trajectory's last time).
+     * @returns {{distance: number, time: number}}  [m], [s].
+     */
+    findClosestPathApproach(trajectory, point, fromTime = 0, untilTime = undefined) {
+        const n = this.#writeTrajectory(trajectory, 'findClosestPathApproach');
+        const s = this.#scratch;
+        const at = this.#writePoint(point, 'point');
+        const from = num(fromTime, 'fromTime');
+        const until = untilTime === undefined ? (n > 0 ? trajectory.time[n - 1] : 0) : num(untilTime, 'untilTime');
+        this.#check(this.#core._fsw_find_closest_path_approach(this.#points, n, at, from, until, s + OUT),
+            'findClosestPathApproach');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return { distance: this.#f32[f], time: this.#f32[f + 1] };
+    }
+
+    // ---- Vehicle contact ----------------------------------------------------------------------
+
+    // fs_vehicle_body at IN_A, fs_character_body at IN_B, fs_approach_settings at POSITION.
+    #writeContactQuery(vehicle, character, settings) {
+        const v = checkKeys(vehicle, vehicleBodyKeys, 'vehicle');
+        const c = checkKeys(character, characterKeys, 'character');
+        const o = checkKeys(settings, ['tolerance', 'maxEvaluations'], 'settings');
+        if (vehicle === undefined || vehicle === null) throw new TypeError('vehicle must be {position, velocity, ...}');
+        if (character === undefined || character === null) throw new TypeError('character must be {position, ...}');
+        const vd = this.#vehicleBodyDefaults, cd = this.#characterDefaults, ad = this.#approachDefaults;
+        const vp = vec(v.position, 'vehicle.position');
+        const vv = vec(v.velocity, 'vehicle.velocity');
+        const q = quat(v.orientation ?? [0, 0, 0, 1], 'vehicle.orientation');
+        const w = vec(v.angularVelocity ?? [0, 0, 0], 'vehicle.angularVelocity');
+        const frame = enumValue(Frame, v.frame ?? this.#vehicleDefaults.frame, 'vehicle.frame');
+        const forward = vec(v.forward ?? this.#vehicleDefaults.forward, 'vehicle.forward');
+        const half = vec(v.halfExtents ?? vd.halfExtents, 'vehicle.halfExtents');
+        const boxCenter = vec(v.boxCenter ?? vd.boxCenter, 'vehicle.boxCenter');
+        const cp = vec(c.position, 'character.position');
+        const cv = vec(c.velocity ?? [0, 0, 0], 'character.velocity');
+        const ca = vec(c.acceleration ?? [0, 0, 0], 'character.acceleration');
+        const radius = num(c.radius ?? cd.radius, 'character.radius');
+        const halfAxis = vec(c.halfAxis ?? [0, 0, 0], 'character.halfAxis');
+        const tolerance = num(o.tolerance ?? ad.tolerance, 'settings.tolerance');
+        const maxEvaluations = uint32(o.maxEvaluations ?? ad.maxEvaluations, 'settings.maxEvaluations');
+        const s = this.#scratch;
+        this.#views();
+        let d = (s + IN_A) >> 3, f = (s + IN_A) >> 2;
+        this.#f64.set(vp, d);
+        this.#f32.set(vv, f + 6);
+        this.#f32.set(q, f + 9);
+        this.#f32.set(w, f + 13);
+        this.#i32[f + 16] = frame;
+        this.#f32.set(forward, f + 17);
+        this.#f32.set(half, f + 20);
+        this.#f32.set(boxCenter, f + 23);
+        d = (s + IN_B) >> 3; f = (s + IN_B) >> 2;
+        this.#f64.set(cp, d);
+        this.#f32.set(cv, f + 6);
+        this.#f32.set(ca, f + 9);
+        this.#f32[f + 12] = radius;
+        this.#f32.set(halfAxis, f + 13);
+        f = (s + POSITION) >> 2;
+        this.#f32[f] = tolerance;
+        this.#u32[f + 1] = maxEvaluations;
+    }
+
+    /**
+     * The first time in [0, horizon] at which a vehicle (an oriented box on the exact arc of
+     * predictVehicleExact) and a character (a sphere or capsule moving as p + v t + a t^2 / 2)
+     * touch (foresight::findVehicleContact: never later than the true first overlap).
+     * @param {VehicleBody} vehicle  position [m], velocity [m/s], orientation, angularVelocity
+     *     [rad/s], frame, forward, halfExtents [m] (default 0.9, 0.7, 2.2), boxCenter [m] (default 0).
+     * @param {CharacterBody} character  position [m], velocity [m/s], acceleration [m/s^2],
+     *     radius [m] (default 0.4), halfAxis [m] (default 0: a sphere).
+     * @param {number} horizon  [s] >= 0.
+     * @param {ApproachSettings} [settings]  tolerance [m] (default 0.001), maxEvaluations (default 65536).
+     * @returns {{contact: boolean, time: number, separation: number, evaluations: number}}
+     */
+    findVehicleContact(vehicle, character, horizon, settings = undefined) {
+        this.#writeContactQuery(vehicle, character, settings);
+        const s = this.#scratch;
+        this.#check(this.#core._fs_find_vehicle_contact(s + IN_A, s + IN_B, num(horizon, 'horizon'), s + POSITION,
+            s + OUT), 'findVehicleContact');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return {
+            contact: this.#i32[f] !== 0, time: this.#f32[f + 1], separation: this.#f32[f + 2],
+            evaluations: this.#u32[f + 3],
+        };
+    }
+
+    /**
+     * The closest approach of a vehicle and a character in [0, horizon]
+     * (foresight::findClosestVehicleApproach): the separation, negative when they overlap.
+     * @param {VehicleBody} vehicle  as for findVehicleContact.
+     * @param {CharacterBody} character  as for findVehicleContact.
+     * @param {number} horizon  [s] >= 0.
+     * @param {ApproachSettings} [settings]
+     * @returns {{distance: number, time: number}}  [m], [s].
+     */
+    findClosestVehicleApproach(vehicle, character, horizon, settings = undefined) {
+        this.#writeContactQuery(vehicle, character, settings);
+        const s = this.#scratch;
+        this.#check(this.#core._fs_find_closest_vehicle_approach(s + IN_A, s + IN_B, num(horizon, 'horizon'),
+            s + POSITION, s + OUT), 'findClosestVehicleApproach');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return { distance: this.#f32[f], time: this.#f32[f + 1] };
     }
 
     // ---- Aim ----------------------------------------------------------------------------------
