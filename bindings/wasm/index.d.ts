@@ -76,6 +76,36 @@ export declare const AimConstraint: Readonly<{
     apexAboveTarget: 3;
 }>;
 export type AimConstraintName = keyof typeof AimConstraint;
+/** The DIS (IEEE 1278.1) dead-reckoning algorithms by their DIS names (F/R fixed or rotating, P/V velocity or acceleration, W/B world or body axes). */
+export declare const DeadReckoning: Readonly<{
+    STATIC: 1;
+    FPW: 2;
+    RPW: 3;
+    RVW: 4;
+    FVW: 5;
+    FPB: 6;
+    RPB: 7;
+    RVB: 8;
+    FVB: 9;
+}>;
+export type DeadReckoningName = keyof typeof DeadReckoning;
+/** How a Receiver shows its entity: the newest update extrapolated, or interpolationDelay in the past. */
+export declare const ReceiverMode: Readonly<{ extrapolate: 0; interpolate: 1 }>;
+export type ReceiverModeName = keyof typeof ReceiverMode;
+/** How a Receiver hides corrections when extrapolating. */
+export declare const Smoothing: Readonly<{ snap: 0; linearBlend: 1; projectiveVelocity: 2; exponentialDecay: 3 }>;
+export type SmoothingName = keyof typeof Smoothing;
+/** What Receiver.receive did with an update. */
+export declare const ReceiveOutcome: Readonly<{
+    accepted: 0;
+    snapped: 1;
+    buffered: 2;
+    outOfOrder: 3;
+    duplicate: 4;
+    invalid: 5;
+    tooFarAhead: 6;
+}>;
+export type ReceiveOutcomeName = keyof typeof ReceiveOutcome;
 
 /** Thrown when the library refuses an input: message "<function>: <the library's message>". */
 export declare class ForesightError extends Error {
@@ -239,6 +269,183 @@ export interface FiringSolution {
     elevation: number;
 }
 
+/** A predicted grenade as a danger. */
+export interface ProjectileDanger {
+    /** when it explodes [s] >= 0. */
+    fuseTime: number;
+    /** the blast's radius [m] >= 0. */
+    blastRadius: number;
+    /** before the fuse, closer than this to the grenade is unsafe [m] (default 0). */
+    contactRadius?: number;
+}
+export interface DangerZone {
+    /** the grenade at the fuse time [m]. */
+    center: Vec3;
+    /** [m] */
+    radius: number;
+    /** the fuse time [s]. */
+    time: number;
+}
+export interface ClosestApproach {
+    /** [m]; for vehicles the separation, negative when they overlap. */
+    distance: number;
+    /** [s] */
+    time: number;
+}
+/** A vehicle as an oriented box on the exact arc of predictVehicleExact. */
+export interface VehicleBody extends Omit<VehicleStateLike, 'angularVelocity'>, VehicleSettings {
+    /** [rad/s] in `frame`; default 0. */
+    angularVelocity?: Vec3Like;
+    /** [m] > 0, local axes (default 0.9, 0.7, 2.2). */
+    halfExtents?: Vec3Like;
+    /** the box's centre from position, local axes [m] (default 0). */
+    boxCenter?: Vec3Like;
+}
+/** A character: a sphere, or a capsule of constant direction, moving as p + v t + a t^2 / 2. */
+export interface CharacterBody {
+    /** [m] */
+    position: Vec3Like;
+    /** [m/s], default 0. */
+    velocity?: Vec3Like;
+    /** [m/s^2], default 0. */
+    acceleration?: Vec3Like;
+    /** [m] >= 0 (default 0.4). */
+    radius?: number;
+    /** half the capsule's inner segment, world axes [m]; default 0 (a sphere). */
+    halfAxis?: Vec3Like;
+}
+export interface ApproachSettings {
+    /** [m] > 0 (default 0.001). */
+    tolerance?: number;
+    /** separations computed per query at most (default 65536). */
+    maxEvaluations?: number;
+}
+export interface VehicleContact {
+    /** they come within the tolerance before the horizon. */
+    contact: boolean;
+    /** first contact [s], valid when contact. */
+    time: number;
+    /** the separation at time (at the horizon if no contact) [m]. */
+    separation: number;
+    /** separations computed. */
+    evaluations: number;
+}
+
+/** A remote entity's last update for dead reckoning. */
+export interface DeadReckoningStateLike {
+    /** [m], world axes. */
+    position: Vec3Like;
+    /** [m/s]; world axes (*W) or body axes (*B). */
+    velocity: Vec3Like;
+    /** [m/s^2], axes as velocity; default 0; used by RVW, FVW, RVB, FVB. */
+    acceleration?: Vec3Like;
+    /** body-to-world, non-zero; default identity. */
+    orientation?: QuatLike;
+    /** [rad/s], body axes; default 0; used by RPW, RVW, RPB, RVB. */
+    angularVelocity?: Vec3Like;
+    /** 'STATIC' ... 'FVB' or 1 ... 9; another number is refused (INVALID_ALGORITHM). */
+    algorithm: DeadReckoningName | number;
+}
+export interface DeadReckoningResult {
+    /** [m] */
+    position: Vec3;
+    /** [m/s], in the input velocity's axes. */
+    velocity: Vec3;
+    orientation: Quat;
+}
+/** Many entities, n = timestamp.length, as flat arrays (typed arrays or plain arrays). */
+export interface DeadReckoningBatch {
+    /** n update times [s]. */
+    timestamp: ArrayLike<number>;
+    /** 3n [m]. */
+    position: ArrayLike<number>;
+    /** 3n [m/s]. */
+    velocity: ArrayLike<number>;
+    /** n algorithms (numbers, or names in a plain array). */
+    algorithm: ArrayLike<number | DeadReckoningName>;
+    /** 3n [m/s^2]; default 0. */
+    acceleration?: ArrayLike<number>;
+    /** 4n, x y z w; default identity. */
+    orientation?: ArrayLike<number>;
+    /** 3n [rad/s]; default 0. */
+    angularVelocity?: ArrayLike<number>;
+}
+export interface DeadReckoningBatchResult {
+    /** 3n [m]. */
+    position: Float64Array;
+    /** 3n [m/s]. */
+    velocity: Float32Array;
+    /** 4n, x y z w. */
+    orientation: Float32Array;
+    /** Entities refused (returned as given). */
+    refused: number;
+}
+/** Fields of fs_dr_receiver_settings; a missing field takes the library's default. */
+export interface ReceiverSettings {
+    /** default 'extrapolate'. */
+    mode?: ReceiverModeName | number;
+    /** default 'projectiveVelocity'. */
+    smoothing?: SmoothingName | number;
+    /** [s] > 0 (default 0.2). */
+    blendTime?: number;
+    /** [s] > 0 (default 0.1). */
+    decayHalfLife?: number;
+    /** [m] > 0, Infinity disables (default 10). */
+    teleportDistance?: number;
+    /** [s] >= 0, Infinity disables (default 0.25). */
+    extrapolationLimit?: number;
+    /** [s] > 0 (default 0.1). */
+    interpolationDelay?: number;
+    /** [s] >= 0, Infinity disables (default 1). */
+    maxFutureSkew?: number;
+    /** [s] > 0, Infinity disables (default 10). */
+    restartAfter?: number;
+}
+export type ReceiverSettingsResolved = Required<ReceiverSettings> & {
+    mode: ReceiverModeName;
+    smoothing: SmoothingName;
+};
+/** The pose a Receiver shows. */
+export interface ReceivedPose {
+    /** [m] */
+    position: Vec3;
+    /** [m/s], world axes. */
+    velocity: Vec3;
+    orientation: Quat;
+    /** extrapolationLimit stopped the extrapolation. */
+    held: boolean;
+}
+export interface ReceiverCounters {
+    accepted: number;
+    snaps: number;
+    teleports: number;
+    outOfOrder: number;
+    duplicates: number;
+    invalid: number;
+    held: number;
+    futureUpdates: number;
+    tooFarAhead: number;
+    clockRestarts: number;
+}
+/** A receiver of one remote entity's updates in the module's memory: call delete() when done. */
+export declare class Receiver {
+    private constructor();
+    /** Whether delete() has been called. */
+    readonly deleted: boolean;
+    /** An update stamped timestamp [s] arriving at receiveTime [s]; bad or stale ones are dropped, not thrown. */
+    receive(timestamp: number, state: DeadReckoningStateLike, receiveTime: number): ReceiveOutcomeName;
+    /** The pose to show at time [s]; throws NO_UPDATE before the first accepted update. */
+    sample(time: number): ReceivedPose;
+    /** The counters since creation or the last reset. */
+    counters(): ReceiverCounters;
+    /** Forgets every update and counter (the settings stay). */
+    reset(): void;
+    /** Frees the receiver; a second call does nothing. */
+    delete(): void;
+    /** The same as delete() (also Receiver.prototype[Symbol.dispose] where the runtime has it). */
+    dispose(): void;
+}
+
 /** A static collision world in the module's memory: call delete() when done. */
 export declare class World {
     private constructor();
@@ -301,6 +508,38 @@ export declare class Foresight {
     };
     /** Every firing solution, earliest first; [] when unreachable. */
     aimProjectile(shot: AimShot, target: AimTarget): FiringSolution[];
+    /** Where and when a predicted grenade explodes (trajectory as predictProjectile returns it). */
+    computeDangerZone(trajectory: Trajectory, danger: ProjectileDanger): DangerZone;
+    /** Whether point [m] is safe at time [s]. */
+    isPointSafe(trajectory: Trajectory, danger: ProjectileDanger, point: Vec3Like, time: number): boolean;
+    /** When danger starts at point [m] [s]; null: never. */
+    findDangerStart(trajectory: Trajectory, danger: ProjectileDanger, point: Vec3Like): number | null;
+    /** The path's closest approach to point over [fromTime, untilTime] [s] (defaults: 0, the last point's time). */
+    findClosestPathApproach(trajectory: Trajectory, point: Vec3Like, fromTime?: number, untilTime?: number): ClosestApproach;
+    /** The first contact of a vehicle and a character within horizon [s]. */
+    findVehicleContact(
+        vehicle: VehicleBody,
+        character: CharacterBody,
+        horizon: number,
+        settings?: ApproachSettings,
+    ): VehicleContact;
+    /** The closest approach of a vehicle and a character within horizon [s]. */
+    findClosestVehicleApproach(
+        vehicle: VehicleBody,
+        character: CharacterBody,
+        horizon: number,
+        settings?: ApproachSettings,
+    ): ClosestApproach;
+    /** The DIS name of an algorithm ("STATIC" ... "FVB"; "?" for another value). */
+    deadReckoningAlgorithmName(algorithm: DeadReckoningName | number): string;
+    /** A remote entity's last update extrapolated by time [s] >= 0 with its algorithm. */
+    predictDeadReckoning(state: DeadReckoningStateLike, time: number): DeadReckoningResult;
+    /** Many entities extrapolated to one time [s], each by max(time - timestamp, 0). */
+    predictDeadReckoningBatch(batch: DeadReckoningBatch, time: number): DeadReckoningBatchResult;
+    /** The library's default receiver settings. */
+    receiverSettings(): ReceiverSettingsResolved;
+    /** A receiver of one remote entity (extrapolates or interpolates, blends corrections). */
+    createReceiver(settings?: ReceiverSettings): Receiver;
 }
 
 /** Loads the module (the wasm is embedded: nothing is fetched). */

@@ -50,6 +50,18 @@ export const TrajectoryEvent = Object.freeze({ start: 0, step: 1, bounce: 2, res
 export const Frame = Object.freeze({ body: 0, world: 1 });
 /** What fixes an aimed shot's launch velocity (FS_AIM_*). */
 export const AimConstraint = Object.freeze({ speed: 0, horizontalSpeed: 1, apexAboveStart: 2, apexAboveTarget: 3 });
+/** The DIS (IEEE 1278.1) dead-reckoning algorithms (FS_DR_*) by their DIS names. */
+export const DeadReckoning = Object.freeze({
+    STATIC: 1, FPW: 2, RPW: 3, RVW: 4, FVW: 5, FPB: 6, RPB: 7, RVB: 8, FVB: 9,
+});
+/** How a Receiver shows its entity (FS_DR_MODE_*). */
+export const ReceiverMode = Object.freeze({ extrapolate: 0, interpolate: 1 });
+/** How a Receiver hides corrections when extrapolating (FS_DR_SMOOTH_*). */
+export const Smoothing = Object.freeze({ snap: 0, linearBlend: 1, projectiveVelocity: 2, exponentialDecay: 3 });
+/** What Receiver.receive did with an update (FS_DR_ACCEPTED ... FS_DR_TOO_FAR_AHEAD), the names it returns. */
+export const ReceiveOutcome = Object.freeze({
+    accepted: 0, snapped: 1, buffered: 2, outOfOrder: 3, duplicate: 4, invalid: 5, tooFarAhead: 6,
+});
 
 /**
  * What the library refused, thrown by every call that gets a status other than OK. `message` is
@@ -137,6 +149,16 @@ const xyz = (a) => ({ x: a[0], y: a[1], z: a[2] });
 const projectileKeys = ['method', 'engine', 'gravity', 'step', 'restitution', 'friction', 'radius', 'maxBounces',
     'maxSteps', 'maxEvents'];
 const shotKeys = ['from', 'constraint', 'speed', 'apexHeight', 'gravity', 'maxTime'];
+const drStateKeys = ['position', 'velocity', 'acceleration', 'orientation', 'angularVelocity', 'algorithm'];
+const receiverKeys = ['mode', 'smoothing', 'blendTime', 'decayHalfLife', 'teleportDistance', 'extrapolationLimit',
+    'interpolationDelay', 'maxFutureSkew', 'restartAfter'];
+const counterNames = ['accepted', 'snaps', 'teleports', 'outOfOrder', 'duplicates', 'invalid', 'held', 'futureUpdates',
+    'tooFarAhead', 'clockRestarts'];
+const outcomeNames = Object.keys(ReceiveOutcome);
+const vehicleBodyKeys = ['position', 'velocity', 'orientation', 'angularVelocity', 'frame', 'forward', 'halfExtents',
+    'boxCenter'];
+const characterKeys = ['position', 'velocity', 'acceleration', 'radius', 'halfAxis'];
+const nameOf = (table, value) => Object.keys(table).find((k) => table[k] === value);
 
 /**
  * Loads the WebAssembly module (embedded in dist/foresight_core.mjs: nothing is fetched) and
@@ -161,6 +183,8 @@ const VELOCITY = 672; // fs_vec3
 const SCRATCH_BYTES = 1024;
 const POINT_BYTES = 56; // sizeof(fs_trajectory_point)
 const MAX_SOLUTIONS = 4;
+const DR_STATE_BYTES = 80; // sizeof(fs_dr_state)
+const DR_RESULT_BYTES = 56; // sizeof(fs_dr_result)
 
 /**
  * The API on one WebAssembly instance (made by loadForesight). Every function takes plain
@@ -181,6 +205,12 @@ export class Foresight {
     #projectileDefaults;
     #shotDefaults;
     #vehicleDefaults;
+    #receiverDefaults;
+    #vehicleBodyDefaults;
+    #characterDefaults;
+    #approachDefaults;
+    #batch = 0; // dead-reckoning batch buffer: states, timestamps, results
+    #batchCapacity = 0; // its size in entities
 
     /** @param {object} core  the emscripten module (use loadForesight). */
     constructor(core) {
@@ -205,6 +235,26 @@ export class Foresight {
         this.#views();
         this.#vehicleDefaults = Object.freeze({
             frame: this.#i32[b], forward: Object.freeze(xyz(this.#f32.subarray(b + 1, b + 4))),
+        });
+        core._fsw_vehicle_body_default(s + IN_A);
+        this.#views();
+        this.#vehicleBodyDefaults = Object.freeze({
+            halfExtents: Object.freeze(xyz(this.#f32.subarray(b + 20, b + 23))),
+            boxCenter: Object.freeze(xyz(this.#f32.subarray(b + 23, b + 26))),
+        });
+        core._fsw_character_body_default(s + IN_A);
+        this.#views();
+        this.#characterDefaults = Object.freeze({ radius: this.#f32[b + 12] });
+        core._fsw_approach_settings_default(s + IN_A);
+        this.#views();
+        this.#approachDefaults = Object.freeze({ tolerance: this.#f32[b], maxEvaluations: this.#u32[b + 1] });
+        core._fsw_dr_receiver_settings_default(s + IN_A);
+        this.#views();
+        this.#receiverDefaults = Object.freeze({
+            mode: nameOf(ReceiverMode, this.#i32[b]), smoothing: nameOf(Smoothing, this.#i32[b + 1]),
+            blendTime: this.#f32[b + 2], decayHalfLife: this.#f32[b + 3], teleportDistance: this.#f32[b + 4],
+            extrapolationLimit: this.#f32[b + 5], interpolationDelay: this.#f32[b + 6],
+            maxFutureSkew: this.#f32[b + 7], restartAfter: this.#f32[b + 8],
         });
     }
 
@@ -388,6 +438,213 @@ export class Foresight {
         return this.#readVehicle(s + OUT);
     }
 
+    // ---- Dead reckoning (netcode) -------------------------------------------------------------
+
+    #writeDrState(at, state, name) {
+        if (state === undefined || state === null) throw new TypeError(`${name} must be {position, velocity, algorithm, ...}`);
+        const o = checkKeys(state, drStateKeys, name);
+        const p = vec(o.position, `${name}.position`);
+        const v = vec(o.velocity, `${name}.velocity`);
+        const a = vec(o.acceleration ?? [0, 0, 0], `${name}.acceleration`);
+        const q = quat(o.orientation ?? [0, 0, 0, 1], `${name}.orientation`);
+        const w = vec(o.angularVelocity ?? [0, 0, 0], `${name}.angularVelocity`);
+        const algorithm = enumValue(DeadReckoning, o.algorithm, `${name}.algorithm`);
+        this.#views();
+        const d = at >> 3, f = at >> 2;
+        this.#f64[d] = p[0]; this.#f64[d + 1] = p[1]; this.#f64[d + 2] = p[2];
+        this.#f32.set(v, f + 6);
+        this.#f32.set(a, f + 9);
+        this.#f32.set(q, f + 12);
+        this.#f32.set(w, f + 16);
+        this.#i32[f + 19] = algorithm;
+    }
+
+    // fs_dr_result and fs_dr_pose: position, velocity, orientation (and the pose's held flag).
+    #readDrPose(at, pose) {
+        this.#views();
+        const d = at >> 3, f = at >> 2;
+        const result = {
+            position: xyz(this.#f64.subarray(d, d + 3)),
+            velocity: xyz(this.#f32.subarray(f + 6, f + 9)),
+            orientation: { x: this.#f32[f + 9], y: this.#f32[f + 10], z: this.#f32[f + 11], w: this.#f32[f + 12] },
+        };
+        if (pose) result.held = this.#i32[f + 13] !== 0;
+        return result;
+    }
+
+    /**
+     * The DIS name of a dead-reckoning algorithm: "STATIC", "FPW", ... "FVB"; "?" for another value.
+     * @param {number|string} algorithm  a DeadReckoning value (or name).
+     * @returns {string}
+     */
+    deadReckoningAlgorithmName(algorithm) {
+        const pointer = this.#core._fs_dr_algorithm_name(enumValue(DeadReckoning, algorithm, 'algorithm'));
+        this.#views();
+        const bytes = new Uint8Array(this.#buffer, pointer);
+        return new TextDecoder().decode(bytes.subarray(0, bytes.indexOf(0)));
+    }
+
+    /**
+     * Extrapolates a remote entity's last update by `time` with its DIS algorithm
+     * (foresight::predictDeadReckoning): FPW is `p + v t`, FVW `p + v t + a t^2 / 2`, the R*
+     * models turn the orientation by the angular velocity, the *B models read velocity and
+     * acceleration in body axes.
+     * @param {DeadReckoningStateLike} state  position [m], velocity [m/s], acceleration [m/s^2]
+     *     (default 0), orientation (body-to-world, default identity), angularVelocity [rad/s, body
+     *     axes] (default 0), algorithm ('STATIC' ... 'FVB' or 1 ... 9).
+     * @param {number} time  [s] since the update, >= 0.
+     * @returns {{position: Vec3, velocity: Vec3, orientation: Quat}}  velocity in the input's axes.
+     */
+    predictDeadReckoning(state, time) {
+        const s = this.#scratch;
+        this.#writeDrState(s + IN_A, state, 'state');
+        this.#check(this.#core._fs_dr_predict(s + IN_A, num(time, 'time'), s + OUT), 'predictDeadReckoning');
+        return this.#readDrPose(s + OUT, false);
+    }
+
+    #reserveBatch(count) {
+        if (count <= this.#batchCapacity) return;
+        const capacity = Math.max(count, 2 * this.#batchCapacity);
+        const pointer = this.#core._malloc(capacity * (DR_STATE_BYTES + 8 + DR_RESULT_BYTES));
+        if (pointer === 0) throw new ForesightError('predictDeadReckoningBatch', Status.OUT_OF_MEMORY, 'out of memory');
+        if (this.#batch !== 0) this.#core._free(this.#batch);
+        this.#batch = pointer;
+        this.#batchCapacity = capacity;
+    }
+
+    /**
+     * Extrapolates many entities to one time (foresight::predictDeadReckoningBatch), arrays in
+     * and out: entity i's result is predictDeadReckoning(state i, max(time - timestamp[i], 0))
+     * bit for bit. A refused entity (NaN, zero quaternion, unknown algorithm, NaN timestamp) gets
+     * its state as given and is counted in `refused`; nothing throws for it.
+     * @param {DeadReckoningBatch} batch  timestamp [s] (n numbers: n is its length), position [m]
+     *     (3n), velocity [m/s] (3n), algorithm (n), and optionally acceleration [m/s^2] (3n),
+     *     orientation (4n, x y z w), angularVelocity [rad/s] (3n); any array-likes (typed arrays).
+     * @param {number} time  [s] the time to extrapolate to.
+     * @returns {DeadReckoningBatchResult}  position Float64Array (3n), velocity Float32Array (3n),
+     *     orientation Float32Array (4n), refused.
+     */
+    predictDeadReckoningBatch(batch, time) {
+        const o = checkKeys(batch, ['timestamp', ...drStateKeys], 'batch');
+        const timestamps = o.timestamp;
+        if (timestamps === null || typeof timestamps !== 'object' || typeof timestamps.length !== 'number') {
+            throw new TypeError('batch.timestamp must be an array of numbers');
+        }
+        const n = timestamps.length;
+        const field = (key, per, required) => {
+            const a = o[key];
+            if (a === undefined && !required) return null;
+            if (a === null || typeof a !== 'object' || a.length !== per * n) {
+                throw new RangeError(`batch.${key} must be an array of ${per * n} numbers (${per} per entity)`);
+            }
+            return a;
+        };
+        const position = field('position', 3, true), velocity = field('velocity', 3, true);
+        const algorithm = field('algorithm', 1, true), acceleration = field('acceleration', 3, false);
+        const orientation = field('orientation', 4, false), angularVelocity = field('angularVelocity', 3, false);
+        const t = num(time, 'time');
+        this.#reserveBatch(n);
+        const states = this.#batch, stamps = states + n * DR_STATE_BYTES, out = stamps + 8 * n;
+        this.#views();
+        const f64 = this.#f64, f32 = this.#f32, i32 = this.#i32;
+        for (let k = 0; k < n; ++k) {
+            const d = (states + k * DR_STATE_BYTES) >> 3, f = d << 1;
+            f64[d] = num(position[3 * k], 'batch.position[i]');
+            f64[d + 1] = num(position[3 * k + 1], 'batch.position[i]');
+            f64[d + 2] = num(position[3 * k + 2], 'batch.position[i]');
+            for (let c = 0; c < 3; ++c) {
+                f32[f + 6 + c] = num(velocity[3 * k + c], 'batch.velocity[i]');
+                f32[f + 9 + c] = acceleration ? num(acceleration[3 * k + c], 'batch.acceleration[i]') : 0;
+                f32[f + 16 + c] = angularVelocity ? num(angularVelocity[3 * k + c], 'batch.angularVelocity[i]') : 0;
+            }
+            for (let c = 0; c < 4; ++c) {
+                f32[f + 12 + c] = orientation ? num(orientation[4 * k + c], 'batch.orientation[i]') : c === 3 ? 1 : 0;
+            }
+            i32[f + 19] = enumValue(DeadReckoning, algorithm[k], 'batch.algorithm[i]');
+            f64[(stamps >> 3) + k] = num(timestamps[k], 'batch.timestamp[i]');
+        }
+        const s = this.#scratch;
+        this.#check(this.#core._fs_dr_predict_batch(states, stamps, n, t, out, s + COUNT), 'predictDeadReckoningBatch');
+        this.#views();
+        const result = {
+            position: new Float64Array(3 * n), velocity: new Float32Array(3 * n), orientation: new Float32Array(4 * n),
+            refused: this.#u32[(s + COUNT) >> 2],
+        };
+        for (let k = 0; k < n; ++k) {
+            const d = (out + k * DR_RESULT_BYTES) >> 3, f = d << 1;
+            result.position[3 * k] = this.#f64[d];
+            result.position[3 * k + 1] = this.#f64[d + 1];
+            result.position[3 * k + 2] = this.#f64[d + 2];
+            for (let c = 0; c < 3; ++c) result.velocity[3 * k + c] = this.#f32[f + 6 + c];
+            for (let c = 0; c < 4; ++c) result.orientation[4 * k + c] = this.#f32[f + 9 + c];
+        }
+        return result;
+    }
+
+    /**
+     * The library's default receiver settings: mode 'extrapolate', smoothing
+     * 'projectiveVelocity', blendTime 0.2 s, decayHalfLife 0.1 s, teleportDistance 10 m,
+     * extrapolationLimit 0.25 s, interpolationDelay 0.1 s, maxFutureSkew 1 s, restartAfter 10 s.
+     * @returns {ReceiverSettingsResolved}
+     */
+    receiverSettings() {
+        return { ...this.#receiverDefaults };
+    }
+
+    /**
+     * A receiver of one remote entity (foresight::DeadReckoningReceiver): takes its updates,
+     * drops stale or bad ones, and shows it extrapolated (corrections blended) or interpolated.
+     * Free it with `delete()`: its memory is the module's.
+     * @param {ReceiverSettings} [settings]  fields of receiverSettings(), defaults for the missing ones.
+     * @returns {Receiver}
+     */
+    createReceiver(settings = undefined) {
+        const o = checkKeys(settings, receiverKeys, 'settings');
+        const d = this.#receiverDefaults;
+        const mode = enumValue(ReceiverMode, o.mode ?? d.mode, 'settings.mode');
+        const smoothing = enumValue(Smoothing, o.smoothing ?? d.smoothing, 'settings.smoothing');
+        const floats = receiverKeys.slice(2).map((key) => num(o[key] ?? d[key], `settings.${key}`));
+        const s = this.#scratch;
+        this.#views();
+        const f = (s + IN_A) >> 2;
+        this.#i32[f] = mode;
+        this.#i32[f + 1] = smoothing;
+        this.#f32.set(floats, f + 2);
+        this.#check(this.#core._fs_dr_receiver_create(s + IN_A, s + COUNT), 'createReceiver');
+        this.#views();
+        return new Receiver(this, this.#u32[(s + COUNT) >> 2], this.#core);
+    }
+
+    /** @internal Receiver.receive. */
+    _receive(receiver, timestamp, state, receiveTime) {
+        const s = this.#scratch;
+        const stamp = num(timestamp, 'timestamp');
+        this.#writeDrState(s + IN_A, state, 'state');
+        const now = num(receiveTime, 'receiveTime');
+        this.#check(this.#core._fs_dr_receiver_receive(receiver, stamp, s + IN_A, now, s + COUNT), 'receive');
+        this.#views();
+        return outcomeNames[this.#i32[(s + COUNT) >> 2]];
+    }
+
+    /** @internal Receiver.sample. */
+    _sample(receiver, time) {
+        const s = this.#scratch;
+        this.#check(this.#core._fs_dr_receiver_sample(receiver, num(time, 'time'), s + OUT), 'sample');
+        return this.#readDrPose(s + OUT, true);
+    }
+
+    /** @internal Receiver.counters. */
+    _counters(receiver) {
+        const s = this.#scratch;
+        this.#check(this.#core._fs_dr_receiver_get_counters(receiver, s + OUT), 'counters');
+        this.#views();
+        const u = (s + OUT) >> 2, counters = {};
+        counterNames.forEach((name, k) => {
+            counters[name] = this.#u32[u + 2 * k] + this.#u32[u + 2 * k + 1] * 2 ** 32;
+        });
+        return counters;
+    }
+
     // ---- Worlds -------------------------------------------------------------------------------
 
     /**
@@ -552,6 +809,225 @@ export class Foresight {
             trajectory.normal[3 * k + 2] = f32[f + 13];
         }
         return trajectory;
+    }
+
+    // ---- Danger -------------------------------------------------------------------------------
+
+    // Writes a trajectory as predictProjectile returns it ({length, time, event, position,
+    // velocity, normal}) to the trajectory buffer; returns its length.
+    #writeTrajectory(trajectory, operation) {
+        if (trajectory === null || typeof trajectory !== 'object' || !Number.isInteger(trajectory.length)) {
+            throw new TypeError(`${operation}: trajectory must be a trajectory returned by predictProjectile`);
+        }
+        const n = trajectory.length;
+        for (const [key, per] of [['time', 1], ['event', 1], ['position', 3], ['velocity', 3], ['normal', 3]]) {
+            const a = trajectory[key];
+            if (a === null || typeof a !== 'object' || a.length !== per * n) {
+                throw new RangeError(`${operation}: trajectory.${key} must have ${per * n} numbers`);
+            }
+        }
+        this.#reserve(n);
+        this.#views();
+        const f64 = this.#f64, f32 = this.#f32, i32 = this.#i32;
+        const { time, event, position, velocity, normal } = trajectory;
+        for (let k = 0, at = this.#points; k < n; ++k, at += POINT_BYTES) {
+            const f = at >> 2, d = (at + 8) >> 3;
+            f32[f] = time[k];
+            i32[f + 1] = event[k];
+            f64[d] = position[3 * k]; f64[d + 1] = position[3 * k + 1]; f64[d + 2] = position[3 * k + 2];
+            f32[f + 8] = velocity[3 * k]; f32[f + 9] = velocity[3 * k + 1]; f32[f + 10] = velocity[3 * k + 2];
+            f32[f + 11] = normal[3 * k]; f32[f + 12] = normal[3 * k + 1]; f32[f + 13] = normal[3 * k + 2];
+        }
+        return n;
+    }
+
+    #writeDanger(at, danger) {
+        const o = checkKeys(danger, ['fuseTime', 'blastRadius', 'contactRadius'], 'danger');
+        const fuse = num(o.fuseTime, 'danger.fuseTime');
+        const blast = num(o.blastRadius, 'danger.blastRadius');
+        const contact = num(o.contactRadius ?? 0, 'danger.contactRadius');
+        this.#views();
+        this.#f32[at >> 2] = fuse;
+        this.#f32[(at >> 2) + 1] = blast;
+        this.#f32[(at >> 2) + 2] = contact;
+    }
+
+    #writePoint(point, name) {
+        const p = vec(point, name);
+        this.#views();
+        this.#f64.set(p, (this.#scratch + POSITION) >> 3);
+        return this.#scratch + POSITION;
+    }
+
+    /**
+     * Where and when a predicted grenade explodes (foresight::computeDangerZone): its position
+     * on the trajectory at the fuse time, the blast radius, the fuse time.
+     * @param {Trajectory} trajectory  as predictProjectile returns it (run long enough to reach the fuse).
+     * @param {ProjectileDanger} danger  fuseTime [s] >= 0, blastRadius [m] >= 0, contactRadius [m]
+     *     (default 0: nothing is dangerous before the fuse).
+     * @returns {{center: Vec3, radius: number, time: number}}
+     */
+    computeDangerZone(trajectory, danger) {
+        const n = this.#writeTrajectory(trajectory, 'computeDangerZone');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        this.#check(this.#core._fs_compute_danger_zone(this.#points, n, s + IN_A, s + OUT), 'computeDangerZone');
+        this.#views();
+        const d = (s + OUT) >> 3, f = (s + OUT) >> 2;
+        return { center: xyz(this.#f64.subarray(d, d + 3)), radius: this.#f32[f + 6], time: this.#f32[f + 7] };
+    }
+
+    /**
+     * Whether `point` is safe at `time` (foresight::isPointSafe): outside the blast from the fuse
+     * time on (exactly blastRadius away is unsafe), farther than contactRadius from the
+     * projectile before it.
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {ProjectileDanger} danger
+     * @param {Vec3Like} point  [m].
+     * @param {number} time  [s].
+     * @returns {boolean}
+     */
+    isPointSafe(trajectory, danger, point, time) {
+        const n = this.#writeTrajectory(trajectory, 'isPointSafe');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        const at = this.#writePoint(point, 'point');
+        this.#check(this.#core._fsw_is_point_safe(this.#points, n, s + IN_A, at, num(time, 'time'), s + COUNT),
+            'isPointSafe');
+        this.#views();
+        return this.#i32[(s + COUNT) >> 2] !== 0;
+    }
+
+    /**
+     * When danger starts at `point` (foresight::findDangerStart): the earliest time isPointSafe
+     * says false, or null when it never does.
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {ProjectileDanger} danger
+     * @param {Vec3Like} point  [m].
+     * @returns {number|null}  [s].
+     */
+    findDangerStart(trajectory, danger, point) {
+        const n = this.#writeTrajectory(trajectory, 'findDangerStart');
+        const s = this.#scratch;
+        this.#writeDanger(s + IN_A, danger);
+        const at = this.#writePoint(point, 'point');
+        this.#check(this.#core._fsw_find_danger_start(this.#points, n, s + IN_A, at, s + OUT), 'findDangerStart');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return this.#i32[f] !== 0 ? this.#f32[f + 1] : null;
+    }
+
+    /**
+     * The projectile's closest approach to `point` over [fromTime, untilTime], exact per segment
+     * (foresight::findClosestPathApproach).
+     * @param {Trajectory} trajectory  as predictProjectile returns it.
+     * @param {Vec3Like} point  [m].
+     * @param {number} [fromTime]  [s] (default 0).
+     * @param {number} [untilTime]  [s] (default the trajectory's last time).
+     * @returns {{distance: number, time: number}}  [m], [s].
+     */
+    findClosestPathApproach(trajectory, point, fromTime = 0, untilTime = undefined) {
+        const n = this.#writeTrajectory(trajectory, 'findClosestPathApproach');
+        const s = this.#scratch;
+        const at = this.#writePoint(point, 'point');
+        const from = num(fromTime, 'fromTime');
+        const until = untilTime === undefined ? (n > 0 ? trajectory.time[n - 1] : 0) : num(untilTime, 'untilTime');
+        this.#check(this.#core._fsw_find_closest_path_approach(this.#points, n, at, from, until, s + OUT),
+            'findClosestPathApproach');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return { distance: this.#f32[f], time: this.#f32[f + 1] };
+    }
+
+    // ---- Vehicle contact ----------------------------------------------------------------------
+
+    // fs_vehicle_body at IN_A, fs_character_body at IN_B, fs_approach_settings at POSITION.
+    #writeContactQuery(vehicle, character, settings) {
+        const v = checkKeys(vehicle, vehicleBodyKeys, 'vehicle');
+        const c = checkKeys(character, characterKeys, 'character');
+        const o = checkKeys(settings, ['tolerance', 'maxEvaluations'], 'settings');
+        if (vehicle === undefined || vehicle === null) throw new TypeError('vehicle must be {position, velocity, ...}');
+        if (character === undefined || character === null) throw new TypeError('character must be {position, ...}');
+        const vd = this.#vehicleBodyDefaults, cd = this.#characterDefaults, ad = this.#approachDefaults;
+        const vp = vec(v.position, 'vehicle.position');
+        const vv = vec(v.velocity, 'vehicle.velocity');
+        const q = quat(v.orientation ?? [0, 0, 0, 1], 'vehicle.orientation');
+        const w = vec(v.angularVelocity ?? [0, 0, 0], 'vehicle.angularVelocity');
+        const frame = enumValue(Frame, v.frame ?? this.#vehicleDefaults.frame, 'vehicle.frame');
+        const forward = vec(v.forward ?? this.#vehicleDefaults.forward, 'vehicle.forward');
+        const half = vec(v.halfExtents ?? vd.halfExtents, 'vehicle.halfExtents');
+        const boxCenter = vec(v.boxCenter ?? vd.boxCenter, 'vehicle.boxCenter');
+        const cp = vec(c.position, 'character.position');
+        const cv = vec(c.velocity ?? [0, 0, 0], 'character.velocity');
+        const ca = vec(c.acceleration ?? [0, 0, 0], 'character.acceleration');
+        const radius = num(c.radius ?? cd.radius, 'character.radius');
+        const halfAxis = vec(c.halfAxis ?? [0, 0, 0], 'character.halfAxis');
+        const tolerance = num(o.tolerance ?? ad.tolerance, 'settings.tolerance');
+        const maxEvaluations = uint32(o.maxEvaluations ?? ad.maxEvaluations, 'settings.maxEvaluations');
+        const s = this.#scratch;
+        this.#views();
+        let d = (s + IN_A) >> 3, f = (s + IN_A) >> 2;
+        this.#f64.set(vp, d);
+        this.#f32.set(vv, f + 6);
+        this.#f32.set(q, f + 9);
+        this.#f32.set(w, f + 13);
+        this.#i32[f + 16] = frame;
+        this.#f32.set(forward, f + 17);
+        this.#f32.set(half, f + 20);
+        this.#f32.set(boxCenter, f + 23);
+        d = (s + IN_B) >> 3; f = (s + IN_B) >> 2;
+        this.#f64.set(cp, d);
+        this.#f32.set(cv, f + 6);
+        this.#f32.set(ca, f + 9);
+        this.#f32[f + 12] = radius;
+        this.#f32.set(halfAxis, f + 13);
+        f = (s + POSITION) >> 2;
+        this.#f32[f] = tolerance;
+        this.#u32[f + 1] = maxEvaluations;
+    }
+
+    /**
+     * The first time in [0, horizon] at which a vehicle (an oriented box on the exact arc of
+     * predictVehicleExact) and a character (a sphere or capsule moving as p + v t + a t^2 / 2)
+     * touch (foresight::findVehicleContact: never later than the true first overlap).
+     * @param {VehicleBody} vehicle  position [m], velocity [m/s], orientation, angularVelocity
+     *     [rad/s], frame, forward, halfExtents [m] (default 0.9, 0.7, 2.2), boxCenter [m] (default 0).
+     * @param {CharacterBody} character  position [m], velocity [m/s], acceleration [m/s^2],
+     *     radius [m] (default 0.4), halfAxis [m] (default 0: a sphere).
+     * @param {number} horizon  [s] >= 0.
+     * @param {ApproachSettings} [settings]  tolerance [m] (default 0.001), maxEvaluations (default 65536).
+     * @returns {{contact: boolean, time: number, separation: number, evaluations: number}}
+     */
+    findVehicleContact(vehicle, character, horizon, settings = undefined) {
+        this.#writeContactQuery(vehicle, character, settings);
+        const s = this.#scratch;
+        this.#check(this.#core._fs_find_vehicle_contact(s + IN_A, s + IN_B, num(horizon, 'horizon'), s + POSITION,
+            s + OUT), 'findVehicleContact');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return {
+            contact: this.#i32[f] !== 0, time: this.#f32[f + 1], separation: this.#f32[f + 2],
+            evaluations: this.#u32[f + 3],
+        };
+    }
+
+    /**
+     * The closest approach of a vehicle and a character in [0, horizon]
+     * (foresight::findClosestVehicleApproach): the separation, negative when they overlap.
+     * @param {VehicleBody} vehicle  as for findVehicleContact.
+     * @param {CharacterBody} character  as for findVehicleContact.
+     * @param {number} horizon  [s] >= 0.
+     * @param {ApproachSettings} [settings]
+     * @returns {{distance: number, time: number}}  [m], [s].
+     */
+    findClosestVehicleApproach(vehicle, character, horizon, settings = undefined) {
+        this.#writeContactQuery(vehicle, character, settings);
+        const s = this.#scratch;
+        this.#check(this.#core._fs_find_closest_vehicle_approach(s + IN_A, s + IN_B, num(horizon, 'horizon'),
+            s + POSITION, s + OUT), 'findClosestVehicleApproach');
+        this.#views();
+        const f = (s + OUT) >> 2;
+        return { distance: this.#f32[f], time: this.#f32[f + 1] };
     }
 
     // ---- Aim ----------------------------------------------------------------------------------
@@ -758,4 +1234,85 @@ export class World {
 }
 if (typeof Symbol.dispose === 'symbol') {
     World.prototype[Symbol.dispose] = World.prototype.delete;
+}
+
+/**
+ * A receiver of one remote entity's dead-reckoning updates (foresight::DeadReckoningReceiver) in
+ * the module's memory: free it with `delete()`. Made by Foresight.createReceiver.
+ */
+export class Receiver {
+    #owner;
+    #core;
+    #pointer;
+
+    /** @internal use Foresight.createReceiver. */
+    constructor(owner, pointer, core) {
+        this.#owner = owner;
+        this.#core = core;
+        this.#pointer = pointer;
+    }
+
+    #live(operation) {
+        if (this.#pointer === 0) throw new Error(`${operation}: the receiver has been deleted`);
+        return this.#pointer;
+    }
+
+    /** Whether delete() has been called. @returns {boolean} */
+    get deleted() {
+        return this.#pointer === 0;
+    }
+
+    /**
+     * Takes an update stamped `timestamp` (the sender's clock) arriving at `receiveTime` (this
+     * machine's clock); a correction starts there. Bad or stale updates are dropped and counted,
+     * not thrown: the outcome says which.
+     * @param {number} timestamp  [s] the sender's time of the state.
+     * @param {DeadReckoningStateLike} state  as for predictDeadReckoning.
+     * @param {number} receiveTime  [s] now, on the receiver's clock.
+     * @returns {ReceiveOutcomeName}  'accepted', 'snapped', 'buffered', 'outOfOrder', 'duplicate',
+     *     'invalid' or 'tooFarAhead'.
+     */
+    receive(timestamp, state, receiveTime) {
+        return this.#owner._receive(this.#live('receive'), timestamp, state, receiveTime);
+    }
+
+    /**
+     * The pose to show at `time` [s] on the receiver's clock (times may go backwards). Throws
+     * ForesightError NO_UPDATE before the first accepted update.
+     * @param {number} time  [s].
+     * @returns {{position: Vec3, velocity: Vec3, orientation: Quat, held: boolean}}  velocity in
+     *     world axes; held: extrapolationLimit stopped the extrapolation.
+     */
+    sample(time) {
+        return this.#owner._sample(this.#live('sample'), time);
+    }
+
+    /**
+     * The counters since creation or the last reset (numbers; exact up to 2^53).
+     * @returns {ReceiverCounters}
+     */
+    counters() {
+        return this.#owner._counters(this.#live('counters'));
+    }
+
+    /** Forgets every update and counter (the settings stay). */
+    reset() {
+        this.#core._fs_dr_receiver_reset(this.#live('reset'));
+    }
+
+    /** Frees the receiver's memory; later calls with it throw. A second delete() does nothing. */
+    delete() {
+        if (this.#pointer !== 0) {
+            this.#core._fs_dr_receiver_destroy(this.#pointer);
+            this.#pointer = 0;
+        }
+    }
+
+    /** The same as delete(). */
+    dispose() {
+        this.delete();
+    }
+}
+if (typeof Symbol.dispose === 'symbol') {
+    Receiver.prototype[Symbol.dispose] = Receiver.prototype.delete;
 }

@@ -47,6 +47,50 @@ EMSCRIPTEN_KEEPALIVE void fsw_aim_shot_default(fs_aim_shot* out) noexcept {
     if (out != nullptr) *out = fs_aim_shot_default();
 }
 
+/// Writes fs_dr_receiver_settings_default() to `out`.
+EMSCRIPTEN_KEEPALIVE void fsw_dr_receiver_settings_default(fs_dr_receiver_settings* out) noexcept {
+    if (out != nullptr) *out = fs_dr_receiver_settings_default();
+}
+
+/// fs_is_point_safe with the point [Units: m] read through a pointer.
+EMSCRIPTEN_KEEPALIVE fs_status fsw_is_point_safe(const fs_trajectory_point* trajectory, std::size_t count,
+                                                 const fs_projectile_danger* danger, const fs_dvec3* point, float time,
+                                                 std::int32_t* safe) noexcept {
+    if (point == nullptr) return FS_STATUS_NULL_POINTER;
+    return fs_is_point_safe(trajectory, count, danger, *point, time, safe);
+}
+
+/// fs_find_danger_start with the point [Units: m] read through a pointer.
+EMSCRIPTEN_KEEPALIVE fs_status fsw_find_danger_start(const fs_trajectory_point* trajectory, std::size_t count,
+                                                     const fs_projectile_danger* danger, const fs_dvec3* point,
+                                                     fs_danger_start* out) noexcept {
+    if (point == nullptr) return FS_STATUS_NULL_POINTER;
+    return fs_find_danger_start(trajectory, count, danger, *point, out);
+}
+
+/// fs_find_closest_path_approach with the point [Units: m] read through a pointer.
+EMSCRIPTEN_KEEPALIVE fs_status fsw_find_closest_path_approach(const fs_trajectory_point* trajectory, std::size_t count,
+                                                              const fs_dvec3* point, float from_time, float until_time,
+                                                              fs_closest_approach* out) noexcept {
+    if (point == nullptr) return FS_STATUS_NULL_POINTER;
+    return fs_find_closest_path_approach(trajectory, count, *point, from_time, until_time, out);
+}
+
+/// Writes fs_vehicle_body_default() to `out`.
+EMSCRIPTEN_KEEPALIVE void fsw_vehicle_body_default(fs_vehicle_body* out) noexcept {
+    if (out != nullptr) *out = fs_vehicle_body_default();
+}
+
+/// Writes fs_character_body_default() to `out`.
+EMSCRIPTEN_KEEPALIVE void fsw_character_body_default(fs_character_body* out) noexcept {
+    if (out != nullptr) *out = fs_character_body_default();
+}
+
+/// Writes fs_approach_settings_default() to `out`.
+EMSCRIPTEN_KEEPALIVE void fsw_approach_settings_default(fs_approach_settings* out) noexcept {
+    if (out != nullptr) *out = fs_approach_settings_default();
+}
+
 /// The end of the heap (sbrk(0)) [Units: bytes]: the allocator takes more memory only when what it
 /// freed is not enough, so a loop that frees all it allocates leaves it where it was (the package's
 /// leak test).

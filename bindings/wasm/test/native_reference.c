@@ -1,7 +1,8 @@
 /* native_reference.c: prints, as JSON, what the native C API computes for a set of projectile,
- * vehicle and aim inputs (the inputs too). The WebAssembly package's api test repeats every call
- * through JavaScript and requires the same numbers bit for bit: doubles are printed with 17
- * significant digits and floats widened to double, both of which read back exactly. */
+ * vehicle, aim and dead-reckoning inputs (the inputs too). The WebAssembly package's api and
+ * netcode tests repeat every call through JavaScript and require the same numbers bit for bit:
+ * doubles are printed with 17 significant digits and floats widened to double, both of which
+ * read back exactly. */
 
 #include <foresight/foresight_c.h>
 
@@ -168,6 +169,40 @@ static void aim(int first, int32_t constraint, float speed, float apex, fs_dvec3
     printf("]}");
 }
 
+/* One entity extrapolated with each DIS algorithm (the same state, every field used by some). */
+static void dead_reckoning(int first, int32_t algorithm, float time) {
+    fs_dr_state state = {{12.5, 1.25, -40.0},  {6.0f, 0.5f, 9.0f},
+                         {-1.5f, 0.25f, 2.0f}, {0.0f, 0.38268343f, 0.0f, 0.92387953f},
+                         {0.1f, 0.8f, -0.3f},  0};
+    fs_dr_result r;
+    fs_status status;
+    state.algorithm = algorithm;
+    status = fs_dr_predict(&state, time, &r);
+    printf("%s{\"position\":", first ? "" : ",");
+    dvec(state.position);
+    printf(",\"velocity\":");
+    fvec(state.velocity);
+    printf(",\"acceleration\":");
+    fvec(state.acceleration);
+    printf(",\"orientation\":");
+    fquat(state.orientation);
+    printf(",\"angularVelocity\":");
+    fvec(state.angular_velocity);
+    printf(",\"algorithm\":%d,\"time\":", (int)algorithm);
+    d(time);
+    printf(",\"status\":%d", status);
+    if (status == FS_STATUS_OK) {
+        printf(",\"result\":{\"position\":");
+        dvec(r.position);
+        printf(",\"velocity\":");
+        fvec(r.velocity);
+        printf(",\"orientation\":");
+        fquat(r.orientation);
+        printf("}");
+    }
+    printf("}");
+}
+
 int main(void) {
     fs_plane floor_plane = {{0.0f, 1.0f, 0.0f}, 0.0f, 0.0};
     fs_box wall = {{0.0, 1.5, 10.0}, {5.0f, 1.5f, 0.25f}, {0.0f, 0.130526f, 0.0f, 0.991445f}, 0.0f};
@@ -215,6 +250,11 @@ int main(void) {
     aim(0, FS_AIM_HORIZONTAL_SPEED, 12.0f, 0.0f, target, running);
     aim(0, FS_AIM_APEX_ABOVE_START, 0.0f, 8.0f, target, still);
     aim(0, FS_AIM_APEX_ABOVE_TARGET, 0.0f, 5.0f, target, running);
+    printf("],\"deadReckoning\":[");
+    for (k = FS_DR_STATIC; k <= FS_DR_FVB; ++k) {
+        dead_reckoning(k == FS_DR_STATIC, (int32_t)k, 0.75f);
+        dead_reckoning(0, (int32_t)k, 3.1f);
+    }
     printf("]}\n");
     fs_world_destroy(world);
     return complete ? 0 : 1;
