@@ -20,6 +20,7 @@
 //     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
 #include "engine_internal.h"
+#include "local_world.h"
 #include "path_capsule.h"
 
 #include <foresight/projectile.h>
@@ -37,6 +38,9 @@ namespace {
 constexpr int kMaxSurfaces = 6;
 // Free-flight steps cleared by one world query at most (EngineRun::coast).
 constexpr std::uint64_t kMaxCoastSteps = 64;
+// How far beyond one step's queries the shapes gathered around a sphere in contact reach
+// (EngineRun::nearWorld) [m]: the sphere takes several steps before they must be gathered again.
+constexpr double kGatherMargin = 0.25;
 // Velocity iterations of the contact solver (several contacts converge; one is exact at once).
 constexpr int kSolverIterations = 10;
 // PhysX position iterations that carry no friction (measured against the Cocos build).
@@ -100,12 +104,17 @@ struct Surface {
     int pointCount = 0;
 };
 
+// A surface's normal and the centre where the sphere touches it (what Surface says of its place).
+struct SurfacePlace {
+    DVec3 normal, touch;
+};
+
 class EngineRun {
 public:
     EngineRun(const ProjectileSettings& settings, const CollisionWorld& world, TrajectoryRecorder& recorder,
               ProjectileResult& result)
-        : mSettings(settings), mProfile(settings.engine), mWorld(&world), mRecorder(recorder), mResult(result),
-          mRec(engineRecurrence(settings.engine)) {
+        : mSettings(settings), mProfile(settings.engine), mFullWorld(&world), mWorld(&world), mRecorder(recorder),
+          mResult(result), mRec(engineRecurrence(settings.engine)) {
         mGravity =
             DVec3(decimalValue(settings.gravity.x), decimalValue(settings.gravity.y), decimalValue(settings.gravity.z));
         if (mProfile.planar) mGravity.z = 0.0;
@@ -266,17 +275,9 @@ private:
         }
         mWorld = world;
 
-        // How far from the centre a step's queries reach (findSurfaces and what it calls): the
-        // probes along a surface's normal start 0.01 m off it and end the contact reach and the
-        // step's travel into it; Jolt's axis probes reach 3 times the contact reach; Rapier's and
-        // Box2D's closest-point probes start 0.05 m behind and reach r + reach + 0.1 with a probe
-        // sphere as large. Twice the travel, and 0.01 m more.
+        // How far from the centre a step's queries reach: queryExtent.
         const std::span<const DVec3> path(mCoastPositions.data(), taken + 1);
-        const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
-        const double reach = contactReach();
-        const double extent =
-            (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) + 2.0 * travel + 0.01;
-        region.capsule = pathCapsule(path, extent);
+        region.capsule = pathCapsule(path, queryExtent(travel));
         // isOnlyPlane promises the answers of casts that start clear of the plane: a sphere that
         // sinks into a floor of triangles meets their shared edges (and tilted normals there),
         // which the plane alone has not.
@@ -385,7 +386,47 @@ private:
         return n;
     }
 
+    // The world for the queries of the step from here: the shapes gathered around the sphere
+    // (LocalWorld, which sends whatever reaches beyond them to the world), gathered again when a
+    // step's queries could leave them; the world itself where it cannot gather (the answers are
+    // the same either way: CollisionWorld::gatherShapes).
+    const CollisionWorld* nearWorld() {
+        if (mRadius <= 0.0 || mGatherFailures >= 3) return mFullWorld;
+        const double dt = mRec.dt;
+        const double extent = queryExtent((glm::length(mVelocity) + glm::length(mGravity) * dt) * dt);
+        if (mLocal.holds(mPosition, mPosition, extent)) return &mLocal;
+        SegmentCast region;
+        region.origin = toR(mPosition);
+        region.radius = static_cast<float>(extent + kGatherMargin);
+        if (!mLocal.gather(*mFullWorld, region)) {
+            ++mGatherFailures;
+            return mFullWorld;
+        }
+        mGatherFailures = 0;
+        return &mLocal;
+    }
+
+    // How far from the centre the queries of one step reach (findSurfaces and what it calls), for
+    // a step's `travel` [m]: the probes along a surface's normal start 0.01 m off it and end the
+    // contact reach and the step's travel into it; Jolt's axis probes reach 3 times the contact
+    // reach; Rapier's and Box2D's closest-point probes start 0.05 m behind and reach r + reach +
+    // 0.1 with a probe sphere as large. Twice the travel, and 0.01 m more.
+    double queryExtent(double travel) const {
+        const bool closest = mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D;
+        const double reach = contactReach();
+        return (closest ? 2.0 * mRadius + 2.0 * reach + 0.2 : mRadius + 3.0 * reach + 0.02) + 2.0 * travel + 0.01;
+    }
+
     bool step(bool first) {
+        // In contactCoast's trial steps the world is a plane already.
+        const CollisionWorld* const world = mWorld;
+        if (mWorld == mFullWorld) mWorld = nearWorld();
+        const bool bounced = stepIn(first);
+        mWorld = world;
+        return bounced;
+    }
+
+    bool stepIn(bool first) {
         const double dt = mRec.dt;
         const DVec3 v0 = mVelocity;
         DVec3 v, freeMotion;
@@ -461,8 +502,11 @@ private:
     // Probes the surfaces already known, and casts the step's free motion for new ones.
     void findSurfaces(const DVec3& freeMotion) {
         const double reach = contactReach();
-        const std::array<Surface, kMaxSurfaces> known = mSurfaces;
+        // Where the surfaces were at the step's start (clearance() reads them; not the whole
+        // Surfaces, which are large).
+        std::array<SurfacePlace, kMaxSurfaces> known;
         const int knownCount = mCount;
+        for (int i = 0; i < mCount; ++i) known[i] = SurfacePlace{mSurfaces[i].normal, mSurfaces[i].touch};
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
             Surface s = mSurfaces[i];
@@ -575,6 +619,20 @@ private:
         query.center = toR(mPosition);
         query.radius = static_cast<float>(mRadius);
         if (!mWorld->findNear(query, collector)) return;
+        // Worlds report in their own order (a tree's, or the order added): the deepest first,
+        // ties by point, so that the surfaces and their solve order do not depend on it.
+        const auto before = [](const NearSurface& a, const NearSurface& b) {
+            if (a.distance != b.distance) return a.distance < b.distance;
+            if (a.point.x != b.point.x) return a.point.x < b.point.x;
+            if (a.point.y != b.point.y) return a.point.y < b.point.y;
+            if (a.point.z != b.point.z) return a.point.z < b.point.z;
+            if (a.normal.x != b.normal.x) return a.normal.x < b.normal.x;
+            if (a.normal.y != b.normal.y) return a.normal.y < b.normal.y;
+            return a.normal.z < b.normal.z;
+        };
+        for (int j = 1; j < collector.count; ++j)  // at most kMaxSurfaces: insertion
+            for (int k = j; k > 0 && before(collector.found[k], collector.found[k - 1]); --k)
+                std::swap(collector.found[k], collector.found[k - 1]);
         for (int j = 0; j < collector.count && mCount < kMaxSurfaces; ++j) {
             const NearSurface& near = collector.found[j];
             const DVec3 n = glm::normalize(toD(near.normal));
@@ -790,11 +848,12 @@ private:
     // Jolt: a probe along n starts clear of the other surfaces the sphere touches or is in (by
     // 0.1 mm), or it could report one of them at its start instead of the surface it looks for;
     // what it finds is moved back by as much. Other engines: no offset.
-    DVec3 clearance(const DVec3& n, const Surface* surfaces, int count) const {
+    template <class Place>  // Surface or SurfacePlace
+    DVec3 clearance(const DVec3& n, const Place* surfaces, int count) const {
         DVec3 offset(0.0);
         if (mProfile.engine != PhysicsEngine::Jolt) return offset;
         for (int j = 0; j < count; ++j) {
-            const Surface& o = surfaces[j];
+            const Place& o = surfaces[j];
             if (glm::dot(o.normal, n) > 0.999) continue;
             const double gap = glm::dot(mPosition - o.touch, o.normal);
             if (gap < 1e-3) offset += o.normal * (std::max(0.0, -gap) + 1e-4);
@@ -2000,7 +2059,10 @@ private:
 
     const ProjectileSettings& mSettings;
     const EngineProfile& mProfile;
-    const CollisionWorld* mWorld;  // the world, or a PlaneWorld while contactCoast tries steps
+    const CollisionWorld* mFullWorld;  // the world the prediction runs in
+    const CollisionWorld* mWorld;      // mFullWorld, mLocal in a step, or a PlaneWorld while contactCoast tries steps
+    LocalWorld mLocal;                 // the shapes gathered around the sphere (nearWorld)
+    int mGatherFailures = 0;           // gathers refused in a row (3: the world cannot, stop asking)
     TrajectoryRecorder& mRecorder;
     ProjectileResult& mResult;
     EngineRecurrence mRec;

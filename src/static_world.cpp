@@ -853,6 +853,20 @@ bool StaticWorld::isOnlyPlane(const PlaneRegion& region) const {
     return tester.result();
 }
 
+bool StaticWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collector) const {
+    collector.begin(mSettings.surfaceTolerance);
+    for (std::size_t i = 0; i < mPlanes.size(); ++i)
+        if (foresight::mayTouch(region, mPlanes[i]) && !collector.add(mPlanes[i], mPlaneMaterials[i])) return false;
+    for (std::size_t i = 0; i < mSpheres.size(); ++i)
+        if (foresight::mayTouch(region, mSpheres[i]) && !collector.add(mSpheres[i], mSphereMaterials[i])) return false;
+    for (std::size_t i = 0; i < mBoxes.size(); ++i)
+        if (foresight::mayTouch(region, mBoxes[i]) && !collector.add(mBoxes[i], mBoxMaterials[i])) return false;
+    for (std::size_t i = 0; i < mTriangles.size(); ++i)
+        if (foresight::mayTouch(region, mTriangles[i]) && !collector.add(mTriangles[i], mTriangleMaterials[i]))
+            return false;
+    return true;
+}
+
 bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     for (const Plane& p : mPlanes)
         if (foresight::mayTouch(capsule, p)) return true;

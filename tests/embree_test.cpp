@@ -7,6 +7,7 @@
 
 #include "counting_allocator.h"  // replaces operator new/delete in this binary (counts them)
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -1174,6 +1175,196 @@ TEST(embree_mesh, AddMeshRefusesBadInput) {
     EXPECT_FALSE(world.castSegment(SegmentCast{r3(0.2, 1, 0.2), Vec3(0, 0, 0), 0.0f}, hit));  // zero length
     ASSERT_TRUE(world.commit());
     EXPECT_TRUE(world.castSegment(SegmentCast{r3(0.2, 1, 0.2), Vec3(0, -2, 0), 0.0f}, hit));
+}
+
+// A ShapeCollector that builds a StaticWorld of what it is given (with the world's tolerance).
+struct GatheredWorld final : foresight::ShapeCollector {
+    StaticWorld world;
+    std::size_t shapes = 0;
+    void begin(float surfaceTolerance) override {
+        world = StaticWorld(foresight::StaticWorldSettings{surfaceTolerance});
+    }
+    bool add(const foresight::Plane& p, const foresight::SurfaceMaterial& m) override { return keep(world.add(p, m)); }
+    bool add(const foresight::Sphere& p, const foresight::SurfaceMaterial& m) override { return keep(world.add(p, m)); }
+    bool add(const foresight::OrientedBox& p, const foresight::SurfaceMaterial& m) override {
+        return keep(world.add(p, m));
+    }
+    bool add(const Triangle& p, const foresight::SurfaceMaterial& m) override { return keep(world.add(p, m)); }
+    bool keep(Status s) {
+        EXPECT_EQ(s, Status::Ok);
+        ++shapes;
+        return s == Status::Ok;
+    }
+};
+
+// Every field of two cast answers, bit for bit.
+bool sameAnswer(bool hitA, const CastHit& a, bool hitB, const CastHit& b) {
+    if (hitA != hitB) return false;
+    if (!hitA) return true;
+    return std::memcmp(&a.fraction, &b.fraction, sizeof a.fraction) == 0 &&
+           std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
+           std::memcmp(&a.normal, &b.normal, sizeof a.normal) == 0 && a.restitution == b.restitution &&
+           a.friction == b.friction;
+}
+
+struct SortedNear final : foresight::NearCollector {
+    std::vector<std::array<float, 9>> found;
+    void add(const foresight::NearSurface& s) override {
+        found.push_back({static_cast<float>(s.point.x), static_cast<float>(s.point.y), static_cast<float>(s.point.z),
+                         s.normal.x, s.normal.y, s.normal.z, s.distance, s.restitution, s.friction});
+        std::sort(found.begin(), found.end());
+    }
+};
+
+// CollisionWorld::gatherShapes' promise, for StaticWorld and EmbreeWorld: a StaticWorld of the
+// gathered shapes answers every swept-sphere cast and closest-point query inside the region bit
+// for bit as the world (the scene's random casts: starts on surfaces, grazes of edges and
+// vertices, casts along faces; regions from just around the cast to 1.5 m beyond it).
+TEST_F(embree_world, GatheredShapesAnswerAsTheWorld) {
+    const Worlds& w = *worlds;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (const float radius : {0.05f, 0.2f}) {
+        const auto casts = randomCasts(w.meshTriangles, 3000, radius, 11);
+        for (const foresight::CollisionWorld* world : {static_cast<const foresight::CollisionWorld*>(&w.reference),
+                                                       static_cast<const foresight::CollisionWorld*>(&w.embree)}) {
+            int hits = 0, gathered = 0, near = 0;
+            for (std::size_t i = 0; i < casts.size(); ++i) {
+                const SegmentCast& cast = casts[i];
+                SegmentCast region = cast;
+                region.radius = cast.radius + static_cast<float>(u(rng) < 0.3 ? 1e-3 : 1.5 * u(rng));
+                GatheredWorld local;
+                if (!world->gatherShapes(region, local)) continue;
+                ++gathered;
+                CastHit a, b;
+                const bool hitA = world->castSegment(cast, a), hitB = local.world.castSegment(cast, b);
+                ASSERT_TRUE(sameAnswer(hitA, a, hitB, b))
+                    << "cast " << i << " region radius " << region.radius << ": " << hitA << " " << hitB << " fraction "
+                    << a.fraction << " vs " << b.fraction << " (" << local.shapes << " shapes gathered)";
+                hits += hitA ? 1 : 0;
+                // The closest points around the start.
+                foresight::NearQuery query;
+                query.center = cast.origin;
+                query.radius = region.radius - cast.radius * static_cast<float>(u(rng));
+                SegmentCast sphere;
+                sphere.origin = cast.origin;
+                sphere.radius = query.radius;
+                GatheredWorld around;
+                ASSERT_TRUE(world->gatherShapes(sphere, around));
+                SortedNear fromWorld, fromLocal;
+                ASSERT_TRUE(world->findNear(query, fromWorld));
+                ASSERT_TRUE(around.world.findNear(query, fromLocal));
+                ASSERT_EQ(fromWorld.found, fromLocal.found) << "query " << i;
+                near += static_cast<int>(fromWorld.found.size());
+            }
+            EXPECT_EQ(gathered, static_cast<int>(casts.size()));  // a small scene: always room
+            EXPECT_GT(hits, 1000);
+            EXPECT_GT(near, 1000);
+        }
+    }
+}
+
+// A collector with room for a few shapes: the world says it could not gather them all.
+TEST_F(embree_world, GatheringFailsWhenTheCollectorIsFull) {
+    struct Small final : foresight::ShapeCollector {
+        int room = 3;
+        void begin(float) override {}
+        bool add(const foresight::Plane&, const foresight::SurfaceMaterial&) override { return room-- > 0; }
+        bool add(const foresight::Sphere&, const foresight::SurfaceMaterial&) override { return room-- > 0; }
+        bool add(const foresight::OrientedBox&, const foresight::SurfaceMaterial&) override { return room-- > 0; }
+        bool add(const Triangle&, const foresight::SurfaceMaterial&) override { return room-- > 0; }
+    };
+    SegmentCast everything{r3(0, 2, 0), Vec3(0), 20.0f};
+    Small a, b;
+    EXPECT_FALSE(worlds->embree.gatherShapes(everything, a));
+    EXPECT_FALSE(worlds->reference.gatherShapes(everything, b));
+    GatheredWorld all;
+    ASSERT_TRUE(worlds->embree.gatherShapes(everything, all));
+    EXPECT_EQ(all.shapes, worlds->meshTriangles.size() + 4);  // the mesh and the four primitives
+    // A world that cannot gather says so.
+    const foresight::CallbackWorld callback([](void*, const SegmentCast&, CastHit&) { return false; }, nullptr);
+    GatheredWorld none;
+    EXPECT_FALSE(callback.gatherShapes(everything, none));
+}
+
+// Forwards every query but gatherShapes: the engine method then asks the world every query.
+class NoGather final : public foresight::CollisionWorld {
+public:
+    explicit NoGather(const foresight::CollisionWorld& world) : mWorld(world) {}
+    bool castSegment(const SegmentCast& c, CastHit& h) const override { return mWorld.castSegment(c, h); }
+    bool mayTouch(const SegmentCast& c) const override { return mWorld.mayTouch(c); }
+    bool firstTouch(const SegmentCast& c, float& f) const override { return mWorld.firstTouch(c, f); }
+    bool isOnlyPlane(const foresight::PlaneRegion& r) const override { return mWorld.isOnlyPlane(r); }
+    float regionQueryCost(float r) const override { return mWorld.regionQueryCost(r); }
+    bool findNear(const foresight::NearQuery& q, foresight::NearCollector& c) const override {
+        return mWorld.findNear(q, c);
+    }
+
+private:
+    const foresight::CollisionWorld& mWorld;
+};
+
+// The same, and counts the gathers it forwards.
+class CountedGather final : public foresight::CollisionWorld {
+public:
+    explicit CountedGather(const foresight::CollisionWorld& world) : mWorld(world) {}
+    bool castSegment(const SegmentCast& c, CastHit& h) const override { return mWorld.castSegment(c, h); }
+    bool mayTouch(const SegmentCast& c) const override { return mWorld.mayTouch(c); }
+    bool firstTouch(const SegmentCast& c, float& f) const override { return mWorld.firstTouch(c, f); }
+    bool isOnlyPlane(const foresight::PlaneRegion& r) const override { return mWorld.isOnlyPlane(r); }
+    float regionQueryCost(float r) const override { return mWorld.regionQueryCost(r); }
+    bool findNear(const foresight::NearQuery& q, foresight::NearCollector& c) const override {
+        return mWorld.findNear(q, c);
+    }
+    bool gatherShapes(const SegmentCast& r, foresight::ShapeCollector& c) const override {
+        ++gathers;
+        return mWorld.gatherShapes(r, c);
+    }
+    mutable int gathers = 0;
+
+private:
+    const foresight::CollisionWorld& mWorld;
+};
+
+// ProjectileMethod::Engine asks the shapes it gathered around a sphere in contact instead of the
+// world: every engine's flight in the room (floor, walls, boxes, ramp, primitives) is the same,
+// point for point and bit for bit, as when it asks the world every query.
+TEST_F(embree_world, EngineFlightIsTheSameWithGatheredShapes) {
+    using foresight::PhysicsEngine;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (const PhysicsEngine engine : {PhysicsEngine::Bullet, PhysicsEngine::Jolt, PhysicsEngine::PhysX,
+                                       PhysicsEngine::Rapier, PhysicsEngine::Godot3, PhysicsEngine::Godot3Bullet}) {
+        foresight::ProjectileSettings settings;
+        settings.method = foresight::ProjectileMethod::Engine;
+        settings.engine = foresight::engineProfile(engine);
+        settings.engine.triangleMesh = engine == PhysicsEngine::Bullet;
+        settings.step = settings.engine.timestep;
+        for (const foresight::CollisionWorld* world :
+             {static_cast<const foresight::CollisionWorld*>(&worlds->reference),
+              static_cast<const foresight::CollisionWorld*>(&worlds->embree)}) {
+            const NoGather plain(*world);
+            const CountedGather counted(*world);
+            std::vector<foresight::TrajectoryPoint> a(400), b(400);
+            for (int i = 0; i < 12; ++i) {
+                settings.radius = static_cast<float>(0.05 + 0.2 * u(rng));
+                settings.restitution = static_cast<float>(0.1 + 0.7 * u(rng));
+                settings.friction = static_cast<float>(0.6 * u(rng));
+                const RVec3 start = r3(-4 + 8 * u(rng), 0.5 + 3 * u(rng), -3 + 6 * u(rng));
+                const Vec3 velocity(static_cast<float>(16 * u(rng) - 8), static_cast<float>(10 * u(rng) - 3),
+                                    static_cast<float>(16 * u(rng) - 8));
+                foresight::ProjectileResult ra, rb;
+                ASSERT_EQ(foresight::predictProjectile(start, velocity, 3.0f, settings, &plain, a, ra), Status::Ok);
+                ASSERT_EQ(foresight::predictProjectile(start, velocity, 3.0f, settings, &counted, b, rb), Status::Ok);
+                ASSERT_EQ(ra.trajectorySize, rb.trajectorySize);
+                for (std::size_t k = 0; k < ra.trajectorySize; ++k)
+                    ASSERT_EQ(std::memcmp(&a[k], &b[k], sizeof a[k]), 0)
+                        << "engine " << static_cast<int>(engine) << " throw " << i << " point " << k;
+                EXPECT_EQ(ra.bounces, rb.bounces);
+            }
+            EXPECT_GT(counted.gathers, 12) << "engine " << static_cast<int>(engine);
+        }
+    }
 }
 
 }  // namespace

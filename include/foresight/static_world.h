@@ -198,8 +198,8 @@ public:
 
 private:
     struct Edge {
-        glm::dvec3 from{0.0}, to{0.0};  // ordered: from < to
-        int side = 0;                   // the side of the edge its triangle lies on
+        glm::dvec3 from, to;  // ordered: from < to
+        int side;             // the side of the edge its triangle lies on
     };
     bool sameMaterial(const SurfaceMaterial& material) const;
     void addEdge(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w);
@@ -215,7 +215,7 @@ private:
     bool mFailed = false;
     bool mCovered = false;   // a plane or a box covers the cross-section
     bool mAnchored = false;  // a triangle holds the anchor
-    mutable std::array<Edge, kMaxEdges> mEdges{};
+    mutable std::array<Edge, kMaxEdges> mEdges;  // the first mEdgeCount are used (not cleared: 10 KB)
     int mEdgeCount = 0;
 };
 
@@ -302,6 +302,10 @@ public:
 
     /// Every shape through NearTester (a linear scan).
     bool findNear(const NearQuery& query, NearCollector& collector) const override;
+
+    /// Every shape whose mayTouch test passes, kind by kind (planes, spheres, boxes, triangles)
+    /// in the order added: the order castSegment tests them in (a linear scan).
+    bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const override;
 
     /// The shapes as added (normalised).
     std::span<const Plane> planes() const { return mPlanes; }

@@ -72,6 +72,31 @@ public:
     virtual void add(const NearSurface& surface) = 0;
 };
 
+struct Plane;
+struct Sphere;
+struct OrientedBox;
+struct Triangle;
+struct SurfaceMaterial;
+
+/// Receives copies of a world's shapes from CollisionWorld::gatherShapes (the shapes and the
+/// material type are declared in static_world.h).
+class ShapeCollector {
+public:
+    virtual ~ShapeCollector() = default;
+    /// The world's surface tolerance, as StaticWorldSettings::surfaceTolerance [Units: m]; called
+    /// once, before the shapes.
+    virtual void begin(float surfaceTolerance) = 0;
+    /// One shape and its material. Returns false when the collector has no room for it: the
+    /// gathering then stops, and fails.
+    virtual bool add(const Plane& plane, const SurfaceMaterial& material) = 0;
+    /// See add(const Plane&, const SurfaceMaterial&).
+    virtual bool add(const Sphere& sphere, const SurfaceMaterial& material) = 0;
+    /// See add(const Plane&, const SurfaceMaterial&).
+    virtual bool add(const OrientedBox& box, const SurfaceMaterial& material) = 0;
+    /// See add(const Plane&, const SurfaceMaterial&).
+    virtual bool add(const Triangle& triangle, const SurfaceMaterial& material) = 0;
+};
+
 /// What a world must answer. Rules every implementation should follow (the built-in one does):
 /// - Report the closest hit with a surface the segment enters (`dot(displacement, normal) < 0`).
 /// - A segment that starts on a one-sided surface (within a small tolerance) and moves into it
@@ -141,6 +166,22 @@ public:
     virtual float regionQueryCost(float radius) const {
         (void)radius;
         return 1.0f;
+    }
+
+    /// Copies into `collector` every shape that may come within `region.radius` of the segment
+    /// from `region.origin` to `region.origin + region.displacement` (at least the shapes that
+    /// mayTouch would find there; a few more do no harm), in the order in which this world's castSegment prefers one of two equally
+    /// close hits (the first wins). Returns true when it copied them all: then a StaticWorld
+    /// holding exactly these shapes in this order, with this surface tolerance, answers
+    /// castSegment bit for bit as this world does, and findNear with the same surfaces (in its own
+    /// order), for every query that stays inside the region. Returns false when the world cannot
+    /// (the default) or the collector ran out of room. ProjectileMethod::Engine gathers the
+    /// shapes around a sphere that touches surfaces once and asks them, instead of the world,
+    /// the several small queries of each of the next steps.
+    virtual bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const {
+        (void)region;
+        (void)collector;
+        return false;
     }
 
     /// Every surface within `query.radius` of `query.center`, each passed to `collector` with its

@@ -1100,4 +1100,67 @@ bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const 
     return q.touched;
 }
 
+namespace {
+
+struct GatherQuery {
+    const Triangle* triangles = nullptr;
+    Box bounds;                       // the region's bounding box, grown by mayTouch's margins
+    std::array<unsigned, 512> found;  // the first count are used (left uninitialised: per query)
+    std::size_t count = 0;
+    bool overflowed = false;
+};
+
+bool gatherCallback(RTCPointQueryFunctionArguments* args) {
+    auto* q = static_cast<GatherQuery*>(args->userPtr);
+    if (q->overflowed) return false;
+    // Every triangle whose bounding box meets the region's: all that mayTouch(region, triangle)
+    // accepts, and a few more (they cost the local queries a box test each).
+    const Box b = triangleBox(q->triangles[args->primID]);
+    for (int axis = 0; axis < 3; ++axis)
+        if (b.lo[axis] > q->bounds.hi[axis] || b.hi[axis] < q->bounds.lo[axis]) return false;
+    if (q->count == q->found.size()) {
+        q->overflowed = true;
+        args->query->radius = 0.0f;  // no room: the traversal may stop
+        return true;
+    }
+    q->found[q->count++] = args->primID;
+    return false;
+}
+
+}  // namespace
+
+bool EmbreeWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collector) const {
+    // castSlow tests the primitives first, then the mesh triangles by index.
+    if (!mPrimitives.gatherShapes(region, collector)) return false;
+    const Impl* impl = mImpl.get();
+    if (!impl || impl->triangles.empty()) return true;
+    const SurfaceMaterial none;
+    if (!impl->committed || !impl->scene) {
+        for (const Triangle& t : impl->triangles)
+            if (foresight::mayTouch(region, t) && !collector.add(t, none)) return false;
+        return true;
+    }
+    RTCPointQuery query;
+    if (!capsuleQuery(region, query)) return false;  // beyond Embree's float range
+    GatherQuery q;
+    q.triangles = impl->triangles.data();
+    {
+        const DVec3 a = toD(region.origin), b = a + DVec3(region.displacement);
+        const double magnitude =
+            std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+        // prepareCapsule's growth (src/static_world.cpp), and a hair more for this box's rounding.
+        const double grow = std::max(0.0, static_cast<double>(region.radius)) + 1e-4 + 2e-6 * magnitude;
+        q.bounds.lo = glm::min(a, b) - grow;
+        q.bounds.hi = glm::max(a, b) + grow;
+    }
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(impl->scene, &query, &context, gatherCallback, &q);
+    if (q.overflowed) return false;
+    std::sort(q.found.begin(), q.found.begin() + static_cast<std::ptrdiff_t>(q.count));
+    for (std::size_t k = 0; k < q.count; ++k)
+        if (!collector.add(impl->triangles[q.found[k]], none)) return false;
+    return true;
+}
+
 FORESIGHT_NAMESPACE_END

@@ -207,6 +207,11 @@ public:
     /// (the query's sphere, grown by the float rounding of its centre) finds, through NearTester.
     /// False beyond Embree's float range (then nothing of the mesh is reported).
     bool findNear(const NearQuery& query, NearCollector& collector) const override;
+    /// The primitives as StaticWorld gathers them, then the mesh triangles that one Embree point
+    /// query (a sphere holding the region) finds and whose bounding boxes meet the region's, in
+    /// the order added: the order castSegment breaks ties in. False when more than 512 mesh
+    /// triangles qualify, beyond Embree's float range, or when the collector is full.
+    bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const override;
     /// 5 for point casts (radius 0: Embree's native ray traversal, about five times cheaper
     /// than a firstTouch query on a level of 3 000 triangles), 1 for swept spheres (a sphere
     /// cast walks the tree with point queries, as the region queries do).
