@@ -234,9 +234,21 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
             if (insideTriangle(p, a, b, c, n)) best.offer(t, side);
         }
     }
-    capsuleEntry(ray, a, b, radius, best);
-    capsuleEntry(ray, b, c, radius, best);
-    capsuleEntry(ray, c, a, radius, best);
+    // The edges (capsules with their corner spheres). An edge whose bounding box stays out of
+    // the swept sphere's (grown by far more than the rounding of the tests) cannot be entered:
+    // capsuleEntry offers only points within the radius of the edge, along the segment.
+    const DVec3 end = ray.origin + ray.direction * ray.length;
+    const double magnitude = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z),
+                                       std::abs(end.x), std::abs(end.y), std::abs(end.z)});
+    const double grow = radius + 1e-6 * (radius + ray.length + magnitude);
+    const DVec3 lo = glm::min(ray.origin, end) - grow, hi = glm::max(ray.origin, end) + grow;
+    const auto reaches = [&](const DVec3& u, const DVec3& v) {
+        const DVec3 low = glm::min(u, v), high = glm::max(u, v);
+        return low.x <= hi.x && high.x >= lo.x && low.y <= hi.y && high.y >= lo.y && low.z <= hi.z && high.z >= lo.z;
+    };
+    if (reaches(a, b)) capsuleEntry(ray, a, b, radius, best);
+    if (reaches(b, c)) capsuleEntry(ray, b, c, radius, best);
+    if (reaches(c, a)) capsuleEntry(ray, c, a, radius, best);
 }
 
 }  // namespace
