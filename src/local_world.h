@@ -65,24 +65,7 @@ public:
         const double pad = static_cast<double>(cast.radius) + mTolerance + 1e-4 + 1e-6 * magnitude(a, a + d);
         query.lo = glm::min(a, a + d) - pad;
         query.hi = glm::max(a, a + d) + pad;
-        for (std::size_t i = 0; i < mShapeCount; ++i) {
-            const Entry& e = mShapes[i];
-            if (e.kind != Kind::Plane && !meets(e.bounds, query)) continue;
-            switch (e.kind) {
-                case Kind::Plane:
-                    caster.test(mPlanes[e.index], mPlaneMaterials[e.index]);
-                    break;
-                case Kind::Sphere:
-                    caster.test(mSpheres[e.index], mSphereMaterials[e.index]);
-                    break;
-                case Kind::Box:
-                    caster.test(mBoxes[e.index], mBoxMaterials[e.index]);
-                    break;
-                case Kind::Triangle:
-                    caster.test(mTriangles[e.index], mTriangleMaterials[e.index]);
-                    break;
-            }
-        }
+        testShapes(query, caster);
         return caster.result(hit);
     }
 
@@ -95,24 +78,7 @@ public:
         const double pad = static_cast<double>(query.radius) + mTolerance + 1e-4 + 1e-6 * magnitude(c, c);
         bounds.lo = c - pad;
         bounds.hi = c + pad;
-        for (std::size_t i = 0; i < mShapeCount; ++i) {
-            const Entry& e = mShapes[i];
-            if (e.kind != Kind::Plane && !meets(e.bounds, bounds)) continue;
-            switch (e.kind) {
-                case Kind::Plane:
-                    tester.test(mPlanes[e.index], mPlaneMaterials[e.index]);
-                    break;
-                case Kind::Sphere:
-                    tester.test(mSpheres[e.index], mSphereMaterials[e.index]);
-                    break;
-                case Kind::Box:
-                    tester.test(mBoxes[e.index], mBoxMaterials[e.index]);
-                    break;
-                case Kind::Triangle:
-                    tester.test(mTriangles[e.index], mTriangleMaterials[e.index]);
-                    break;
-            }
-        }
+        testShapes(bounds, tester);
         return true;
     }
 
@@ -139,6 +105,24 @@ private:
         Bounds bounds;  // the shape's bounding box (unused for planes) [m]
     };
 
+    // Every shape whose bounds meet `bounds` (every plane), in order, through `tester.test(shape,
+    // material)` (a ClosestHitCaster or a NearTester).
+    template <class Tester>
+    void testShapes(const Bounds& bounds, Tester& tester) const {
+        for (std::size_t i = 0; i < mShapeCount; ++i) {
+            const Entry& e = mShapes[i];
+            if (e.kind == Kind::Plane)
+                tester.test(mPlanes[e.index], mPlaneMaterials[e.index]);
+            else if (!meets(e.bounds, bounds))
+                continue;
+            else if (e.kind == Kind::Sphere)
+                tester.test(mSpheres[e.index], mSphereMaterials[e.index]);
+            else if (e.kind == Kind::Box)
+                tester.test(mBoxes[e.index], mBoxMaterials[e.index]);
+            else
+                tester.test(mTriangles[e.index], mTriangleMaterials[e.index]);
+        }
+    }
     static bool meets(const Bounds& a, const Bounds& b) {
         return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
                b.lo.z <= a.hi.z;

@@ -1287,27 +1287,10 @@ TEST_F(embree_world, GatheringFailsWhenTheCollectorIsFull) {
     EXPECT_FALSE(callback.gatherShapes(everything, none));
 }
 
-// Forwards every query but gatherShapes: the engine method then asks the world every query.
-class NoGather final : public foresight::CollisionWorld {
+// Forwards every query to a world, gatherShapes only when `gathers` (and counts those).
+class Forwarding final : public foresight::CollisionWorld {
 public:
-    explicit NoGather(const foresight::CollisionWorld& world) : mWorld(world) {}
-    bool castSegment(const SegmentCast& c, CastHit& h) const override { return mWorld.castSegment(c, h); }
-    bool mayTouch(const SegmentCast& c) const override { return mWorld.mayTouch(c); }
-    bool firstTouch(const SegmentCast& c, float& f) const override { return mWorld.firstTouch(c, f); }
-    bool isOnlyPlane(const foresight::PlaneRegion& r) const override { return mWorld.isOnlyPlane(r); }
-    float regionQueryCost(float r) const override { return mWorld.regionQueryCost(r); }
-    bool findNear(const foresight::NearQuery& q, foresight::NearCollector& c) const override {
-        return mWorld.findNear(q, c);
-    }
-
-private:
-    const foresight::CollisionWorld& mWorld;
-};
-
-// The same, and counts the gathers it forwards.
-class CountedGather final : public foresight::CollisionWorld {
-public:
-    explicit CountedGather(const foresight::CollisionWorld& world) : mWorld(world) {}
+    Forwarding(const foresight::CollisionWorld& world, bool gather) : mWorld(world), mGathers(gather) {}
     bool castSegment(const SegmentCast& c, CastHit& h) const override { return mWorld.castSegment(c, h); }
     bool mayTouch(const SegmentCast& c) const override { return mWorld.mayTouch(c); }
     bool firstTouch(const SegmentCast& c, float& f) const override { return mWorld.firstTouch(c, f); }
@@ -1317,6 +1300,7 @@ public:
         return mWorld.findNear(q, c);
     }
     bool gatherShapes(const SegmentCast& r, foresight::ShapeCollector& c) const override {
+        if (!mGathers) return false;
         ++gathers;
         return mWorld.gatherShapes(r, c);
     }
@@ -1324,6 +1308,7 @@ public:
 
 private:
     const foresight::CollisionWorld& mWorld;
+    bool mGathers;
 };
 
 // ProjectileMethod::Engine asks the shapes it gathered around a sphere in contact instead of the
@@ -1343,8 +1328,7 @@ TEST_F(embree_world, EngineFlightIsTheSameWithGatheredShapes) {
         for (const foresight::CollisionWorld* world :
              {static_cast<const foresight::CollisionWorld*>(&worlds->reference),
               static_cast<const foresight::CollisionWorld*>(&worlds->embree)}) {
-            const NoGather plain(*world);
-            const CountedGather counted(*world);
+            const Forwarding plain(*world, false), counted(*world, true);
             std::vector<foresight::TrajectoryPoint> a(400), b(400);
             for (int i = 0; i < 12; ++i) {
                 settings.radius = static_cast<float>(0.05 + 0.2 * u(rng));
