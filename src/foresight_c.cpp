@@ -460,29 +460,6 @@ void copyError(char* error, size_t capacity, const std::string& text) {
 }
 #endif
 
-// A StaticWorld's part of fs_world_add_mesh, with EmbreeWorld::addMesh's rules: the whole mesh is
-// checked before anything is added.
-fs_status addStaticMesh(StaticWorld& world, std::span<const RVec3> vertices, const uint32_t* indices, size_t indexCount,
-                        fs_mesh_report& report) {
-    for (const RVec3& v : vertices)
-        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return FS_STATUS_NON_FINITE_INPUT;
-    if (indexCount % 3 != 0) return FS_STATUS_DEGENERATE_SHAPE;
-    for (std::size_t i = 0; i < indexCount; ++i)
-        if (indices[i] >= vertices.size()) return FS_STATUS_DEGENERATE_SHAPE;
-    report = fs_mesh_report{0, 0, 0};
-    const auto triangle = [&](std::size_t t) {
-        return Triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
-    };
-    for (std::size_t t = 0; t < indexCount / 3; ++t) {
-        if (validateTriangle(triangle(t)) == Status::Ok) continue;
-        if (report.degenerate_triangles++ == 0) report.first_degenerate_triangle = t;
-    }
-    if (report.degenerate_triangles == indexCount / 3) return FS_STATUS_DEGENERATE_SHAPE;
-    for (std::size_t t = 0; t < indexCount / 3; ++t)
-        if (world.add(triangle(t)) == Status::Ok) ++report.triangles;
-    return FS_STATUS_OK;
-}
-
 // The calling thread's trajectory in C++ layout (see "Danger" in foresight_c.h): it keeps the
 // largest size it was given.
 thread_local std::vector<TrajectoryPoint> tTrajectory;
@@ -822,21 +799,19 @@ fs_status fs_world_add_mesh(fs_world* world, const fs_dvec3* vertices, size_t ve
     try {
         std::vector<RVec3> points(vertex_count);
         for (std::size_t i = 0; i < vertex_count; ++i) points[i] = toCpp(vertices[i]);
+        const std::span<const std::uint32_t> indexSpan(indices, index_count);
+        MeshReport meshReport;
 #if FORESIGHT_C_WITH_EMBREE
-        if (world->embree) {
-            MeshReport meshReport;
-            const Status s =
-                world->embree->addMesh(points, std::span<const std::uint32_t>(indices, index_count), &meshReport);
-            if (s != Status::Ok) return toC(s);
-            counts = fs_mesh_report{meshReport.triangles, meshReport.degenerateTriangles,
-                                    meshReport.firstDegenerateTriangle};
-            if (report != nullptr) *report = counts;
-            return FS_STATUS_OK;
-        }
+        const Status s = world->embree ? world->embree->addMesh(points, indexSpan, &meshReport)
+                                       : world->world.addMesh(points, indexSpan, &meshReport);
+#else
+        const Status s = world->world.addMesh(points, indexSpan, &meshReport);
 #endif
-        const fs_status s = addStaticMesh(world->world, points, indices, index_count, counts);
-        if (s == FS_STATUS_OK && report != nullptr) *report = counts;
-        return s;
+        if (s != Status::Ok) return toC(s);
+        counts =
+            fs_mesh_report{meshReport.triangles, meshReport.degenerateTriangles, meshReport.firstDegenerateTriangle};
+        if (report != nullptr) *report = counts;
+        return FS_STATUS_OK;
     } catch (...) {
         // A StaticWorld that ran out of memory midway is emptied, as fs_world_add_* do.
 #if FORESIGHT_C_WITH_EMBREE

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 FORESIGHT_NAMESPACE_BEGIN
 using namespace detail;
@@ -291,6 +292,59 @@ Status validateTriangle(const Triangle& triangle) {
     const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
     // Zero area, or a sliver whose height is under 1e-6 of its longest edge (unstable normal).
     if (!(twiceArea > 2e-12) || !(twiceArea > 1e-6 * longest * longest)) return Status::DegenerateShape;
+    return Status::Ok;
+}
+
+Status checkMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices, MeshReport& report) {
+    report = MeshReport{};
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        if (!isFinite(vertices[i])) {
+            report.error = "vertex " + std::to_string(i) + " is not finite";
+            return Status::NonFiniteInput;
+        }
+    }
+    if (indices.size() % 3 != 0) {
+        report.error = "the index count (" + std::to_string(indices.size()) + ") is not a multiple of 3";
+        return Status::DegenerateShape;
+    }
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+        if (indices[i] >= vertices.size()) {
+            report.error = "index " + std::to_string(i) + " refers to vertex " + std::to_string(indices[i]) +
+                           ", out of range (" + std::to_string(vertices.size()) + " vertices)";
+            return Status::DegenerateShape;
+        }
+    }
+    for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+        const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
+        if (validateTriangle(triangle) == Status::Ok)
+            ++report.triangles;
+        else if (report.degenerateTriangles++ == 0)
+            report.firstDegenerateTriangle = t;
+    }
+    if (report.triangles == 0) {
+        report.error =
+            report.degenerateTriangles > 0
+                ? "no usable triangles (" + std::to_string(report.degenerateTriangles) + " degenerate ones skipped)"
+                : std::string("no triangles");
+        return Status::DegenerateShape;
+    }
+    return Status::Ok;
+}
+
+Status StaticWorld::addMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices,
+                            MeshReport* report) {
+    MeshReport local;
+    MeshReport& r = report ? *report : local;
+    const Status status = checkMesh(vertices, indices, r);
+    if (status != Status::Ok) return status;
+    mTriangles.reserve(mTriangles.size() + r.triangles);
+    mTriangleMaterials.reserve(mTriangleMaterials.size() + r.triangles);
+    for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+        const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
+        if (validateTriangle(triangle) != Status::Ok) continue;
+        mTriangles.push_back(triangle);
+        mTriangleMaterials.push_back(SurfaceMaterial{});
+    }
     return Status::Ok;
 }
 

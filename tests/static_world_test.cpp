@@ -10,10 +10,12 @@
 #include <foresight/world.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <iterator>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -568,6 +570,59 @@ TEST(EmptyWorld, HitsNothing) {
     cast.displacement = Vec3(0.0f, -100.0f, 0.0f);
     CastHit hit;
     EXPECT_FALSE(world.castSegment(cast, hit));
+}
+
+// StaticWorld::addMesh: the usable triangles, as if added one by one (the same answers to the
+// same casts); a refused mesh adds nothing and says why.
+TEST(StaticWorld, AddMeshAddsTheUsableTrianglesOrNothing) {
+    // A 2 x 2 floor of four quads (eight triangles) and one degenerate triangle (a repeated vertex).
+    std::vector<RVec3> vertices;
+    for (int z = 0; z <= 2; ++z)
+        for (int x = 0; x <= 2; ++x) vertices.emplace_back(static_cast<Real>(x), 0, static_cast<Real>(z));
+    std::vector<std::uint32_t> indices;
+    for (std::uint32_t z = 0; z < 2; ++z)
+        for (std::uint32_t x = 0; x < 2; ++x) {
+            const std::uint32_t a = 3 * z + x, b = a + 1, c = a + 4, d = a + 3;
+            for (const std::uint32_t k : {a, d, c, a, c, b}) indices.push_back(k);
+        }
+    for (const std::uint32_t k : {0u, 0u, 4u}) indices.push_back(k);
+    StaticWorld mesh, oneByOne;
+    foresight::MeshReport report;
+    ASSERT_EQ(mesh.addMesh(vertices, indices, &report), Status::Ok) << report.error;
+    EXPECT_EQ(report.triangles, 8u);
+    EXPECT_EQ(report.degenerateTriangles, 1u);
+    EXPECT_EQ(report.firstDegenerateTriangle, 8u);
+    EXPECT_TRUE(report.error.empty());
+    EXPECT_EQ(mesh.triangles().size(), 8u);
+    for (std::size_t t = 0; t < 8; ++t)
+        ASSERT_EQ(oneByOne.add(
+                      Triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]}),
+                  Status::Ok);
+    for (int i = 0; i < 200; ++i) {
+        const double u = (i % 20) / 10.0 + 0.013, w = (i / 20) / 5.0 + 0.007;
+        const SegmentCast cast{RVec3(static_cast<Real>(u), 1, static_cast<Real>(w)), Vec3(0.3f, -2, -0.2f),
+                               i % 2 ? 0.1f : 0.0f};
+        CastHit a, b;
+        const bool hitA = mesh.castSegment(cast, a), hitB = oneByOne.castSegment(cast, b);
+        ASSERT_EQ(hitA, hitB) << i;
+        if (!hitA) continue;
+        EXPECT_EQ(a.fraction, b.fraction);
+        EXPECT_EQ(a.normal, b.normal);
+    }
+    // Refused, nothing added: non-finite vertex, index count, index range, nothing usable.
+    const std::size_t before = mesh.triangles().size();
+    std::vector<RVec3> bad = vertices;
+    bad[4].y = std::numeric_limits<Real>::quiet_NaN();
+    EXPECT_EQ(mesh.addMesh(bad, indices, &report), Status::NonFiniteInput);
+    EXPECT_EQ(report.error, "vertex 4 is not finite");
+    EXPECT_EQ(mesh.addMesh(vertices, std::vector<std::uint32_t>{0, 1}, &report), Status::DegenerateShape);
+    EXPECT_NE(report.error.find("not a multiple of 3"), std::string::npos);
+    EXPECT_EQ(mesh.addMesh(vertices, std::vector<std::uint32_t>{0, 1, 9}, &report), Status::DegenerateShape);
+    EXPECT_NE(report.error.find("out of range"), std::string::npos);
+    EXPECT_EQ(mesh.addMesh(vertices, std::vector<std::uint32_t>{0, 1, 2}, &report), Status::DegenerateShape);
+    EXPECT_NE(report.error.find("no usable triangles"), std::string::npos);
+    EXPECT_EQ(mesh.addMesh(vertices, std::vector<std::uint32_t>{}, nullptr), Status::DegenerateShape);
+    EXPECT_EQ(mesh.triangles().size(), before);
 }
 
 }  // namespace

@@ -24,14 +24,10 @@ bool addLevelMesh(Scenario& scenario, const foresight_level::LevelMesh& mesh, st
     if (!world->commit(&error)) return false;
     scenario.meshWorld = std::move(world);
 #else
-    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const foresight::Triangle triangle{vertices[mesh.indices[i]], vertices[mesh.indices[i + 1]],
-                                           vertices[mesh.indices[i + 2]]};
-        if (foresight::validateTriangle(triangle) == foresight::Status::Ok &&
-            scenario.world.add(triangle) != foresight::Status::Ok) {
-            error = "cannot add a triangle of the level";
-            return false;
-        }
+    foresight::MeshReport report;
+    if (scenario.world.addMesh(vertices, mesh.indices, &report) != foresight::Status::Ok) {
+        error = report.error;
+        return false;
     }
 #endif
     return true;

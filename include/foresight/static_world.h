@@ -7,8 +7,10 @@
 #include <foresight/world.h>
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -213,8 +215,8 @@ private:
     glm::dvec3 mAnchor{0.0};  // a point of the cross-section: the start's projection
     SurfaceMaterial mMaterial;
     bool mFailed = false;
-    bool mCovered = false;   // a plane or a box covers the cross-section
-    bool mAnchored = false;  // a triangle holds the anchor
+    bool mCovered = false;                       // a plane or a box covers the cross-section
+    bool mAnchored = false;                      // a triangle holds the anchor
     mutable std::array<Edge, kMaxEdges> mEdges;  // the first mEdgeCount are used (not cleared: 10 KB)
     int mEdgeCount = 0;
 };
@@ -250,6 +252,21 @@ private:
     bool mValid = false;
 };
 
+/// What addMesh (StaticWorld's, EmbreeWorld's) or a mesh loader did with a mesh.
+struct MeshReport {
+    std::size_t triangles = 0;                ///< triangles added.
+    std::size_t degenerateTriangles = 0;      ///< triangles skipped (validateTriangle: DegenerateShape).
+    std::size_t firstDegenerateTriangle = 0;  ///< 0-based index (in the mesh) of the first skipped one.
+    std::string error;                        ///< why the mesh was refused; empty on success.
+};
+
+/// Checks an indexed triangle mesh (three indices per triangle) as addMesh does, adding nothing:
+/// NonFiniteInput for a non-finite vertex; DegenerateShape when the index count is not a
+/// multiple of 3, an index is out of range, or no triangle is usable (`report.error` says which
+/// and where). Ok otherwise, with `report.triangles` the usable triangles and the degenerate
+/// ones (validateTriangle) counted, the first one named.
+Status checkMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices, MeshReport& report);
+
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
     /// A cast that starts this close behind a one-sided surface and moves into it still hits
@@ -281,6 +298,12 @@ public:
     Status add(const OrientedBox& box, const SurfaceMaterial& material);
     /// See add(const Plane&, const SurfaceMaterial&).
     Status add(const Triangle& triangle, const SurfaceMaterial& material);
+
+    /// Adds the usable triangles of an indexed mesh (checkMesh's rules: a mesh it refuses adds
+    /// nothing; degenerate triangles are skipped and counted in `report`), each tested by every
+    /// cast like a triangle added alone: for up to a few thousand (EmbreeWorld for more).
+    Status addMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices,
+                   MeshReport* report = nullptr);
 
     /// Removes every shape.
     void clear();

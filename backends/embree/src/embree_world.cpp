@@ -648,46 +648,18 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
                             MeshReport* report) {
     MeshReport local;
     MeshReport& r = report ? *report : local;
-    r = MeshReport{};
+    if (const Status status = checkMesh(vertices, indices, r); status != Status::Ok) return status;
     if (!mImpl) mImpl = std::make_unique<Impl>();
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-        const DVec3 v = toD(vertices[i]);
-        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-            r.error = "vertex " + std::to_string(i) + " is not finite";
-            return Status::NonFiniteInput;
-        }
-    }
-    if (indices.size() % 3 != 0) {
-        r.error = "the index count (" + std::to_string(indices.size()) + ") is not a multiple of 3";
-        return Status::DegenerateShape;
-    }
-    for (std::size_t i = 0; i < indices.size(); ++i) {
-        if (indices[i] >= vertices.size()) {
-            r.error = "index " + std::to_string(i) + " refers to vertex " + std::to_string(indices[i]) +
-                      ", out of range (" + std::to_string(vertices.size()) + " vertices)";
-            return Status::DegenerateShape;
-        }
-    }
     std::vector<Triangle> added;
     std::vector<unsigned> addedIndices;  // into vertices, 3 per added triangle
-    added.reserve(indices.size() / 3);
-    addedIndices.reserve(indices.size());
+    added.reserve(r.triangles);
+    addedIndices.reserve(3 * r.triangles);
     for (std::size_t t = 0; t < indices.size() / 3; ++t) {
         const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
-        const Status status = validateTriangle(triangle);
-        if (status == Status::Ok) {
-            added.push_back(triangle);
-            addedIndices.insert(addedIndices.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
-                                indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
-        } else {
-            if (r.degenerateTriangles++ == 0) r.firstDegenerateTriangle = t;
-        }
-    }
-    if (added.empty()) {
-        r.error = r.degenerateTriangles > 0
-                      ? "no usable triangles (" + std::to_string(r.degenerateTriangles) + " degenerate ones skipped)"
-                      : std::string("no triangles");
-        return Status::DegenerateShape;
+        if (validateTriangle(triangle) != Status::Ok) continue;  // counted by checkMesh
+        added.push_back(triangle);
+        addedIndices.insert(addedIndices.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                            indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
     }
     if (mImpl->triangles.size() + added.size() > std::numeric_limits<unsigned>::max() - 1u) {
         r.error = "too many triangles";
@@ -714,7 +686,6 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
                                    std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z)});
         mImpl->triangles.push_back(triangle);
     }
-    r.triangles = added.size();
     mImpl->committed = false;
     return Status::Ok;
 }

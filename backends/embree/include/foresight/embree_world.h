@@ -84,14 +84,6 @@
 
 FORESIGHT_NAMESPACE_BEGIN
 
-/// What addMesh or a loader did with a mesh.
-struct MeshReport {
-    std::size_t triangles = 0;                ///< triangles added.
-    std::size_t degenerateTriangles = 0;      ///< triangles skipped (validateTriangle: DegenerateShape).
-    std::size_t firstDegenerateTriangle = 0;  ///< 0-based index (in the mesh) of the first skipped one.
-    std::string error;                        ///< why the mesh was refused; empty on success.
-};
-
 /// Largest glTF or GLB file loadGltf reads, together with every buffer file it names [bytes]:
 /// 2 GiB.
 inline constexpr std::uintmax_t kMaxGltfBytes = std::uintmax_t(2) << 30;
@@ -146,10 +138,10 @@ public:
     /// See add(const Plane&, const SurfaceMaterial&).
     Status add(const Triangle& triangle, const SurfaceMaterial& material);
 
-    /// Adds an indexed triangle mesh (three indices per triangle). Refuses the whole mesh
-    /// (nothing added) with NonFiniteInput for a non-finite vertex, and with DegenerateShape
-    /// when the index count is not a multiple of 3, an index is out of range, or no triangle is
-    /// usable; `report->error` then says which. Degenerate triangles are skipped and counted.
+    /// Adds an indexed triangle mesh (three indices per triangle) to the BVH, with checkMesh's
+    /// rules (static_world.h): the whole mesh is refused (nothing added) with NonFiniteInput or
+    /// DegenerateShape, `report->error` saying why; degenerate triangles are skipped and counted.
+    /// Also DegenerateShape past 2^32 - 2 triangles or vertices in all.
     Status addMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices,
                    MeshReport* report = nullptr);
 
