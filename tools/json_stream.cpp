@@ -3,6 +3,7 @@
 #include "json_number.h"
 
 #include <cassert>
+#include <cstddef>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -84,12 +85,18 @@ void JsonStreamWriter::key(std::string_view name) {
     appendJsonString(mKey, name);
 }
 
+// A cached text goes out as one fixed-size copy: its 31 bytes and the size byte after them.
+constexpr std::size_t kCachedCopy = 32;
+static_assert(kJsonNumberChars >= kCachedCopy);
+
 char* JsonStreamWriter::cachedDouble(char* out, double value) {
+    static_assert(offsetof(CachedNumber, size) == offsetof(CachedNumber, text) + sizeof(CachedNumber::text) &&
+                  sizeof(CachedNumber::text) + 1 == kCachedCopy);
     std::uint64_t bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
     CachedNumber& cached = mDoubles[cacheSlot(bits)];
     if (cached.size != 0 && cached.bits == bits) {
-        std::memcpy(out, cached.text, cached.size);
+        std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
         return out + cached.size;
     }
     char* end = writeJsonDouble(out, value);
@@ -107,7 +114,7 @@ char* JsonStreamWriter::cachedFloat(char* out, float value) {
     std::memcpy(&bits, &value, sizeof bits);
     CachedNumber& cached = mFloats[cacheSlot(bits)];
     if (cached.size != 0 && cached.bits == bits) {
-        std::memcpy(out, cached.text, cached.size);
+        std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
         return out + cached.size;
     }
     char* end = writeJsonFloat(out, value);

@@ -110,11 +110,12 @@ private:
     /// A number's text, remembered by its bits (trajectories repeat times and velocities).
     struct CachedNumber {
         std::uint64_t bits = 0;
-        std::uint8_t size = 0;  ///< 0: empty.
         char text[31] = {};
+        std::uint8_t size = 0;  ///< 0: empty.
     };
 
-    /// Writes number(value)'s text at `out` (kJsonNumberChars of room), from the cache when it
+    /// Writes number(value)'s text at `out` (kJsonNumberChars of room: a cached text is copied as
+    /// 32 bytes, its size byte included, and ends where its size says), from the cache when it
     /// holds it (else converted and remembered); returns its end.
     char* cachedDouble(char* out, double value);
     /// The same for floatNumber(value).
