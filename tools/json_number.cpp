@@ -90,52 +90,6 @@ void writeDigits(char* out, std::uint64_t digits, int count) {
     }
 }
 
-/// value / 10^j (j <= 19), by constants: no division instruction.
-std::uint64_t divideByPowerOfTen(std::uint64_t value, int j) {
-    switch (j) {
-        case 0:
-            return value;
-        case 1:
-            return value / 10;
-        case 2:
-            return value / 100;
-        case 3:
-            return value / 1000;
-        case 4:
-            return value / 10000;
-        case 5:
-            return value / 100000;
-        case 6:
-            return value / 1000000;
-        case 7:
-            return value / 10000000;
-        case 8:
-            return value / 100000000;
-        case 9:
-            return value / 1000000000;
-        case 10:
-            return value / 10000000000;
-        case 11:
-            return value / 100000000000;
-        case 12:
-            return value / 1000000000000;
-        case 13:
-            return value / 10000000000000;
-        case 14:
-            return value / 100000000000000;
-        case 15:
-            return value / 1000000000000000;
-        case 16:
-            return value / 10000000000000000;
-        case 17:
-            return value / 100000000000000000;
-        case 18:
-            return value / 1000000000000000000;
-        default:
-            return value / kPowersOfTen[static_cast<std::size_t>(j)];
-    }
-}
-
 /// Writes `d` (positive) as nlohmann's format_buffer lays out Grisu2's digits: d.ddd, 0.000ddd,
 /// or with an exponent (then format_buffer itself).
 char* writeDecimal(char* out, const Decimal& d) {
@@ -215,19 +169,19 @@ bool shortestIn(const Scaled& s, bool inclusive, std::uint64_t& digits, int& j, 
     std::uint64_t hi = static_cast<std::uint64_t>((inclusive ? top : top - 1) >> s.shift);
     std::uint64_t lo = static_cast<std::uint64_t>(inclusive ? (bottom + one - 1) >> s.shift : (bottom >> s.shift) + 1);
     if (hi < lo) return false;
+    // floor(value / 10^j) alongside (floor(floor(x / 10) / 10) = floor(x / 100)).
+    std::uint64_t c0 = static_cast<std::uint64_t>(s.n >> s.shift);
     j = 0;
     for (;;) {
         const std::uint64_t nextHi = hi / 10, nextLo = (lo + 9) / 10;
         if (nextHi < nextLo) break;
         hi = nextHi;
         lo = nextLo;
+        c0 /= 10;
         ++j;
     }
     // The two decimals of that length around the value: c0 (at or below) and c0 + 1.
-    const std::uint64_t power = kPowersOfTen[static_cast<std::size_t>(j)];
-    unit = static_cast<Int128>(power) << s.shift;
-    const auto whole = static_cast<std::uint64_t>(s.n >> s.shift);
-    const std::uint64_t c0 = divideByPowerOfTen(whole, j);
+    unit = static_cast<Int128>(kPowersOfTen[static_cast<std::size_t>(j)]) << s.shift;
     const Int128 below = s.n - static_cast<Int128>(c0) * unit;  // value - c0, in [0, unit)
     const Int128 above = unit - below;                          // c0 + 1 - value
     std::uint64_t c = above < below || (above == below && (c0 & 1) != 0) ? c0 + 1 : c0;
