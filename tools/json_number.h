@@ -5,16 +5,16 @@
 ///
 /// nlohmann prints a double with Grisu2, which is not always the shortest decimal: it looks for
 /// the shortest in the rounding interval narrowed by its own rounding errors (a few units in the
-/// 62nd bit), and picks among those the one closest to its approximation of the value. So
-/// std::to_chars (the exact shortest, closest to the value) prints about one double in a thousand
-/// differently (3.0990509999999998 where to_chars prints 3.099051). Here std::to_chars's digits
-/// are kept only when an exact test shows that Grisu2 finds the same ones: they lie inside the
-/// rounding interval, and nearer the value than half a unit of their last digit, both by a margin
-/// (2^-59 of the value) larger than every error of Grisu2's arithmetic (below 2^-60.6). Then they
-/// are the shortest in Grisu2's narrowed interval too, and the closest to its value. Otherwise
-/// (about one double in fifty, and values the exact test does not cover: integers from 2^52 up,
-/// subnormals, exponents beyond the test's 128-bit range) nlohmann's own conversion runs.
-/// tests/cli_output_test.cpp compares both with nlohmann on millions of values.
+/// 62nd bit), and picks among those the one closest to its approximation of the value. So the
+/// shortest decimal (std::to_chars's) differs for about one double in a thousand
+/// (3.0990509999999998 where the shortest is 3.099051). Here the shortest decimal is found
+/// exactly, in 128-bit integers, and kept only when an exact test shows that Grisu2 finds the
+/// same digits: they lie inside the rounding interval, and nearer the value than half a unit of
+/// their last digit, both by a margin (2^-59 of the value) larger than every error of Grisu2's
+/// arithmetic (below 2^-60.6). Then they are the shortest in Grisu2's narrowed interval too, and
+/// the closest to its value. Otherwise (near-ties, and values the exact test does not cover:
+/// below 10^-14, integers from 2^52 up, subnormals) nlohmann's own conversion runs.
+/// tests/cli_output_test.cpp compares both with nlohmann on over a million values.
 
 #include <cstddef>
 
@@ -30,9 +30,9 @@ char* writeJsonDouble(char* out, double value);
 /// Writes `value` (finite) as formatJson prints jsonFloat(value). Returns the end of the text.
 char* writeJsonFloat(char* out, float value);
 
-/// The fast path alone: writes nlohmann's text of `value` (finite, not integral) when the exact
-/// test proves std::to_chars's shortest digits to be Grisu2's, and returns its end; else returns
-/// nullptr (what it wrote is then meaningless). For the tests.
+/// The fast path alone: writes nlohmann's text of `value` (finite) when the exact test proves
+/// the shortest decimal to be Grisu2's, and returns its end; else returns nullptr (what it wrote
+/// is then meaningless). For the tests.
 char* writeShortestIfGrisu2(char* out, double value);
 
 /// The float fast path alone (jsonFloat of a non-integral float, via its shortest float decimal):
