@@ -157,10 +157,10 @@ bool scale(std::uint64_t f, int a, int b, bool closerBelow, Scaled& s) {
     return true;
 }
 
-/// The shortest decimal in the interval of `s` (bounds included when `inclusive`; at least one unit of 10^-b wide), the closest
-/// to the value of that length (ties: the even one), as digits × 10^(j - b); `x` is decimal -
-/// value and `unit` a unit of its last digit, both in the units of `s`. False when there is
-/// none with the first digit at 10^-b's place or higher (the scale was too coarse).
+/// The shortest decimal in the interval of `s` (bounds included when `inclusive`; the interval
+/// at least one unit of 10^-b wide), the closest to the value of that length (ties: the even
+/// one), as digits × 10^(j - b); `x` is decimal - value and `unit` a unit of its last digit,
+/// both in the units of `s`. False when there is none (the scale was too coarse).
 bool shortestIn(const Scaled& s, bool inclusive, std::uint64_t& digits, int& j, Int128& x, Int128& unit) {
     const Int128 top = s.n + s.above, bottom = s.n - s.below;
     const Int128 one = static_cast<Int128>(1) << s.shift;

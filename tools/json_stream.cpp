@@ -3,9 +3,8 @@
 #include "json_number.h"
 
 #include <cassert>
-#include <cstddef>
 #include <charconv>
-#include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <system_error>
 #include <utility>
