@@ -5,10 +5,13 @@
 // only grows), and the parsed text must be the document resultDocument builds. The CLI's own
 // output is compared with files the former writer printed in tests/cli_test.cpp.
 
+#include "json_number.h"
 #include "scenario.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -202,6 +205,129 @@ TEST(cli_output, NumbersPrintAsTheFormerConversions) {
     document["doubles"] = doubles;
     document["floats"] = floats;
     EXPECT_EQ(cached, formatJson(document));
+}
+
+/// nlohmann's own text of a double (Grisu2), what its serializer prints.
+std::string grisu2Text(double value) {
+    char buffer[64];
+    return std::string(buffer, nlohmann::detail::to_chars(buffer, buffer + sizeof buffer, value));
+}
+
+std::string shortestText(double value) {  // std::to_chars's shortest, for counting where it differs
+    char buffer[64];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+TEST(cli_output, FastNumbersAreNlohmannsGrisu2) {
+    // writeJsonDouble and writeJsonFloat use exact shortest digits only where a test proves that
+    // Grisu2 prints the same ones (json_number.h). Here the fast paths alone, against nlohmann,
+    // on the kinds of values the output holds and on any double; the fast path must also be the
+    // common one, and the values must include ones where the shortest decimal is not Grisu2's
+    // (the cases the test has to turn away). A scratch run of the same comparison covered 3 × 10^8
+    // doubles (trajectory-like, widened floats, any bits) and every float from 0.001 to 10 000.
+    Random random(20260611);
+    std::uint64_t fast = 0, total = 0, notShortest = 0;
+    const auto check = [&](double value) {
+        if (!std::isfinite(value) || value == std::trunc(value)) return;
+        ++total;
+        char buffer[kJsonNumberChars];
+        const std::string expected = grisu2Text(value);
+        if (expected != shortestText(value)) ++notShortest;
+        if (char* end = writeShortestIfGrisu2(buffer, value)) {
+            ++fast;
+            ASSERT_EQ(std::string(buffer, end), expected) << std::hexfloat << value;
+        }
+        char* end = writeJsonDouble(buffer, value);
+        ASSERT_EQ(std::string(buffer, end), jsonDouble(value).dump()) << std::hexfloat << value;
+    };
+    for (int i = 0; i < 100000; ++i) {
+        check(static_cast<double>(random.next() >> 11) * 0x1p-53 * 100.0 - 50.0);  // positions
+        check(std::ldexp(static_cast<double>(random.next() >> 11), static_cast<int>(random.below(100)) - 96));
+        check(static_cast<double>(static_cast<std::int64_t>(random.below(20000000)) - 10000000) / 1e6);  // decimals
+        check(static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(random.next() >> 32))));
+        check(std::bit_cast<double>(random.next()));
+    }
+    // Positions of a throw: p0 + v t + g t^2 / 2 at 0.02 s steps.
+    for (int i = 0; i < 1000; ++i) {
+        const double p0 = static_cast<double>(random.below(6000)) / 1000.0 - 3.0;
+        const double v = static_cast<double>(random.below(28000)) / 1000.0 - 14.0;
+        for (int step = 1; step <= 150; ++step) {
+            const double t = 0.02 * step;
+            check(p0 + v * t - 9.81 * 0.5 * t * t);
+        }
+    }
+    EXPECT_GT(notShortest, 1000u);    // the cases to turn away were there
+    EXPECT_GT(fast, total / 10 * 7);  // and the fast path took most of the rest
+
+    // Floats: jsonFloat's text, the double nearest to the float's shortest decimal by Grisu2.
+    std::uint64_t floatFast = 0, floats = 0;
+    const auto checkFloat = [&](float value) {
+        if (!std::isfinite(value) || value == std::trunc(value)) return;
+        ++floats;
+        char buffer[kJsonNumberChars];
+        const std::string expected = jsonFloat(value).dump();
+        if (char* end = writeFloatShortestIfGrisu2(buffer, value)) {
+            ++floatFast;
+            ASSERT_EQ(std::string(buffer, end), expected) << std::hexfloat << value;
+        }
+        char* end = writeJsonFloat(buffer, value);
+        ASSERT_EQ(std::string(buffer, end), expected) << std::hexfloat << value;
+    };
+    for (int i = 0; i < 200000; ++i) checkFloat(std::bit_cast<float>(static_cast<std::uint32_t>(random.next() >> 32)));
+    // Every float from 3 to 3.25 (where 3.099051 is), and times and speeds of a trajectory.
+    for (float value = 3.0f; value < 3.25f; value = std::nextafter(value, 4.0f)) checkFloat(value);
+    for (int step = 0; step < 100000; ++step) checkFloat(0.02f * static_cast<float>(step) - 50.0f);
+    EXPECT_GT(floatFast, floats / 10 * 8);  // (random bits make many tiny floats, which take nlohmann's way)
+    checkFloat(3.099051f);
+}
+
+TEST(cli_output, TrajectoryPointsAreTheirValues) {
+    // JsonStreamWriter::trajectoryPoint puts a point's line together at once where it can: the
+    // same text as the point written value by value, also for lines too long for one line.
+    Random random(4242);
+    Json points = Json::array();
+    std::string text;
+    JsonStreamWriter writer(
+        [&text](std::string_view piece) {
+            text += piece;
+            return true;
+        },
+        1000);
+    writer.beginObject();
+    writer.key("trajectory");
+    writer.beginArray();
+    const char* const events[] = {"start", "step", "bounce", "rest"};
+    int longLines = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const auto anyFloat = [&] {
+            const auto value = std::bit_cast<float>(static_cast<std::uint32_t>(random.next() >> 32));
+            return std::isfinite(value) ? value : 1.5f;
+        };
+        const bool wide = random.below(4) == 0;  // long numbers: lines beyond 200 columns
+        const float time = wide ? anyFloat() : 0.02f * static_cast<float>(i);
+        const foresight::RVec3 position(randomDouble(random), randomDouble(random), wide ? 1e-300 / 3 : 1.25);
+        const foresight::Vec3 velocity = wide ? foresight::Vec3(anyFloat(), anyFloat(), anyFloat())
+                                              : foresight::Vec3(static_cast<float>(i) * 0.1f, -2.5f, 0.0f);
+        const foresight::Vec3 normal(anyFloat(), 0.0f, -1.0f);
+        const bool withNormal = random.below(3) == 0;
+        const char* event = events[random.below(4)];
+        writer.trajectoryPoint(time, position, velocity, event, withNormal ? &normal : nullptr);
+        Json point = Json::object();
+        point["t"] = jsonFloat(time);
+        point["position"] = jsonPosition(position);
+        point["velocity"] = jsonVector(velocity);
+        point["event"] = event;
+        if (withNormal) point["normal"] = jsonVector(normal);
+        if (formatJson(point).size() > 197) ++longLines;  // over 196 columns on one line: beyond 200 at its indent
+        points.push_back(std::move(point));
+    }
+    writer.end();
+    writer.end();
+    ASSERT_TRUE(writer.finish());
+    Json document = Json::object();
+    document["trajectory"] = std::move(points);
+    EXPECT_EQ(text, formatJson(document));
+    EXPECT_GT(longLines, 100);  // both forms were written
 }
 
 /// A scenario with every model, and `throws` projectiles with trajectories in a walled arena

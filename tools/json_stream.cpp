@@ -1,8 +1,10 @@
 #include "json_stream.h"
 
+#include "json_number.h"
+
 #include <cassert>
 #include <charconv>
-#include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <system_error>
 #include <utility>
@@ -25,25 +27,17 @@ void appendInteger(std::string& out, auto value) {
 }  // namespace
 
 void appendJsonDouble(std::string& out, double value) {
-    // jsonDouble: integral values below 2^53 become integers (-0 prints as 0); the rest are
-    // printed by nlohmann::json's own double conversion (Grisu2, with its exponent format), the
-    // very function its serializer calls, so that the bytes stay those formatJson prints. Grisu2
-    // is not always the shortest decimal (std::to_chars differs in about one value in a thousand),
-    // so std::to_chars cannot stand in for it.
-    if (!std::isfinite(value)) {
-        out += "null";  // what nlohmann prints; the CLI checks results for finiteness first
-        return;
-    }
-    if (value == std::trunc(value) && std::fabs(value) < 9007199254740992.0) {
-        appendInteger(out, static_cast<std::int64_t>(value));
-        return;
-    }
-    char buffer[64];
-    const char* end = nlohmann::detail::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, static_cast<std::size_t>(end - buffer));
+    // jsonDouble: integral values below 2^53 become integers (-0 prints as 0); the rest as
+    // nlohmann::json's own double conversion (Grisu2, with its exponent format) prints them, so
+    // that the bytes stay those formatJson prints (json_number.h).
+    char buffer[kJsonNumberChars];
+    out.append(buffer, static_cast<std::size_t>(writeJsonDouble(buffer, value) - buffer));
 }
 
-void appendJsonFloat(std::string& out, float value) { appendJsonDouble(out, floatDecimal(value)); }
+void appendJsonFloat(std::string& out, float value) {
+    char buffer[kJsonNumberChars];
+    out.append(buffer, static_cast<std::size_t>(writeJsonFloat(buffer, value) - buffer));
+}
 
 void appendJsonString(std::string& out, std::string_view text) {
     // Printable ASCII without quotes or backslashes prints as it is; anything else (escapes,
@@ -90,33 +84,62 @@ void JsonStreamWriter::key(std::string_view name) {
     appendJsonString(mKey, name);
 }
 
-template <class Append>
-void JsonStreamWriter::cachedNumber(CachedNumber& cached, std::uint64_t bits, Append append) {
-    const std::size_t at = openValue();
+// A cached text goes out as one fixed-size copy: its 31 bytes and the size byte after them.
+constexpr std::size_t kCachedCopy = 32;
+static_assert(kJsonNumberChars >= kCachedCopy);
+
+char* JsonStreamWriter::cachedDouble(char* out, double value) {
+    static_assert(offsetof(CachedNumber, size) == offsetof(CachedNumber, text) + sizeof(CachedNumber::text) &&
+                  sizeof(CachedNumber::text) + 1 == kCachedCopy);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    CachedNumber& cached = mDoubles[cacheSlot(bits)];
     if (cached.size != 0 && cached.bits == bits) {
-        mOut.append(cached.text, cached.size);
-    } else {
-        append();
-        const std::size_t size = mOut.size() - at;
-        if (size < sizeof cached.text) {
-            cached.bits = bits;
-            cached.size = static_cast<std::uint8_t>(size);
-            std::memcpy(cached.text, mOut.data() + at, size);
-        }
+        std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
+        return out + cached.size;
     }
+    char* end = writeJsonDouble(out, value);
+    const auto size = static_cast<std::size_t>(end - out);
+    if (size < sizeof cached.text) {
+        cached.bits = bits;
+        cached.size = static_cast<std::uint8_t>(size);
+        std::memcpy(cached.text, out, size);
+    }
+    return end;
+}
+
+char* JsonStreamWriter::cachedFloat(char* out, float value) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    CachedNumber& cached = mFloats[cacheSlot(bits)];
+    if (cached.size != 0 && cached.bits == bits) {
+        std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
+        return out + cached.size;
+    }
+    char* end = writeJsonFloat(out, value);
+    const auto size = static_cast<std::size_t>(end - out);
+    if (size < sizeof cached.text) {
+        cached.bits = bits;
+        cached.size = static_cast<std::uint8_t>(size);
+        std::memcpy(cached.text, out, size);
+    }
+    return end;
+}
+
+template <class Write>
+void JsonStreamWriter::numberValue(Write write) {
+    const std::size_t at = openValue();
+    char buffer[kJsonNumberChars];
+    mOut.append(buffer, static_cast<std::size_t>(write(buffer) - buffer));
     closeValue(Kind::Scalar, false, at);
 }
 
 void JsonStreamWriter::number(double value) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    cachedNumber(mDoubles[cacheSlot(bits)], bits, [&] { appendJsonDouble(mOut, value); });
+    numberValue([&](char* out) { return cachedDouble(out, value); });
 }
 
 void JsonStreamWriter::floatNumber(float value) {
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    cachedNumber(mFloats[cacheSlot(bits)], bits, [&] { appendJsonFloat(mOut, value); });
+    numberValue([&](char* out) { return cachedFloat(out, value); });
 }
 
 void JsonStreamWriter::integer(std::int64_t value) {
@@ -182,6 +205,94 @@ void JsonStreamWriter::quaternion(const foresight::Quat& quaternion) {
     floatNumber(quaternion.y);
     key("z");
     floatNumber(quaternion.z);
+    end();
+}
+
+namespace {
+
+/// Copies `text` to `out`; returns its end.
+char* put(char* out, std::string_view text) {
+    std::memcpy(out, text.data(), text.size());
+    return out + text.size();
+}
+
+bool plainString(std::string_view text) {
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u > 0x7e || c == '"' || c == '\\') return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void JsonStreamWriter::trajectoryPoint(float time, const foresight::RVec3& position, const foresight::Vec3& velocity,
+                                       std::string_view event, const foresight::Vec3* normal) {
+    // The point's own line when its array spans lines (nothing held): what end() keeps of the
+    // value-by-value form when the point has at most kInlineNodes values (15 at most) and its
+    // line fits in kLineWidth columns, checked below. Otherwise, value by value.
+    constexpr std::size_t kMaxEvent = 32;
+    if (holding() || mFrames.empty() || !mFrames.back().array || event.size() > kMaxEvent || !plainString(event)) {
+        trajectoryPointValues(time, position, velocity, event, normal);
+        return;
+    }
+    // 10 numbers, the keys and separators (under 100 bytes), the event.
+    char line[10 * kJsonNumberChars + 128 + kMaxEvent];
+    char* p = line;
+    p = put(p, "{\"t\": ");
+    p = cachedFloat(p, time);
+    p = put(p, ", \"position\": [");
+    p = cachedDouble(p, static_cast<double>(position.x));
+    p = put(p, ", ");
+    p = cachedDouble(p, static_cast<double>(position.y));
+    p = put(p, ", ");
+    p = cachedDouble(p, static_cast<double>(position.z));
+    p = put(p, "], \"velocity\": [");
+    p = cachedFloat(p, velocity.x);
+    p = put(p, ", ");
+    p = cachedFloat(p, velocity.y);
+    p = put(p, ", ");
+    p = cachedFloat(p, velocity.z);
+    p = put(p, "], \"event\": \"");
+    p = put(p, event);
+    if (normal != nullptr) {
+        p = put(p, "\", \"normal\": [");
+        p = cachedFloat(p, normal->x);
+        p = put(p, ", ");
+        p = cachedFloat(p, normal->y);
+        p = put(p, ", ");
+        p = cachedFloat(p, normal->z);
+        p = put(p, "]}");
+    } else {
+        p = put(p, "\"}");
+    }
+    const auto size = static_cast<std::size_t>(p - line);
+    Frame& parent = mFrames.back();
+    if (parent.indent + 2 + size > kLineWidth) {
+        trajectoryPointValues(time, position, velocity, event, normal);  // laid out over lines
+        return;
+    }
+    writePrefix(parent, {});
+    mOut.append(line, size);
+    maybeFlush();
+}
+
+void JsonStreamWriter::trajectoryPointValues(float time, const foresight::RVec3& position,
+                                             const foresight::Vec3& velocity, std::string_view event,
+                                             const foresight::Vec3* normal) {
+    beginObject();
+    key("t");
+    floatNumber(time);
+    key("position");
+    this->position(position);
+    key("velocity");
+    vector(velocity);
+    key("event");
+    string(event);
+    if (normal != nullptr) {
+        key("normal");
+        vector(*normal);
+    }
     end();
 }
 

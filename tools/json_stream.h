@@ -66,6 +66,14 @@ public:
     void position(const foresight::RVec3& position);     ///< [x, y, z] as jsonPosition.
     void vector(const foresight::Vec3& vector);          ///< [x, y, z] as jsonVector.
     void quaternion(const foresight::Quat& quaternion);  ///< {"w", "x", "y", "z"} as jsonQuaternion.
+    /// A trajectory point as an element of the enclosing array: {"t": time, "position": [x, y,
+    /// z], "velocity": [x, y, z], "event": event, "normal": [x, y, z]} ("normal" only when
+    /// `normal` is not null), the very text beginObject, key("t"), floatNumber(time), ...,
+    /// end() write. When the array already spans lines (from its third point on in a result) and
+    /// the point fits on its line, the line is put together at once, without the per-value
+    /// bookkeeping; otherwise it goes value by value.
+    void trajectoryPoint(float time, const foresight::RVec3& position, const foresight::Vec3& velocity,
+                         std::string_view event, const foresight::Vec3* normal);
 
     /// Hands the rest of the text to the sink; call once the root value has ended. Returns false
     /// if the sink refused any text (then nothing more was handed to it).
@@ -102,14 +110,22 @@ private:
     /// A number's text, remembered by its bits (trajectories repeat times and velocities).
     struct CachedNumber {
         std::uint64_t bits = 0;
-        std::uint8_t size = 0;  ///< 0: empty.
         char text[31] = {};
+        std::uint8_t size = 0;  ///< 0: empty.
     };
 
-    /// Writes a number: `cached`'s text when it holds `bits`, else what `append` appends to mOut
-    /// (then remembered in `cached`).
-    template <class Append>
-    void cachedNumber(CachedNumber& cached, std::uint64_t bits, Append append);
+    /// Writes number(value)'s text at `out` (kJsonNumberChars of room: a cached text is copied as
+    /// 32 bytes, its size byte included, and ends where its size says), from the cache when it
+    /// holds it (else converted and remembered); returns its end.
+    char* cachedDouble(char* out, double value);
+    /// The same for floatNumber(value).
+    char* cachedFloat(char* out, float value);
+    /// Writes a number's text (written at a buffer by `write`) as a value.
+    template <class Write>
+    void numberValue(Write write);
+    /// trajectoryPoint's value-by-value form.
+    void trajectoryPointValues(float time, const foresight::RVec3& position, const foresight::Vec3& velocity,
+                               std::string_view event, const foresight::Vec3* normal);
     bool holding() const { return mFirstHeld < mFrames.size(); }
     /// Writes what comes before a value (separator, indent, key); returns where the value starts.
     std::size_t openValue();

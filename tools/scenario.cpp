@@ -909,22 +909,11 @@ void writeResult(JsonStreamWriter& w, const Prediction& p, const PredictionResul
                 w.key("trajectory");
                 w.beginArray();
                 for (const auto& point : result.trajectory) {
-                    w.beginObject();
-                    w.key("t");
-                    w.floatNumber(point.time);
-                    w.key("position");
-                    w.position(point.position);
-                    w.key("velocity");
-                    w.vector(point.velocity);
-                    w.key("event");
-                    w.string(eventName(point.event));
                     const bool impact = point.event == foresight::TrajectoryEvent::Bounce ||
                                         point.event == foresight::TrajectoryEvent::Hit;
-                    if (impact || point.normal != foresight::Vec3(0.0f)) {
-                        w.key("normal");
-                        w.vector(point.normal);
-                    }
-                    w.end();
+                    const bool normal = impact || point.normal != foresight::Vec3(0.0f);
+                    w.trajectoryPoint(point.time, point.position, point.velocity, eventName(point.event),
+                                      normal ? &point.normal : nullptr);
                 }
                 w.end();
             }
