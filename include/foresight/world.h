@@ -170,14 +170,15 @@ public:
 
     /// Copies into `collector` every shape that may come within `region.radius` of the segment
     /// from `region.origin` to `region.origin + region.displacement` (at least the shapes that
-    /// mayTouch would find there; a few more do no harm), in the order in which this world's castSegment prefers one of two equally
-    /// close hits (the first wins). Returns true when it copied them all: then a StaticWorld
-    /// holding exactly these shapes in this order, with this surface tolerance, answers
-    /// castSegment bit for bit as this world does, and findNear with the same surfaces (in its own
-    /// order), for every query that stays inside the region. Returns false when the world cannot
-    /// (the default) or the collector ran out of room. ProjectileMethod::Engine gathers the
-    /// shapes around a sphere that touches surfaces once and asks them, instead of the world,
-    /// the several small queries of each of the next steps.
+    /// mayTouch would find there; a few more do no harm), in the order in which this world's
+    /// castSegment prefers one of two equally close hits (the first wins). Returns true when it
+    /// copied them all: then a StaticWorld holding exactly these shapes in this order, with this
+    /// surface tolerance, answers a swept-sphere castSegment (radius > 0) bit for bit as this
+    /// world does, and findNear with the same surfaces (in its own order), for every query that
+    /// stays inside the region. Returns false when the world cannot (the default) or the
+    /// collector ran out of room. ProjectileMethod::Engine gathers the shapes around a sphere
+    /// once and asks them, instead of the world, the several small queries of each of the next
+    /// steps it takes one by one.
     virtual bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const {
         (void)region;
         (void)collector;
