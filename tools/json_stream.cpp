@@ -2,6 +2,7 @@
 
 #include "json_number.h"
 
+#include <bit>
 #include <cassert>
 #include <charconv>
 #include <cstddef>
@@ -88,17 +89,16 @@ void JsonStreamWriter::key(std::string_view name) {
 constexpr std::size_t kCachedCopy = 32;
 static_assert(kJsonNumberChars >= kCachedCopy);
 
-char* JsonStreamWriter::cachedDouble(char* out, double value) {
+template <class Write>
+char* JsonStreamWriter::cachedText(std::vector<CachedNumber>& cache, std::uint64_t bits, char* out, Write write) {
     static_assert(offsetof(CachedNumber, size) == offsetof(CachedNumber, text) + sizeof(CachedNumber::text) &&
                   sizeof(CachedNumber::text) + 1 == kCachedCopy);
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    CachedNumber& cached = mDoubles[cacheSlot(bits)];
+    CachedNumber& cached = cache[cacheSlot(bits)];
     if (cached.size != 0 && cached.bits == bits) {
         std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
         return out + cached.size;
     }
-    char* end = writeJsonDouble(out, value);
+    char* end = write(out);
     const auto size = static_cast<std::size_t>(end - out);
     if (size < sizeof cached.text) {
         cached.bits = bits;
@@ -108,22 +108,14 @@ char* JsonStreamWriter::cachedDouble(char* out, double value) {
     return end;
 }
 
+char* JsonStreamWriter::cachedDouble(char* out, double value) {
+    return cachedText(mDoubles, std::bit_cast<std::uint64_t>(value), out,
+                      [value](char* at) { return writeJsonDouble(at, value); });
+}
+
 char* JsonStreamWriter::cachedFloat(char* out, float value) {
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    CachedNumber& cached = mFloats[cacheSlot(bits)];
-    if (cached.size != 0 && cached.bits == bits) {
-        std::memcpy(out, reinterpret_cast<const char*>(&cached) + offsetof(CachedNumber, text), kCachedCopy);
-        return out + cached.size;
-    }
-    char* end = writeJsonFloat(out, value);
-    const auto size = static_cast<std::size_t>(end - out);
-    if (size < sizeof cached.text) {
-        cached.bits = bits;
-        cached.size = static_cast<std::uint8_t>(size);
-        std::memcpy(cached.text, out, size);
-    }
-    return end;
+    return cachedText(mFloats, std::bit_cast<std::uint32_t>(value), out,
+                      [value](char* at) { return writeJsonFloat(at, value); });
 }
 
 template <class Write>

@@ -120,6 +120,9 @@ private:
     char* cachedDouble(char* out, double value);
     /// The same for floatNumber(value).
     char* cachedFloat(char* out, float value);
+    /// The text cached in `cache` for `bits`, else the one `write(out)` writes (remembered).
+    template <class Write>
+    char* cachedText(std::vector<CachedNumber>& cache, std::uint64_t bits, char* out, Write write);
     /// Writes a number's text (written at a buffer by `write`) as a value.
     template <class Write>
     void numberValue(Write write);
