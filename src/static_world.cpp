@@ -341,7 +341,7 @@ Status StaticWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
     mTriangleMaterials.reserve(mTriangleMaterials.size() + r.triangles);
     for (std::size_t t = 0; t < indices.size() / 3; ++t) {
         const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
-        if (validateTriangle(triangle) != Status::Ok) continue;
+        if (!usableInCheckedMesh(triangle, t, r)) continue;
         mTriangles.push_back(triangle);
         mTriangleMaterials.push_back(SurfaceMaterial{});
     }

@@ -609,6 +609,16 @@ TEST(StaticWorld, AddMeshAddsTheUsableTrianglesOrNothing) {
         EXPECT_EQ(a.fraction, b.fraction);
         EXPECT_EQ(a.normal, b.normal);
     }
+    // Degenerate triangles first and between usable ones: only the usable ones, in order.
+    StaticWorld mixed;
+    ASSERT_EQ(mixed.addMesh(vertices, std::vector<std::uint32_t>{0, 0, 4, 0, 3, 4, 1, 1, 1, 1, 4, 2}, &report),
+              Status::Ok);
+    EXPECT_EQ(report.triangles, 2u);
+    EXPECT_EQ(report.degenerateTriangles, 2u);
+    EXPECT_EQ(report.firstDegenerateTriangle, 0u);
+    ASSERT_EQ(mixed.triangles().size(), 2u);
+    EXPECT_EQ(mixed.triangles()[0].b, vertices[3]);
+    EXPECT_EQ(mixed.triangles()[1].c, vertices[2]);
     // Refused, nothing added: non-finite vertex, index count, index range, nothing usable.
     const std::size_t before = mesh.triangles().size();
     std::vector<RVec3> bad = vertices;

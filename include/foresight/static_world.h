@@ -267,6 +267,13 @@ struct MeshReport {
 /// ones (validateTriangle) counted, the first one named.
 Status checkMesh(std::span<const RVec3> vertices, std::span<const std::uint32_t> indices, MeshReport& report);
 
+/// Whether triangle `index` of a mesh that checkMesh accepted with `report` is usable, without
+/// testing it again where the report already says (none degenerate, or before the first one).
+inline bool usableInCheckedMesh(const Triangle& triangle, std::size_t index, const MeshReport& report) {
+    return report.degenerateTriangles == 0 || index < report.firstDegenerateTriangle ||
+           (index > report.firstDegenerateTriangle && validateTriangle(triangle) == Status::Ok);
+}
+
 /// Settings of a StaticWorld.
 struct StaticWorldSettings {
     /// A cast that starts this close behind a one-sided surface and moves into it still hits

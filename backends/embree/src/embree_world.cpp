@@ -656,7 +656,7 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
     addedIndices.reserve(3 * r.triangles);
     for (std::size_t t = 0; t < indices.size() / 3; ++t) {
         const Triangle triangle{vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]]};
-        if (validateTriangle(triangle) != Status::Ok) continue;  // counted by checkMesh
+        if (!usableInCheckedMesh(triangle, t, r)) continue;  // counted by checkMesh
         added.push_back(triangle);
         addedIndices.insert(addedIndices.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
                             indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
