@@ -93,6 +93,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -671,6 +672,49 @@ void checkSweepsOnce() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Timing in turns: the ratios the targets name, each measured within one benchmark
+
+/// One timed part of a benchmark that runs its parts in turns.
+struct Part {
+    const char* name;
+    std::function<void()> run;
+};
+
+/// A ratio to report: the time of part `slower` over the time of part `faster`.
+struct TimeRatio {
+    const char* counter;
+    std::size_t slower;
+    std::size_t faster;
+};
+
+/// Runs every part once per iteration, in an order rotated from one iteration (and one
+/// repetition) to the next, so that the parts share the machine's load and caches; then sets
+/// one counter per ratio: the parts' total times over the iterations divided. The machine is
+/// shared and its load moves from second to second: separate benchmarks, each timed alone for
+/// half a second, gave ratios 10 to 20 % apart in two runs minutes apart; parts timed in turns
+/// see the same load. With repetitions, Google Benchmark reports each ratio's median and
+/// coefficient of variation (scripts/bench.sh --worlds prints both).
+void timeInTurns(benchmark::State& state, std::span<const Part> parts, std::span<const TimeRatio> ratios) {
+    static std::size_t rotation = 0;  // carried over repetitions: each starts with another part
+    std::vector<double> seconds(parts.size(), 0.0);
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const std::size_t i = (rotation + k) % parts.size();
+            const auto start = std::chrono::steady_clock::now();
+            parts[i].run();
+            seconds[i] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        }
+        ++rotation;
+        benchmark::ClobberMemory();
+    }
+    for (const TimeRatio& r : ratios)
+        state.counters[r.counter] = seconds[r.faster] > 0.0 ? seconds[r.slower] / seconds[r.faster] : 0.0;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        state.counters[std::string(parts[i].name) + "_ms"] =
+            1e3 * seconds[i] / static_cast<double>(std::max<benchmark::IterationCount>(1, state.iterations()));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Cast benchmarks
 
 enum class CastWorld { Embree, BulletRayTest, BulletWorld, EmbreeNative, EmbreeNativeDefault, EmbreeUserFloat };
@@ -738,6 +782,42 @@ BENCHMARK_CAPTURE(BM_Cast, BulletWorld, CastWorld::BulletWorld)->Unit(benchmark:
 BENCHMARK_CAPTURE(BM_Cast, EmbreeNative, CastWorld::EmbreeNative)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Cast, EmbreeNativeDefault, CastWorld::EmbreeNativeDefault)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Cast, EmbreeUserFloat, CastWorld::EmbreeUserFloat)->Unit(benchmark::kMillisecond);
+
+/// The segment-cast targets as ratios within one benchmark (timeInTurns): castSegment's time
+/// over a bare native rtcIntersect1's (EmbreeNative's scene), and Bullet rayTest's time over
+/// castSegment's and over castSegments'.
+void BM_CastTurns(benchmark::State& state) {
+    const BigWorlds& w = bigWorlds();
+    const EmbreeScene& native = comparisonScene(ComparisonScene::NativeRobust);
+    double sum = 0;
+    std::uint64_t candidates = 0;
+    std::vector<CastHit> hits(w.casts.size());
+    std::vector<std::uint8_t> found(w.casts.size());
+    const std::array<Part, 4> parts{{
+        {"native",
+         [&] {
+             for (const Segment& s : w.segments) sum += castScene(native, s, candidates);
+         }},
+        {"castSegment",
+         [&] {
+             for (const Segment& s : w.segments) sum += castEmbree(*w.embree, s, 0.0f);
+         }},
+        {"castSegments",
+         [&] {
+             w.embree->castSegments(w.casts, hits, found);
+             for (std::size_t i = 0; i < w.casts.size(); ++i) sum += found[i] ? hits[i].fraction : -1.0f;
+         }},
+        {"rayTest",
+         [&] {
+             for (const Segment& s : w.segments) sum += castBulletRay(w.bullet->world(), s);
+         }},
+    }};
+    const std::array<TimeRatio, 3> ratios{
+        {{"castSegment/native", 1, 0}, {"rayTest/castSegment", 3, 1}, {"rayTest/castSegments", 3, 2}}};
+    timeInTurns(state, parts, ratios);
+    benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_CastTurns)->Name("BM_Turns/Cast")->Unit(benchmark::kMillisecond);
 
 enum class SweepWorld { Embree, BulletConvexSweep, BulletWorld };
 
@@ -938,6 +1018,40 @@ void registerDemoLevelBenchmarks() {
 }
 const bool kDemoLevelRegistered = (registerDemoLevelBenchmarks(), true);
 
+/// The exact / stepped target through one world as a ratio within one benchmark (timeInTurns):
+/// the 64 throws with each method in turns.
+void BM_DemoLevelTurns(benchmark::State& state, LevelWorld which) {
+    const LevelWorlds& w = levelWorlds();
+    const CollisionWorld& world = levelWorld(w, which);
+    ProjectileSettings exact, stepped;
+    exact.method = ProjectileMethod::Exact;
+    stepped.method = ProjectileMethod::Stepped;
+    std::vector<TrajectoryPoint> trajectory(
+        std::max(trajectoryCapacity(kLevelFuse, exact, 256), trajectoryCapacity(kLevelFuse, stepped, 256)));
+    double sum = 0;
+    const auto throwAll = [&](const ProjectileSettings& settings) {
+        for (const foresight_bench::Throw& t : w.throws) {
+            ProjectileResult result;
+            if (predictProjectile(t.position, t.velocity, kLevelFuse, settings, &world, trajectory, result) !=
+                Status::Ok)
+                fail("a demo level prediction failed");
+            sum += static_cast<double>(result.position.x);
+        }
+    };
+    const std::array<Part, 2> parts{{{"exact", [&] { throwAll(exact); }}, {"stepped", [&] { throwAll(stepped); }}}};
+    const std::array<TimeRatio, 1> ratios{{{"exact/stepped", 0, 1}}};
+    timeInTurns(state, parts, ratios);
+    benchmark::DoNotOptimize(sum);
+}
+// clang-format off
+BENCHMARK_CAPTURE(BM_DemoLevelTurns, Embree, LevelWorld::Embree)->Name("BM_Turns/DemoLevel/Embree")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DemoLevelTurns, Static, LevelWorld::Static)->Name("BM_Turns/DemoLevel/Static")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DemoLevelTurns, Callback, LevelWorld::Callback)->Name("BM_Turns/DemoLevel/Callback")
+    ->Unit(benchmark::kMillisecond);
+// clang-format on
+
 // ---------------------------------------------------------------------------------------------
 // Engine-matched throws against stepping the real engine
 
@@ -1131,6 +1245,37 @@ BENCHMARK_CAPTURE(BM_EngineThrowPredict, Bullet, LevelWorld::Bullet)->Name("BM_E
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EngineThrowBulletStep)->Name("BM_EngineThrow/BulletStep")->Unit(benchmark::kMillisecond);
 // clang-format on
+
+/// The engine-matched target as a ratio within one benchmark (timeInTurns): stepping the Bullet
+/// world's 64 throws over predicting them through EmbreeWorld.
+void BM_EngineThrowTurns(benchmark::State& state) {
+    const LevelWorlds& w = levelWorlds();
+    compareEngineOnce();
+    BulletLevelDynamics& dynamics = levelDynamics();
+    const ProjectileSettings settings = engineSettings();
+    std::vector<TrajectoryPoint> trajectory(trajectoryCapacity(kLevelFuse, settings, 256));
+    double sum = 0;
+    const std::array<Part, 2> parts{{
+        {"predict",
+         [&] {
+             for (const foresight_bench::Throw& t : w.throws) {
+                 ProjectileResult result;
+                 if (predictProjectile(t.position, t.velocity, kLevelFuse, settings, w.embree.get(), trajectory,
+                                       result) != Status::Ok)
+                     fail("an engine-matched demo level prediction failed");
+                 sum += static_cast<double>(result.position.x);
+             }
+         }},
+        {"bulletStep",
+         [&] {
+             for (const foresight_bench::Throw& t : w.throws) sum += static_cast<double>(dynamics.simulate(t).x);
+         }},
+    }};
+    const std::array<TimeRatio, 1> ratios{{{"bulletStep/predict", 1, 0}}};
+    timeInTurns(state, parts, ratios);
+    benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_EngineThrowTurns)->Name("BM_Turns/EngineThrow")->Unit(benchmark::kMillisecond);
 
 #endif  // FORESIGHT_BENCH_DEMO_LEVEL
 
