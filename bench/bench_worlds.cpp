@@ -62,6 +62,15 @@
 ///    two triangles: how far Bullet's own ends move with the triangulation alone, and the
 ///    prediction against that world.
 ///
+/// 4. The same targets timed in turns within one benchmark each (timeInTurns: every part once per
+///    iteration, the order rotated, so that the parts share the load; the counters are the ratios
+///    of their total times, and repetitions give their median and spread):
+///      BM_Turns/Cast                 castSegment/native, rayTest/castSegment, rayTest/castSegments
+///      BM_Turns/DemoLevel/<world>    exact/stepped through Embree, Static and Callback worlds
+///      BM_Turns/EngineThrow          bulletStep/predict
+///    Each part starts after another that read other data (cold caches for a million-triangle
+///    mesh), where the separate benchmarks above keep their own data warm.
+///
 /// items_per_second is casts (or predictions) per second. Everything runs on one thread: Embree
 /// and Bullet answer each query on the calling thread. The BVH builds happen once, before the
 /// first benchmark that needs them, and are reported on stderr ("foresight_bench_worlds: ...")

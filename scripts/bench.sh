@@ -30,7 +30,8 @@
 #            EmbreeWorld (castSegment, and castSegments for many at once), bare native Embree and
 #            Bullet's rayTest; targets: castSegment within 1.2x the time of a bare native
 #            rtcIntersect1, castSegments >= 5x Bullet's rayTest per ray; predictions per second
-#            on the demo level per world; the BVH build times. Progress goes to stderr on a
+#            on the demo level per world; the BVH build times; then the same targets timed in
+#            turns within one benchmark (BM_Turns), with their spread. Progress goes to stderr on a
 #            terminal only; the build's output is shown only if it fails.
 # The JSON results go to build/bench.json (--worlds: build/bench_worlds.json; FORESIGHT_BENCH_OUT
 # overrides, relative to the repository root). With FORESIGHT_BENCH_STRICT=1 a missed target
