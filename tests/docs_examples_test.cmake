@@ -5,7 +5,9 @@
 #    byte for byte, so that a page and its example file cannot drift apart; and every file in
 #    docs/examples/ must be shown by some page.
 # 2. The CLI runs every example file the way its page says; each run must exit with status 0
-#    and print well-formed JSON (or a well-formed SVG) with the expected top-level members.
+#    and print well-formed JSON (or a well-formed SVG) with the expected top-level members. A
+#    page that shows a run's output marks the block with `<!-- output: NAME -->` (NAME: the run's
+#    name below) on the line before it: the block must equal the output, byte for byte.
 # 3. With the viewer built, the picture document the CLI embeds in its HTML page for
 #    docs/examples/picture-scenario.json must equal docs/examples/picture.json as JSON.
 #
@@ -108,6 +110,34 @@ function(same_length name input member output)
     endif()
 endfunction()
 
+# page_output(NAME): the block a page marks with `<!-- output: NAME -->` must be the last run's
+# output (`output`), byte for byte; a page's shown result cannot fall behind the CLI.
+function(page_output name)
+    foreach(page IN LISTS pages)
+        file(READ "${SOURCE_DIR}/${page}" text)
+        string(FIND "${text}" "<!-- output: ${name} -->\n```" at)
+        if(at EQUAL -1)
+            continue()
+        endif()
+        string(SUBSTRING "${text}" ${at} -1 text)
+        string(FIND "${text}" "```" fenceAt)
+        string(SUBSTRING "${text}" ${fenceAt} -1 text)
+        string(FIND "${text}" "\n" lineEnd)
+        math(EXPR next "${lineEnd} + 1")
+        string(SUBSTRING "${text}" ${next} -1 text)
+        string(FIND "${text}" "\n```" close)
+        math(EXPR blockLength "${close} + 1")
+        string(SUBSTRING "${text}" 0 ${blockLength} block)
+        if(NOT block STREQUAL output)
+            message(SEND_ERROR "${page}: the output shown for ${name} is not what the CLI prints now:\n${output}")
+            set(failed 1 PARENT_SCOPE)
+        else()
+            message(STATUS "${name}: ${page} shows its output")
+        endif()
+        return()
+    endforeach()
+endfunction()
+
 set(failed 0)
 run(predict predictions predict "${dir}/scenario.json")
 same_length(predict "${dir}/scenario.json" predictions "${output}")
@@ -115,10 +145,13 @@ run(predict.engine predictions predict "${dir}/engine.json")
 same_length(predict.engine "${dir}/engine.json" predictions "${output}")
 run(aim shots aim "${dir}/aim.json")
 same_length(aim "${dir}/aim.json" shots "${output}")
+page_output(aim)
 run(plan throws plan "${dir}/plan.json")
 same_length(plan "${dir}/plan.json" throws "${output}")
+page_output(plan)
 run(danger predictions danger "${dir}/danger.json")
 same_length(danger "${dir}/danger.json" predictions "${output}")
+page_output(danger)
 run(netsim.csv trajectories netsim --csv "${dir}/netsim-car.csv" --duration 6 --models FPW,RPB --json)
 run(netsim.builtin trajectories netsim --trajectory circuit --duration 20 --models RPB --smoothing snap,pvb --json)
 run(picture predictions predict "${dir}/picture-scenario.json" --svg "${WORK_DIR}/picture.svg")
