@@ -40,16 +40,11 @@ public:
         return mValid;
     }
 
-    /// Whether the last gather succeeded.
-    bool valid() const { return mValid; }
-
     /// Whether a sphere of `radius` around every point of the segment a..b lies inside the region
     /// (with the margins of the world's surface tolerance and of rounding).
     bool holds(const DVec3& a, const DVec3& b, double radius) const {
         if (!mValid) return false;
-        const double magnitude = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y),
-                                           std::abs(b.z), std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
-        const double reach = radius + mTolerance + 1e-4 + 1e-6 * magnitude;
+        const double reach = reachOf(radius, std::max(magnitude(a, b), magnitude(mA, mA)));
         if (!(reach < mRadius)) return false;
         // The distance to the region's segment is convex along a..b: the ends decide.
         return distanceToAxis(a) + reach <= mRadius && distanceToAxis(b) + reach <= mRadius;
@@ -62,7 +57,7 @@ public:
         ClosestHitCaster caster(cast, static_cast<float>(mTolerance));
         if (!caster.valid()) return false;
         Bounds query;
-        const double pad = static_cast<double>(cast.radius) + mTolerance + 1e-4 + 1e-6 * magnitude(a, a + d);
+        const double pad = reachOf(static_cast<double>(cast.radius), magnitude(a, a + d));
         query.lo = glm::min(a, a + d) - pad;
         query.hi = glm::max(a, a + d) + pad;
         testShapes(query, caster);
@@ -75,7 +70,7 @@ public:
         NearTester tester(query, collector, static_cast<float>(mTolerance));
         if (!tester.valid()) return true;
         Bounds bounds;
-        const double pad = static_cast<double>(query.radius) + mTolerance + 1e-4 + 1e-6 * magnitude(c, c);
+        const double pad = reachOf(static_cast<double>(query.radius), magnitude(c, c));
         bounds.lo = c - pad;
         bounds.hi = c + pad;
         testShapes(bounds, tester);
@@ -127,6 +122,9 @@ private:
         return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
                b.lo.z <= a.hi.z;
     }
+    // A query's reach around its segment: its radius, the surface tolerance, and margins for the
+    // rounding of coordinates of `magnitude` [m].
+    double reachOf(double radius, double magnitude) const { return radius + mTolerance + 1e-4 + 1e-6 * magnitude; }
     static double magnitude(const DVec3& a, const DVec3& b) {
         return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
     }
