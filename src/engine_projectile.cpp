@@ -50,6 +50,10 @@ constexpr int kManifoldPoints = 4;
 // Two probes' normals agree when their dot product is above 1 minus this: a float cast's
 // rounding of the normal (the Bullet profiles' closest points).
 constexpr double kNormalSettle = 1e-8;
+// Probes of EngineRun::closestPoint at most. Each shrinks the normal's error by about
+// |gap| / (r + rounding): a sphere half its radius deep in a rounded edge needs a dozen (4 left
+// Bullet's normal 1 degree off in such a bounce).
+constexpr int kClosestPointIterations = 16;
 // Bullet's warm-starting factor (btContactSolverInfo::m_warmstartingFactor) for normal impulses.
 constexpr double kBulletWarmStart = 0.85;
 
@@ -703,7 +707,12 @@ private:
         c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
         if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return false;
         normal = glm::normalize(toD(hit.normal));
-        return glm::dot(normal, motion) < -0.04;
+        if (glm::dot(normal, motion) >= -0.04) return false;
+        // btContinuousConvexCollision stops advancing once the shapes are within 1 mm: a sweep
+        // that starts that close reports its hit at the start (the body does not move towards
+        // it, and a predictive contact has distance 0).
+        if (-static_cast<double>(hit.fraction) * glm::dot(motion, normal) <= 1e-3) hit.fraction = 0.0f;
+        return true;
     }
 
     // Godot 3 with Bullet, after the solve: btDiscreteDynamicsWorld::integrateTransforms sweeps
@@ -898,13 +907,13 @@ private:
     // Jolt's and Bullet's narrow phases measure a contact between the closest points of the
     // sphere and the shape at the step's start (GJK), where the cast found the surface at the
     // point the motion reaches. On a face the two agree; on a rounded edge or corner the normal
-    // differs. Probing along the normal again until it settles finds the closest point (near the
-    // surface each probe shrinks the normal's error by about gap / (r + rounding)). `settle`: how
+    // differs. Probing along the normal again until it settles finds the closest point (each probe
+    // shrinks the normal's error by about |gap| / (r + rounding)). `settle`: how
     // close to 1 the dot product of two probes' normals must come (a world of float casts, such
     // as BulletWorld, needs more room than the 1e-12 of one in double).
     void closestPoint(Surface& s, const DVec3& freeMotion, double reach, double settle = 1e-12) const {
         const DVec3 clear = clearance(s.normal, mSurfaces.data(), mCount);
-        for (int iteration = 0; iteration < 4; ++iteration) {
+        for (int iteration = 0; iteration < kClosestPointIterations; ++iteration) {
             const DVec3 from = mPosition + clear + s.normal * (std::max(0.0, -s.gap) + 0.01);
             const DVec3 to =
                 mPosition + clear -
