@@ -763,6 +763,82 @@ TEST(EngineProfile, Box2DCornerImpactIsOneContact) {
     EXPECT_NEAR(points[27].velocity.y, 3.1008617877960205, 2e-3);
 }
 
+// Godot 3.2 with Bullet (godot3-server, tests/engines/godot): a ball of 8.6 cm falls onto the
+// floor box at 5.9 m/s, 60 Hz. The step before, Bullet's continuous-collision clamp stopped it
+// with its swept sphere 0.47 mm above the floor, so this step's predictive contact starts within
+// Bullet's 1 mm and has distance 0. How much friction that contact keeps at the centre depends on
+// its distance: with the exact 0.47 mm the bounce left 0.13 m/s slower along the floor.
+TEST(EngineProfile, Godot3BulletSweepStartingWithinAMillimetreHasNoDistance) {
+    StaticWorld world;
+    OrientedBox floor{RVec3(0, -0.5, 0), Vec3(30, 0.5f, 30)};
+    floor.rounding = 0.04f;  // Godot's collision margin
+    ASSERT_EQ(world.add(floor, SurfaceMaterial{0.0f, 0.1351111617334058f}), Status::Ok);
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(PhysicsEngine::Godot3Bullet);
+    settings.engine.timestep = 1.0f / 60.0f;
+    settings.engine.linearDamping = 0.018758512200314936f;
+    settings.step = settings.engine.timestep;
+    settings.radius = 0.0863051447357989f;
+    settings.restitution = 0.2553984674946413f;
+    settings.friction = 0.1351111617334058f;
+    std::vector<TrajectoryPoint> points(100);
+    ProjectileResult result;
+    ASSERT_EQ(predictProjectile(RVec3(-0.7911169035817118, 1.3027404263373508, 0.18160017989581223),
+                                Vec3(-1.1437711553806986f, 3.4726100788823553f, -3.2384903282434165f), 1.0f, settings,
+                                &world, points, result),
+              Status::Ok);
+    ASSERT_EQ(result.trajectorySize, 61u);
+    // Godot after 60 steps: (-0.724307, 1.498187, -2.050610) m/s. 3e-4 m/s: float32 rounding
+    // over 59 steps of flight (the prediction is 8e-5 m/s off); 0.13 m/s without the rule.
+    EXPECT_NEAR(points[60].velocity.x, -0.724306583404541, 3e-4);
+    EXPECT_NEAR(points[60].velocity.y, 1.4981873035430908, 3e-4);
+    EXPECT_NEAR(points[60].velocity.z, -2.050609588623047, 3e-4);
+}
+
+// Bullet's narrow phase (GJK) measures a contact between the closest points at the step's start.
+// A ball of 0.24 m thrown into a rounded vertical edge at 30 Hz is 0.137 m deep in it there; the
+// probes along the normal must converge on the closest point (4 probes left it 1.1 degrees off).
+// The expected normal is worked out here from the box's geometry.
+TEST(EngineProfile, DeepEdgeContactHasTheClosestPointsNormal) {
+    const double rounding = 0.04;
+    OrientedBox wall{RVec3(1.865556323277267, 1.0599718976007781, -3.059019122648473),
+                     Vec3(0.6001701888987231f, 1.3111229628995307f, 2.7644010418075986f),
+                     Quat(0.9974179267883301f, 0.0f, 0.07181565463542938f, 0.0f)};
+    wall.rounding = static_cast<float>(rounding);
+    StaticWorld world;
+    ASSERT_EQ(world.add(wall), Status::Ok);
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(PhysicsEngine::Godot3Bullet);
+    settings.engine.timestep = 1.0f / 30.0f;
+    settings.step = settings.engine.timestep;
+    settings.radius = 0.24003828821627987f;
+    settings.restitution = 0.6559180026580591f;
+    settings.friction = 0.16482505110216183f;
+    std::vector<TrajectoryPoint> points(16);
+    ProjectileResult result;
+    ASSERT_EQ(predictProjectile(RVec3(0.24720565083596413, 0.9544455368552576, -0.3752205251606757),
+                                Vec3(8.246629809135586f, 3.9529201572631543f, 1.214916767327371f), 6.0f / 30.0f,
+                                settings, &world, points, result),
+              Status::Ok);
+    ASSERT_EQ(result.trajectorySize, 7u);
+    ASSERT_EQ(points[6].event, TrajectoryEvent::End);  // the last step, a contact step: its normal is kept
+    // The closest point of the rounded box to the centre where step 6 starts: the closest point
+    // of the box shrunk by the rounding, pushed out by it.
+    const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(wall.orientation));
+    const glm::dvec3 center(wall.center), half = glm::dvec3(wall.halfExtents) - rounding;
+    const glm::dvec3 local = glm::transpose(rotation) * (glm::dvec3(points[5].position) - center);
+    const glm::dvec3 inner = glm::clamp(local, -half, half);
+    const glm::dvec3 expected = rotation * glm::normalize(local - inner);
+    const double gap = glm::length(local - inner) - rounding - static_cast<double>(settings.radius);
+    ASSERT_LT(gap, -0.1);  // deep: where the probes converge slowly
+    // 2e-4: the casts' float normals (the probes stop when two agree to 1e-8 in their dot
+    // product); 4 probes were 0.02 off.
+    EXPECT_LT(glm::length(glm::dvec3(points[6].normal) - expected), 2e-4)
+        << points[6].normal.x << " " << points[6].normal.z << " vs " << expected.x << " " << expected.z;
+}
+
 TEST(EngineProfile, PointProjectileOnASlopedTriangleStaysFinite) {
     // A point (radius 0) that lands and slides on a sloped two-sided triangle. Jolt's position
     // correction divided by the sphere's inertia, r^2 = 0 for a point, and every such throw was
