@@ -732,6 +732,21 @@ TEST(StaticWorldMaterial, CastsReportTheHitShapesMaterial) {
 // was also known from the step's start (measured from there, with another normal); counting it
 // twice sent the ball off at (-1.88, 2.31) m/s. Expected: Box2D 2.4.1's own velocity after that
 // step for this throw (the native harness, seed 1234 of the engine oracle, scene 94).
+// ProjectileMethod::Engine with `engine`'s profile at `hz`, steps of the engine's timestep.
+ProjectileSettings engineThrow(PhysicsEngine engine, float hz, float damping, float radius, float restitution,
+                               float friction) {
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(engine);
+    settings.engine.timestep = 1.0f / hz;
+    settings.engine.linearDamping = damping;
+    settings.step = settings.engine.timestep;
+    settings.radius = radius;
+    settings.restitution = restitution;
+    settings.friction = friction;
+    return settings;
+}
+
 TEST(EngineProfile, Box2DCornerImpactIsOneContact) {
     StaticWorld world;
     ASSERT_EQ(world.add(OrientedBox{RVec3(0, -0.5, 0), Vec3(30, 0.5f, 0.5f)}), Status::Ok);
@@ -739,15 +754,8 @@ TEST(EngineProfile, Box2DCornerImpactIsOneContact) {
     ASSERT_EQ(world.add(OrientedBox{RVec3(4.318956763050331, 0.950081856483026, 0),
                                     Vec3(0.24230782867993655f, 1.7076510795815962f, 0.5f), turn}),
               Status::Ok);
-    ProjectileSettings settings;
-    settings.method = ProjectileMethod::Engine;
-    settings.engine = engineProfile(PhysicsEngine::Box2D);
-    settings.engine.timestep = 1.0f / 60.0f;
-    settings.engine.linearDamping = 0.31319439628370754f;
-    settings.step = settings.engine.timestep;
-    settings.radius = 0.13746144396976628f;
-    settings.restitution = 0.4994581686351563f;
-    settings.friction = 0.48499563174823224f;
+    const ProjectileSettings settings = engineThrow(PhysicsEngine::Box2D, 60.0f, 0.31319439628370754f,
+                                                    0.13746144396976628f, 0.4994581686351563f, 0.48499563174823224f);
     std::vector<TrajectoryPoint> points(100);
     ProjectileResult result;
     ASSERT_EQ(predictProjectile(RVec3(0.850002796431921, 1.828711504093277, 0),
@@ -773,15 +781,8 @@ TEST(EngineProfile, Godot3BulletSweepStartingWithinAMillimetreHasNoDistance) {
     OrientedBox floor{RVec3(0, -0.5, 0), Vec3(30, 0.5f, 30)};
     floor.rounding = 0.04f;  // Godot's collision margin
     ASSERT_EQ(world.add(floor, SurfaceMaterial{0.0f, 0.1351111617334058f}), Status::Ok);
-    ProjectileSettings settings;
-    settings.method = ProjectileMethod::Engine;
-    settings.engine = engineProfile(PhysicsEngine::Godot3Bullet);
-    settings.engine.timestep = 1.0f / 60.0f;
-    settings.engine.linearDamping = 0.018758512200314936f;
-    settings.step = settings.engine.timestep;
-    settings.radius = 0.0863051447357989f;
-    settings.restitution = 0.2553984674946413f;
-    settings.friction = 0.1351111617334058f;
+    const ProjectileSettings settings = engineThrow(PhysicsEngine::Godot3Bullet, 60.0f, 0.018758512200314936f,
+                                                    0.0863051447357989f, 0.2553984674946413f, 0.1351111617334058f);
     std::vector<TrajectoryPoint> points(100);
     ProjectileResult result;
     ASSERT_EQ(predictProjectile(RVec3(-0.7911169035817118, 1.3027404263373508, 0.18160017989581223),
@@ -808,14 +809,8 @@ TEST(EngineProfile, DeepEdgeContactHasTheClosestPointsNormal) {
     wall.rounding = static_cast<float>(rounding);
     StaticWorld world;
     ASSERT_EQ(world.add(wall), Status::Ok);
-    ProjectileSettings settings;
-    settings.method = ProjectileMethod::Engine;
-    settings.engine = engineProfile(PhysicsEngine::Godot3Bullet);
-    settings.engine.timestep = 1.0f / 30.0f;
-    settings.step = settings.engine.timestep;
-    settings.radius = 0.24003828821627987f;
-    settings.restitution = 0.6559180026580591f;
-    settings.friction = 0.16482505110216183f;
+    const ProjectileSettings settings = engineThrow(PhysicsEngine::Godot3Bullet, 30.0f, 0.0f, 0.24003828821627987f,
+                                                    0.6559180026580591f, 0.16482505110216183f);
     std::vector<TrajectoryPoint> points(16);
     ProjectileResult result;
     ASSERT_EQ(predictProjectile(RVec3(0.24720565083596413, 0.9544455368552576, -0.3752205251606757),
