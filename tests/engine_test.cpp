@@ -727,11 +727,6 @@ TEST(StaticWorldMaterial, CastsReportTheHitShapesMaterial) {
     EXPECT_NEAR(leave / approach, 0.9, 0.03);  // 0.03: a step of gravity (0.16 m/s) against ~6 m/s
 }
 
-// Box2D: a ball that strikes a wall's corner in a time-of-impact sub-step bounces off one contact,
-// the corner's, with the normal from the corner to the centre at the time of impact. The corner
-// was also known from the step's start (measured from there, with another normal); counting it
-// twice sent the ball off at (-1.88, 2.31) m/s. Expected: Box2D 2.4.1's own velocity after that
-// step for this throw (the native harness, seed 1234 of the engine oracle, scene 94).
 // ProjectileMethod::Engine with `engine`'s profile at `hz`, steps of the engine's timestep.
 ProjectileSettings engineThrow(PhysicsEngine engine, float hz, float damping, float radius, float restitution,
                                float friction) {
@@ -747,6 +742,11 @@ ProjectileSettings engineThrow(PhysicsEngine engine, float hz, float damping, fl
     return settings;
 }
 
+// Box2D: a ball that strikes a wall's corner in a time-of-impact sub-step bounces off one contact,
+// the corner's, with the normal from the corner to the centre at the time of impact. The corner
+// was also known from the step's start (measured from there, with another normal); counting it
+// twice sent the ball off at (-1.88, 2.31) m/s. Expected: Box2D 2.4.1's own velocity after that
+// step for this throw (the native harness, seed 1234 of the engine oracle, scene 94).
 TEST(EngineProfile, Box2DCornerImpactIsOneContact) {
     StaticWorld world;
     ASSERT_EQ(world.add(OrientedBox{RVec3(0, -0.5, 0), Vec3(30, 0.5f, 0.5f)}), Status::Ok);
