@@ -52,7 +52,7 @@ constexpr int kManifoldPoints = 4;
 constexpr double kNormalSettle = 1e-8;
 // Probes of EngineRun::closestPoint at most. Each shrinks the normal's error by about
 // |gap| / (r + rounding): a sphere half its radius deep in a rounded edge needs a dozen (4 left
-// Bullet's normal 1 degree off in such a bounce).
+// the normal 1 degree off the closest points' in such a bounce).
 constexpr int kClosestPointIterations = 16;
 // Bullet's warm-starting factor (btContactSolverInfo::m_warmstartingFactor) for normal impulses.
 constexpr double kBulletWarmStart = 0.85;
