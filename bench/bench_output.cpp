@@ -7,16 +7,20 @@
 ///   BM_Output/Stream    the streamed writer (ResultDocumentWriter, what `foresight predict`
 ///                       runs) writing every result, precomputed, to a sink that only counts
 ///   BM_Output/Document  the former writer: formatJson(resultDocument(...)), for comparison
+///   BM_Output/Turns     Predict and Stream once each per iteration, in turns (bench_turns.h):
+///                       the counter stream/predict is the target's ratio under one load
 /// Target: Stream / Predict <= 2. scripts/bench.sh --output prints the ratios and the peak
 /// memory of the CLI for 1 000 and 4 000 predictions.
 ///
 /// `foresight_bench_output --scenario N` prints the scenario with N throws instead (the CLI's
 /// input in scripts/bench.sh).
 
+#include "bench_turns.h"
 #include "scenario.h"
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -29,6 +33,9 @@
 namespace {
 
 using namespace foresight_cli;
+using foresight_bench::Part;
+using foresight_bench::timeInTurns;
+using foresight_bench::TimeRatio;
 
 constexpr int kOutputPredictions = 1000;
 
@@ -95,28 +102,19 @@ Prepared& prepared() {
     return *p;
 }
 
-void BM_OutputPredict(benchmark::State& state) {
-    Prepared& p = prepared();
-    if (!p.error.empty()) {
-        state.SkipWithError(p.error.c_str());
-        return;
-    }
+/// Predicts every throw with trajectories, dropping the results as they come (what
+/// `foresight predict` computes); returns the number of trajectory points, 0 on failure.
+std::uint64_t predictAll(const Scenario& scenario) {
+    Diagnostics diagnostics;
     std::uint64_t points = 0;
-    for (auto _ : state) {
-        Diagnostics diagnostics;
-        points = 0;
-        const bool ok = runScenario(
-            p.scenario,
-            [&points](std::size_t, PredictionResult& result) {
-                points += result.trajectory.size();
-                return true;
-            },
-            diagnostics);
-        if (!ok) state.SkipWithError("the scenario did not run");
-        benchmark::DoNotOptimize(points);
-    }
-    state.counters["points"] = static_cast<double>(points);
-    state.SetItemsProcessed(state.iterations() * kOutputPredictions);
+    const bool ok = runScenario(
+        scenario,
+        [&points](std::size_t, PredictionResult& result) {
+            points += result.trajectory.size();
+            return true;
+        },
+        diagnostics);
+    return ok ? points : 0;
 }
 
 const std::vector<PredictionResult>& results() {
@@ -129,35 +127,72 @@ const std::vector<PredictionResult>& results() {
     return *r;
 }
 
-void BM_OutputStream(benchmark::State& state) {
-    Prepared& p = prepared();
-    if (!p.error.empty() || results().size() != p.scenario.predictions.size()) {
-        state.SkipWithError("the scenario did not run");
-        return;
+/// Writes every precomputed result with the streamed writer (what `foresight predict` runs) to
+/// a sink that only counts; returns the bytes written, 0 on failure.
+std::uint64_t streamAll(const Scenario& scenario) {
+    std::uint64_t counted = 0;
+    ResultDocumentWriter writer([&counted](std::string_view text) {
+        counted += text.size();
+        benchmark::DoNotOptimize(text.data());
+        return true;
+    });
+    writer.begin();
+    for (std::size_t i = 0; i < results().size(); ++i) writer.add(scenario.predictions[i], results()[i]);
+    return writer.finish() ? counted : 0;
+}
+
+/// The prepared scenario and its results, or a skip with the reason.
+bool ready(benchmark::State& state) {
+    if (!prepared().error.empty()) {
+        state.SkipWithError(prepared().error.c_str());
+        return false;
     }
+    if (results().size() != prepared().scenario.predictions.size()) {
+        state.SkipWithError("the scenario did not run");
+        return false;
+    }
+    return true;
+}
+
+void BM_OutputPredict(benchmark::State& state) {
+    if (!ready(state)) return;
+    std::uint64_t points = 0;
+    for (auto _ : state) {
+        points = predictAll(prepared().scenario);
+        if (points == 0) state.SkipWithError("the scenario did not run");
+        benchmark::DoNotOptimize(points);
+    }
+    state.counters["points"] = static_cast<double>(points);
+    state.SetItemsProcessed(state.iterations() * kOutputPredictions);
+}
+
+void BM_OutputStream(benchmark::State& state) {
+    if (!ready(state)) return;
     std::uint64_t bytes = 0;
     for (auto _ : state) {
-        std::uint64_t counted = 0;
-        ResultDocumentWriter writer([&counted](std::string_view text) {
-            counted += text.size();
-            benchmark::DoNotOptimize(text.data());
-            return true;
-        });
-        writer.begin();
-        for (std::size_t i = 0; i < results().size(); ++i) writer.add(p.scenario.predictions[i], results()[i]);
-        if (!writer.finish()) state.SkipWithError("the sink failed");
-        bytes = counted;
+        bytes = streamAll(prepared().scenario);
+        if (bytes == 0) state.SkipWithError("the sink failed");
     }
     state.counters["bytes"] = static_cast<double>(bytes);
     state.SetItemsProcessed(state.iterations() * kOutputPredictions);
 }
 
+/// The target as a ratio within one benchmark (timeInTurns): writing over predicting, both once
+/// per iteration, in turns.
+void BM_OutputTurns(benchmark::State& state) {
+    if (!ready(state)) return;
+    bool failed = false;
+    const std::array<Part, 2> parts = {
+        Part{"predict", [&failed] { failed = failed || predictAll(prepared().scenario) == 0; }},
+        Part{"stream", [&failed] { failed = failed || streamAll(prepared().scenario) == 0; }}};
+    const std::array<TimeRatio, 1> ratios = {TimeRatio{"stream/predict", 1, 0}};
+    timeInTurns(state, parts, ratios);
+    if (failed) state.SkipWithError("the scenario did not run or the sink failed");
+}
+
 void BM_OutputDocument(benchmark::State& state) {
+    if (!ready(state)) return;
     Prepared& p = prepared();
-    if (!p.error.empty() || results().size() != p.scenario.predictions.size()) {
-        state.SkipWithError("the scenario did not run");
-        return;
-    }
     std::uint64_t bytes = 0;
     for (auto _ : state) {
         const std::string text = formatJson(resultDocument(p.scenario, results()));
@@ -171,6 +206,7 @@ void BM_OutputDocument(benchmark::State& state) {
 BENCHMARK(BM_OutputPredict)->Name("BM_Output/Predict")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OutputStream)->Name("BM_Output/Stream")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OutputDocument)->Name("BM_Output/Document")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OutputTurns)->Name("BM_Output/Turns")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -27,7 +27,7 @@ fi
 packages=(
     cmake ninja-build g++ pkg-config
     clang-14 libclang-rt-14-dev clang-format-14
-    libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libtinygltf-dev
+    libglm-dev nlohmann-json3-dev libcli11-dev libfmt-dev libtinyobjloader-dev libtinygltf-dev
     libembree-dev libbullet-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     chromium

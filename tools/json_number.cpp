@@ -10,6 +10,8 @@
 #include <cstring>
 #include <limits>
 
+#include <fmt/format.h>
+
 namespace foresight_cli {
 
 namespace {
@@ -95,10 +97,13 @@ void writeDigits(char* out, std::uint64_t digits, int count) {
 char* writeDecimal(char* out, const Decimal& d) {
     const int point = d.count + d.exponent;  // digits before the point
     if (point > 0 && point <= kMaxExponent && d.exponent < 0) {
-        // dig.its: the digits one place on, then the integral ones moved back before the point.
-        writeDigits(out + 1, d.digits, d.count);
-        for (int i = 0; i < point; ++i) out[i] = out[i + 1];
+        // dig.its: the digits, then the fraction's (at most 16) moved one place on as a block of
+        // 16 characters, which ends within the room (point is at most 15).
+        writeDigits(out, d.digits, d.count);
+        char fraction[16];
+        std::memcpy(fraction, out + point, sizeof fraction);
         out[point] = '.';
+        std::memcpy(out + point + 1, fraction, sizeof fraction);
         return out + d.count + 1;
     }
     if (point <= 0 && point > kMinExponent) {
@@ -116,6 +121,7 @@ char* writeDecimal(char* out, const Decimal& d) {
 #if defined(__SIZEOF_INT128__)
 
 __extension__ using Int128 = __int128;
+__extension__ using UInt128 = unsigned __int128;
 
 constexpr int kMaxFiveExponent = 42;  // 5^42 < 2^98
 
@@ -151,55 +157,12 @@ bool scale(std::uint64_t f, int a, int b, bool closerBelow, Scaled& s) {
     if (static_cast<int>(std::bit_width(f)) + 2 + fiveBits > 125) return false;
     s.shift = a + 2 - b;
     if (s.shift < 0 || s.shift > 120) return false;
-    s.n = static_cast<Int128>(f << 2) * five;
+    // (One 64-bit multiplication while 5^b fits in 64 bits: b up to 27.)
+    s.n = high == 0 ? static_cast<Int128>(static_cast<UInt128>(f << 2) * static_cast<std::uint64_t>(five))
+                    : static_cast<Int128>(f << 2) * five;
     s.above = 2 * five;
     s.below = closerBelow ? five : s.above;
     return true;
-}
-
-/// The shortest decimal in the interval of `s` (bounds included when `inclusive`; the interval
-/// at least one unit of 10^-b wide), the closest to the value of that length (ties: the even
-/// one), as digits × 10^(j - b); `x` is decimal - value and `unit` a unit of its last digit,
-/// both in the units of `s`. False when there is none (the scale was too coarse).
-bool shortestIn(const Scaled& s, bool inclusive, std::uint64_t& digits, int& j, Int128& x, Int128& unit) {
-    const Int128 top = s.n + s.above, bottom = s.n - s.below;
-    const Int128 one = static_cast<Int128>(1) << s.shift;
-    // The interval's decimals in units of 10^-b, [lo, hi]; then the largest j with a multiple of
-    // 10^j in it (lo and hi become ceil(lo / 10^j), floor(hi / 10^j)).
-    std::uint64_t hi = static_cast<std::uint64_t>((inclusive ? top : top - 1) >> s.shift);
-    std::uint64_t lo = static_cast<std::uint64_t>(inclusive ? (bottom + one - 1) >> s.shift : (bottom >> s.shift) + 1);
-    if (hi < lo) return false;
-    // floor(value / 10^j) alongside (floor(floor(x / 10) / 10) = floor(x / 100)).
-    std::uint64_t c0 = static_cast<std::uint64_t>(s.n >> s.shift);
-    j = 0;
-    for (;;) {
-        const std::uint64_t nextHi = hi / 10, nextLo = (lo + 9) / 10;
-        if (nextHi < nextLo) break;
-        hi = nextHi;
-        lo = nextLo;
-        c0 /= 10;
-        ++j;
-    }
-    // The two decimals of that length around the value: c0 (at or below) and c0 + 1.
-    unit = static_cast<Int128>(kPowersOfTen[static_cast<std::size_t>(j)]) << s.shift;
-    const Int128 below = s.n - static_cast<Int128>(c0) * unit;  // value - c0, in [0, unit)
-    const Int128 above = unit - below;                          // c0 + 1 - value
-    std::uint64_t c = above < below || (above == below && (c0 & 1) != 0) ? c0 + 1 : c0;
-    if (c > hi) c = c0;
-    if (c < lo) c = c0 + 1;
-    if (c < lo || c > hi) return false;
-    digits = c;
-    x = c == c0 ? -below : above;
-    return true;
-}
-
-/// Grisu2's errors are below 2^-60.6 of the value (json_number.h); margin: 2^-59 of it.
-/// True when a decimal x from the value (units of `s`) is inside the interval and nearer than
-/// half a unit of its last digit, both by the margin.
-bool clearOfGrisu2Errors(const Scaled& s, Int128 x, Int128 unit) {
-    const Int128 margin = (s.n >> 59) + 1;
-    const Int128 absX = x < 0 ? -x : x;
-    return x < s.above - margin && -x < s.below - margin && 2 * absX < unit - 2 * margin;
 }
 
 /// value = f × 2^-a, f with the hidden bit, for a positive normal double; false otherwise.
@@ -214,77 +177,48 @@ bool split(double value, std::uint64_t& f, int& a, bool& closerBelow) {
     return true;
 }
 
-/// The exact test of json_number.h: Grisu2 prints `value` (positive, finite, not integral)
-/// with the shortest decimal in its rounding interval, found here, when that decimal is inside
+/// The exact test of json_number.h: true when Grisu2 prints `value` (positive, not integral) as
+/// `d`, a decimal with a fraction and no trailing zeros of which no shorter decimal lies
+/// strictly inside the value's rounding interval. Then Grisu2 prints `d` when `d` lies inside
 /// the interval and nearer the value than half a unit of its last digit, both by more than
-/// Grisu2's errors. Then Grisu2's narrowed interval holds it and nothing shorter (it lies in
-/// the interval), and it is the decimal of its length nearest Grisu2's approximation of the
-/// value. Values from 10^-14 to 2^52.
-bool grisu2Digits(double value, Decimal& d) {
-    std::uint64_t f = 0;
-    int a = 0;
-    bool closerBelow = false;
-    if (!split(value, f, a, closerBelow) || a < 1) return false;
-    const int k = ((52 - a) * 78913) >> 18;  // floor(log10(2^(52 - a))): value in [10^k, 2 × 10^(k+1))
-    const int b = 16 - k;                    // value × 10^b in [10^16, 2 × 10^17): 17 digits
-    Scaled s;
-    if (!scale(f, a, b, closerBelow, s)) return false;
-    Int128 x = 0, unit = 0;
-    int j = 0;
-    if (!shortestIn(s, true, d.digits, j, x, unit) || d.digits % 10 == 0 || !clearOfGrisu2Errors(s, x, unit))
-        return false;
-    d.exponent = j - b;
-    d.count = digitCount(d.digits);
-    return true;
-}
-
-/// The float's shortest decimal, as std::to_chars finds it (bounds included for an even
-/// significand, ties to even); for positive normal floats with a fraction only.
-bool floatDigits(float value, Decimal& d) {
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
-    const int biased = static_cast<int>(bits >> 23) & 0xff;
-    if (biased == 0 || biased == 0xff) return false;
-    constexpr std::uint32_t kHidden = std::uint32_t(1) << 23;
-    const std::uint32_t f = (bits & (kHidden - 1)) | kHidden;
-    const int a = 150 - biased;  // value = f × 2^-a
-    if (a < 1) return false;
-    const int k = ((23 - a) * 78913) >> 18;
-    const int b = 8 - k;  // value × 10^b in [10^8, 2 × 10^9): 9 digits, and the interval > 11 units
-    Scaled s;
-    if (!scale(f, a, b, (bits & (kHidden - 1)) == 0 && biased > 1, s)) return false;
-    Int128 x = 0, unit = 0;
-    int j = 0;
-    if (!shortestIn(s, (f & 1) == 0, d.digits, j, x, unit)) return false;
-    d.exponent = j - b;
-    d.count = digitCount(d.digits);
-    return true;
-}
-
-/// True when Grisu2 prints `value` (positive, not integral) as `d`, a decimal of at most 15
-/// digits that rounds to it: inside its interval and nearer than half a unit of its last digit
-/// by more than Grisu2's errors, no other decimal of at most 15 digits being in an interval
-/// that narrow.
+/// Grisu2's errors (below 2^-60.6 of the value; margin: 2^-59 of it): Grisu2's interval,
+/// narrowed by its errors, then holds `d` and nothing shorter, and `d` is the decimal of its
+/// length nearest Grisu2's approximation of the value. False also where the exact numbers would
+/// not fit in 127 bits (values below about 10^-14 with 17 digits).
 bool grisu2Prints(double value, const Decimal& d) {
     std::uint64_t f = 0;
     int a = 0;
     bool closerBelow = false;
-    if (d.count > 15 || d.exponent >= 0 || !split(value, f, a, closerBelow)) return false;
+    if (d.exponent >= 0 || d.digits % 10 == 0 || !split(value, f, a, closerBelow)) return false;
     Scaled s;
     if (!scale(f, a, -d.exponent, closerBelow, s)) return false;
     if (static_cast<int>(std::bit_width(d.digits)) + s.shift > 125) return false;
     const Int128 unit = static_cast<Int128>(1) << s.shift;
-    const Int128 x = static_cast<Int128>(d.digits) * unit - s.n;
-    if ((x < 0 ? -x : x) > s.above) return false;
-    return clearOfGrisu2Errors(s, x, unit);
+    const Int128 x = static_cast<Int128>(d.digits) * unit - s.n;  // decimal - value
+    const Int128 margin = (s.n >> 59) + 1;
+    const Int128 absX = x < 0 ? -x : x;
+    return x < s.above - margin && -x < s.below - margin && 2 * absX < unit - 2 * margin;
 }
 
 #else
 
-bool grisu2Digits(double, Decimal&) { return false; }  // no 128-bit integers: nlohmann always
-bool floatDigits(float, Decimal&) { return false; }
-bool grisu2Prints(double, const Decimal&) { return false; }
+bool grisu2Prints(double, const Decimal&) { return false; }  // no 128-bit integers: nlohmann always
 
 #endif
+
+/// The shortest decimal of `value` (positive, finite), the nearest of that length (ties: even
+/// digits), without trailing zeros, as std::to_chars finds it: {fmt}'s Dragonbox. Its rounding
+/// interval includes the bounds when the significand is even (round-to-nearest-even reads them
+/// back to the value), so no shorter decimal lies strictly inside it.
+template <class T>
+Decimal shortestDecimal(T value) {
+    const auto decimal = fmt::detail::dragonbox::to_decimal(value);
+    Decimal d;
+    d.digits = decimal.significand;
+    d.exponent = decimal.exponent;
+    d.count = digitCount(d.digits);
+    return d;
+}
 
 constexpr std::array<double, 23> kExactPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
@@ -298,8 +232,8 @@ char* writeShortestIfGrisu2(char* out, double value) {
         *o++ = '-';
         value = -value;
     }
-    Decimal d;
-    if (!grisu2Digits(value, d)) return nullptr;
+    const Decimal d = shortestDecimal(value);
+    if (!grisu2Prints(value, d)) return nullptr;
     return writeDecimal(o, d);
 }
 
@@ -307,14 +241,15 @@ char* writeFloatShortestIfGrisu2(char* out, float value) {
     // jsonFloat prints floatDecimal(value): the double nearest to the float's shortest decimal.
     // With a fraction (and at most 22 decimals) that double is the correctly rounded quotient of
     // two exact doubles, the digits and a power of ten; Grisu2 prints it with the float's
-    // digits when grisu2Prints says so.
+    // digits when grisu2Prints says so. No shorter decimal lies in that double's interval: it
+    // is under 2^-52 of the value wide, and two decimals of at most 9 digits differ by more.
     char* o = out;
     if (std::signbit(value)) {
         *o++ = '-';
         value = -value;
     }
-    Decimal d;
-    if (!floatDigits(value, d) || d.exponent >= 0 || d.exponent < -22) return nullptr;
+    const Decimal d = shortestDecimal(value);
+    if (d.exponent >= 0 || d.exponent < -22) return nullptr;
     const double decimal = static_cast<double>(d.digits) / kExactPowersOfTen[static_cast<std::size_t>(-d.exponent)];
     // (A float with a fraction is below 2^23: the conversion to int64 cannot overflow.)
     if (static_cast<double>(static_cast<std::int64_t>(decimal)) == decimal || !grisu2Prints(decimal, d)) return nullptr;

@@ -101,9 +101,11 @@ char* JsonStreamWriter::cachedText(std::vector<CachedNumber>& cache, std::uint64
     char* end = write(out);
     const auto size = static_cast<std::size_t>(end - out);
     if (size < sizeof cached.text) {
+        // The whole text array at once (a fixed-size copy; `out` has kJsonNumberChars of room),
+        // as the hit above copies it back.
         cached.bits = bits;
         cached.size = static_cast<std::uint8_t>(size);
-        std::memcpy(cached.text, out, size);
+        std::memcpy(cached.text, out, sizeof cached.text);
     }
     return end;
 }
