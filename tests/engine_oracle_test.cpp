@@ -446,6 +446,16 @@ protected:
             const EngineProfile profile = engineProfile(t.engine);
             const int engineFirst = firstContactStep(run.velocities, profile, t);
             const int predictedFirst = firstContactStep(engine.velocities, profile, t);
+            if (const char* dump = std::getenv("FORESIGHT_ENGINE_DUMP"); dump && t.id == dump) {
+                for (std::size_t k = 0; k < run.positions.size(); ++k) {
+                    const DVec3 a = run.positions[k], b = engine.positions[k];
+                    const DVec3 va = run.velocities[k], vb = engine.velocities[k];
+                    std::printf(
+                        "%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f "
+                        "%8.4f\n",
+                        k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+                }
+            }
             if (t.ownMaterials) {
                 ++materialScenes;
                 materialSameBounce += engineFirst == predictedFirst ? 1 : 0;
@@ -465,16 +475,6 @@ protected:
             if (error <= kEndTolerance) ++endWithin;
             if (exactErrors.back() <= kEndTolerance) ++endWithinExact;
             if (steppedErrors.back() <= kEndTolerance) ++endWithinStepped;
-            if (const char* dump = std::getenv("FORESIGHT_ENGINE_DUMP"); dump && t.id == dump) {
-                for (std::size_t k = 0; k < run.positions.size(); ++k) {
-                    const DVec3 a = run.positions[k], b = engine.positions[k];
-                    const DVec3 va = run.velocities[k], vb = engine.velocities[k];
-                    std::printf(
-                        "%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f "
-                        "%8.4f\n",
-                        k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
-                }
-            }
             if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))
                 std::cout << t.id << " first " << engineFirst << "/" << predictedFirst << " end error " << error
                           << "\n";
