@@ -118,10 +118,6 @@ char* writeDecimal(char* out, const Decimal& d) {
     return nlohmann::detail::dtoa_impl::format_buffer(out, d.count, d.exponent, kMinExponent, kMaxExponent);
 }
 
-constexpr std::array<double, 23> kExactPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-
 #if defined(__SIZEOF_INT128__)
 
 __extension__ using Int128 = __int128;
@@ -181,15 +177,19 @@ bool split(double value, std::uint64_t& f, int& a, bool& closerBelow) {
     return true;
 }
 
-/// The exact form of grisu2Prints's test (below), in 128-bit integers: the decimal inside the
-/// interval and nearer the value than half a unit, both by more than (value >> 59) + 1 in the
-/// scaled units. False also where the numbers would not fit in 127 bits (values below about
-/// 10^-14 with 17 digits).
-bool clearInIntegers(double value, const Decimal& d) {
+/// The exact test of json_number.h: true when Grisu2 prints `value` (positive, not integral) as
+/// `d`, a decimal with a fraction and no trailing zeros of which no shorter decimal lies
+/// strictly inside the value's rounding interval. Then Grisu2 prints `d` when `d` lies inside
+/// the interval and nearer the value than half a unit of its last digit, both by more than
+/// Grisu2's errors (below 2^-60.6 of the value; margin: 2^-59 of it): Grisu2's interval,
+/// narrowed by its errors, then holds `d` and nothing shorter, and `d` is the decimal of its
+/// length nearest Grisu2's approximation of the value. False also where the exact numbers would
+/// not fit in 127 bits (values below about 10^-14 with 17 digits).
+bool grisu2Prints(double value, const Decimal& d) {
     std::uint64_t f = 0;
     int a = 0;
     bool closerBelow = false;
-    if (!split(value, f, a, closerBelow)) return false;
+    if (d.exponent >= 0 || d.digits % 10 == 0 || !split(value, f, a, closerBelow)) return false;
     Scaled s;
     if (!scale(f, a, -d.exponent, closerBelow, s)) return false;
     if (static_cast<int>(std::bit_width(d.digits)) + s.shift > 125) return false;
@@ -202,50 +202,9 @@ bool clearInIntegers(double value, const Decimal& d) {
 
 #else
 
-bool clearInIntegers(double, const Decimal&) { return false; }  // no 128-bit integers: nlohmann decides
+bool grisu2Prints(double, const Decimal&) { return false; }  // no 128-bit integers: nlohmann always
 
 #endif
-
-/// The same test in double arithmetic, where it is sure: true when the decimal (at most 22
-/// decimals) is inside the interval and nearer the value than half a unit, both by more than
-/// 2^-59 of the value plus 2^-30 of a unit. In units of the decimal's last digit (P = 10^k
-/// exact), x = D - v P is Dl - fma(v, P, -Dh) with D = Dh + Dl (Dh the double nearest D, D
-/// below 2^60): fma rounds v P - Dh once. Where the test can pass, |x| is below the half gap,
-/// P ulp / 2 < D 2^-53 < 2^7, and |D - Dh| <= 2^6, so |v P - Dh| < 2^8 and x is off by less
-/// than 2^-44 (where |x| is larger, so is the computed one, and the test fails as it should);
-/// the bounds, P ulp / 2 and v P 2^-59, are each off by a relative 2^-52 at most. The 2^-30
-/// covers all of it.
-bool clearInDoubles(double value, const Decimal& d) {
-    const int k = -d.exponent;
-    if (k > 22 || d.digits >= (std::uint64_t(1) << 60)) return false;
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
-    const int biased = static_cast<int>(bits >> 52) & 0x7ff;
-    if (biased < 60 || biased > 0x7ff - 60) return false;  // far from subnormals and overflow
-    const double p = kExactPowersOfTen[static_cast<std::size_t>(k)];
-    const double high = static_cast<double>(d.digits);
-    const auto low = static_cast<double>(static_cast<std::int64_t>(d.digits - static_cast<std::uint64_t>(high)));
-    const double x = low - std::fma(value, p, -high);
-    // Half the gap to the next double up, P 2^(e - 53) for value in [2^e, 2^(e+1)), in units;
-    // the gap below is half as wide at a power of two.
-    const double above = p * std::bit_cast<double>(static_cast<std::uint64_t>(biased - 53) << 52);
-    const bool closerBelow = (bits & ((std::uint64_t(1) << 52) - 1)) == 0 && biased > 1;
-    const double below = closerBelow ? 0.5 * above : above;
-    const double margin = value * p * 0x1p-59 + 0x1p-30;
-    return x < above - margin && -x < below - margin && 2.0 * std::abs(x) < 1.0 - 2.0 * margin;
-}
-
-/// The exact test of json_number.h: true when Grisu2 prints `value` (positive, not integral) as
-/// `d`, a decimal with a fraction and no trailing zeros of which no shorter decimal lies
-/// strictly inside the value's rounding interval. Then Grisu2 prints `d` when `d` lies inside
-/// the interval and nearer the value than half a unit of its last digit, both by more than
-/// Grisu2's errors (below 2^-60.6 of the value; margin: 2^-59 of it): Grisu2's interval,
-/// narrowed by its errors, then holds `d` and nothing shorter, and `d` is the decimal of its
-/// length nearest Grisu2's approximation of the value. Decided in doubles where that is sure
-/// (nearly always), else in integers.
-bool grisu2Prints(double value, const Decimal& d) {
-    if (d.exponent >= 0 || d.digits % 10 == 0) return false;
-    return clearInDoubles(value, d) || clearInIntegers(value, d);
-}
 
 /// The shortest decimal of `value` (positive, finite), the nearest of that length (ties: even
 /// digits), without trailing zeros, as std::to_chars finds it: {fmt}'s Dragonbox. Its rounding
@@ -260,6 +219,10 @@ Decimal shortestDecimal(T value) {
     d.count = digitCount(d.digits);
     return d;
 }
+
+constexpr std::array<double, 23> kExactPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 }  // namespace
 

@@ -8,9 +8,8 @@
 /// 62nd bit), and picks among those the one closest to its approximation of the value. So the
 /// shortest decimal (std::to_chars's) differs for about one double in a thousand
 /// (3.0990509999999998 where the shortest is 3.099051). Here the shortest decimal comes from
-/// {fmt}'s Dragonbox and is kept only when a test (in double arithmetic with a bound on its
-/// rounding where that decides, else exactly in 128-bit integers) shows that Grisu2 finds the
-/// same digits: they lie inside the rounding interval, and nearer the value than half
+/// {fmt}'s Dragonbox and is kept only when an exact test, in 128-bit integers, shows that Grisu2
+/// finds the same digits: they lie inside the rounding interval, and nearer the value than half
 /// a unit of their last digit, both by a margin (2^-59 of the value) larger than every error of
 /// Grisu2's arithmetic (below 2^-60.6). Then they are the shortest in Grisu2's narrowed interval
 /// too, and the closest to its value. Otherwise (near-ties, and values the exact test does not
