@@ -210,7 +210,7 @@ bool grisu2Prints(double, const Decimal&) { return false; }  // no 128-bit integ
 /// digits), without trailing zeros, as std::to_chars finds it: {fmt}'s Dragonbox. Its rounding
 /// interval includes the bounds when the significand is even (round-to-nearest-even reads them
 /// back to the value), so no shorter decimal lies strictly inside it. (This is {fmt}'s own entry
-/// to its Dragonbox, in its detail namespace: {fmt} 9 to 11 have it with this signature; a
+/// to its Dragonbox, in its detail namespace: {fmt} 9 to 12 have it with this signature; a
 /// release without it fails to compile here, and tests/cli_output_test.cpp compares the digits
 /// with nlohmann's on over a million values.)
 template <class T>
