@@ -410,12 +410,7 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
     ftest::Random random(4242);
     std::size_t castsEveryStep = 0, castsCoasting = 0, promises = 0, fell = 0;
     double worst = 0.0;
-    // 24 rounds; 8 in Debug and sanitizer builds, where the 24 took 105 s.
-#ifdef NDEBUG
-    constexpr int kRounds = 24;
-#else
-    constexpr int kRounds = 8;
-#endif
+    constexpr int kRounds = ftest::roundsForBuild(24, 8);  // the 24 took 105 s under ASan
     for (int round = 0; round < kRounds; ++round) {
         const bool tiled = round % 2 == 1;
         const StaticWorld world = tiled ? tiledScene(random, 7) : ftest::randomScene(random);

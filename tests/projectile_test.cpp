@@ -1527,12 +1527,7 @@ TEST(ProjectileExact, ClearingSlidesGivesTheTrajectoryOfAskingEveryStep) {
     ftest::Random random(2718);
     std::size_t queriesEveryStep = 0, queriesClearing = 0, promises = 0;
     std::array<double, 4> worst{};
-    // 100 rounds; 36 in Debug and sanitizer builds, where the 100 took 37 s.
-#ifdef NDEBUG
-    constexpr int kRounds = 100;
-#else
-    constexpr int kRounds = 36;
-#endif
+    constexpr int kRounds = ftest::roundsForBuild(100, 36);  // the 100 took 37 s under ASan
     for (int round = 0; round < kRounds; ++round) {
         StaticWorld world;
         const double tilt = round % 2 == 0 ? 0.0 : random.uniform(0.05, 0.35);

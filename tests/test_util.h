@@ -22,6 +22,18 @@
 
 namespace ftest {
 
+/// `release` in optimised builds (NDEBUG), `debug` in Debug and sanitizer builds, where the
+/// same work runs about 20 to 30 times slower: the number of rounds of a long randomised test.
+constexpr int roundsForBuild(int release, int debug) {
+#ifdef NDEBUG
+    (void)debug;
+    return release;
+#else
+    (void)release;
+    return debug;
+#endif
+}
+
 using DVec3 = glm::dvec3;
 using DQuat = glm::dquat;
 
