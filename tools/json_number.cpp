@@ -19,15 +19,12 @@ namespace {
 constexpr double kTwo53 = 9007199254740992.0;  // integral doubles below print as integers
 constexpr float kTwo24 = 16777216.0f;          // integral floats below are their own decimal
 
-// nlohmann's to_chars formats Grisu2's digits with these exponent limits (printf's %g, but up
-// to digits10 digits before the point).
+// nlohmann's to_chars lays out a double's digits with these exponent limits (printf's %g, but
+// up to digits10 digits before the point); the CLI keeps its layout.
 constexpr int kMinExponent = -4;
 constexpr int kMaxExponent = std::numeric_limits<double>::digits10;
 
 char* writeInteger(char* out, std::int64_t value) { return std::to_chars(out, out + kJsonNumberChars, value).ptr; }
-
-/// nlohmann::json's own text of a double: its serializer calls this function.
-char* writeGrisu2(char* out, double value) { return nlohmann::detail::to_chars(out, out + kJsonNumberChars, value); }
 
 /// A decimal: digits × 10^exponent, `count` digits, no trailing zeros.
 struct Decimal {
@@ -92,8 +89,8 @@ void writeDigits(char* out, std::uint64_t digits, int count) {
     }
 }
 
-/// Writes `d` (positive) as nlohmann's format_buffer lays out Grisu2's digits: d.ddd, 0.000ddd,
-/// or with an exponent (then format_buffer itself).
+/// Writes `d` (positive) as nlohmann's format_buffer lays out a double's digits: d.ddd,
+/// 0.000ddd, or with an exponent (then format_buffer itself).
 char* writeDecimal(char* out, const Decimal& d) {
     const int point = d.count + d.exponent;  // digits before the point
     if (point > 0 && point <= kMaxExponent && d.exponent < 0) {
@@ -118,101 +115,11 @@ char* writeDecimal(char* out, const Decimal& d) {
     return nlohmann::detail::dtoa_impl::format_buffer(out, d.count, d.exponent, kMinExponent, kMaxExponent);
 }
 
-#if defined(__SIZEOF_INT128__)
-
-__extension__ using Int128 = __int128;
-__extension__ using UInt128 = unsigned __int128;
-
-constexpr int kMaxFiveExponent = 42;  // 5^42 < 2^98
-
-constexpr std::array<Int128, kMaxFiveExponent + 1> kPowersOfFive = [] {
-    std::array<Int128, kMaxFiveExponent + 1> powers{};
-    Int128 power = 1;
-    for (auto& p : powers) {
-        p = power;
-        power *= 5;
-    }
-    return powers;
-}();
-
-/// A positive value and its rounding interval, exactly, in units of 2^-shift × 10^-b:
-/// value = f × 2^-a is n = 4 f 5^b (shift = a + 2 - b), the interval n - below to n + above,
-/// above = 2 × 5^b (half the gap to the next value), below the same or 5^b (a quarter of the
-/// gap up) below a power of two. One unit of the decimal digit at 10^-b is 2^shift.
-struct Scaled {
-    Int128 n = 0;
-    Int128 above = 0;
-    Int128 below = 0;
-    int shift = 0;
-};
-
-/// Scales f × 2^-a (f below 2^53) by 10^b. False when the numbers would not fit in 127 bits.
-bool scale(std::uint64_t f, int a, int b, bool closerBelow, Scaled& s) {
-    if (b < 0 || b > kMaxFiveExponent) return false;
-    const Int128 five = kPowersOfFive[static_cast<std::size_t>(b)];
-    // 4 f 5^b + 2 × 5^b must stay below 2^126: bit widths adding up to at most 125.
-    const auto high = static_cast<std::uint64_t>(five >> 64);
-    const int fiveBits =
-        static_cast<int>(high != 0 ? 64 + std::bit_width(high) : std::bit_width(static_cast<std::uint64_t>(five)));
-    if (static_cast<int>(std::bit_width(f)) + 2 + fiveBits > 125) return false;
-    s.shift = a + 2 - b;
-    if (s.shift < 0 || s.shift > 120) return false;
-    // (One 64-bit multiplication while 5^b fits in 64 bits: b up to 27.)
-    s.n = high == 0 ? static_cast<Int128>(static_cast<UInt128>(f << 2) * static_cast<std::uint64_t>(five))
-                    : static_cast<Int128>(f << 2) * five;
-    s.above = 2 * five;
-    s.below = closerBelow ? five : s.above;
-    return true;
-}
-
-/// value = f × 2^-a, f with the hidden bit, for a positive normal double; false otherwise.
-bool split(double value, std::uint64_t& f, int& a, bool& closerBelow) {
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
-    const int biased = static_cast<int>(bits >> 52) & 0x7ff;
-    if (biased == 0 || biased == 0x7ff) return false;  // subnormal, infinite: nlohmann decides
-    constexpr std::uint64_t kHidden = std::uint64_t(1) << 52;
-    f = (bits & (kHidden - 1)) | kHidden;
-    a = 1075 - biased;
-    closerBelow = (bits & (kHidden - 1)) == 0 && biased > 1;
-    return true;
-}
-
-/// The exact test of json_number.h: true when Grisu2 prints `value` (positive, not integral) as
-/// `d`, a decimal with a fraction and no trailing zeros of which no shorter decimal lies
-/// strictly inside the value's rounding interval. Then Grisu2 prints `d` when `d` lies inside
-/// the interval and nearer the value than half a unit of its last digit, both by more than
-/// Grisu2's errors (below 2^-60.6 of the value; margin: 2^-59 of it): Grisu2's interval,
-/// narrowed by its errors, then holds `d` and nothing shorter, and `d` is the decimal of its
-/// length nearest Grisu2's approximation of the value. False also where the exact numbers would
-/// not fit in 127 bits (values below about 10^-14 with 17 digits).
-bool grisu2Prints(double value, const Decimal& d) {
-    std::uint64_t f = 0;
-    int a = 0;
-    bool closerBelow = false;
-    if (d.exponent >= 0 || d.digits % 10 == 0 || !split(value, f, a, closerBelow)) return false;
-    Scaled s;
-    if (!scale(f, a, -d.exponent, closerBelow, s)) return false;
-    if (static_cast<int>(std::bit_width(d.digits)) + s.shift > 125) return false;
-    const Int128 unit = static_cast<Int128>(1) << s.shift;
-    const Int128 x = static_cast<Int128>(d.digits) * unit - s.n;  // decimal - value
-    const Int128 margin = (s.n >> 59) + 1;
-    const Int128 absX = x < 0 ? -x : x;
-    return x < s.above - margin && -x < s.below - margin && 2 * absX < unit - 2 * margin;
-}
-
-#else
-
-bool grisu2Prints(double, const Decimal&) { return false; }  // no 128-bit integers: nlohmann always
-
-#endif
-
-/// The shortest decimal of `value` (positive, finite), the nearest of that length (ties: even
-/// digits), without trailing zeros, as std::to_chars finds it: {fmt}'s Dragonbox. Its rounding
-/// interval includes the bounds when the significand is even (round-to-nearest-even reads them
-/// back to the value), so no shorter decimal lies strictly inside it. (This is {fmt}'s own entry
-/// to its Dragonbox, in its detail namespace: {fmt} 9 to 12 have it with this signature; a
-/// release without it fails to compile here, and tests/cli_output_test.cpp compares the digits
-/// with nlohmann's on over a million values.)
+/// The shortest decimal of `value` (positive, finite) that reads back as `value`, the nearest of
+/// that length, without trailing zeros, as std::to_chars finds it: {fmt}'s Dragonbox. (This is
+/// {fmt}'s own entry to its Dragonbox, in its detail namespace: {fmt} 9 to 12 have it with this
+/// signature; a release without it fails to compile here, and tests/cli_output_test.cpp compares
+/// the digits with std::to_chars's on over a million values.)
 template <class T>
 Decimal shortestDecimal(T value) {
     const auto decimal = fmt::detail::dragonbox::to_decimal(value);
@@ -223,41 +130,17 @@ Decimal shortestDecimal(T value) {
     return d;
 }
 
-constexpr std::array<double, 23> kExactPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+/// Writes `value` (finite, not zero) as its shortest decimal in nlohmann's layout, sign first.
+template <class T>
+char* writeShortest(char* out, T value) {
+    if (std::signbit(value)) {
+        *out++ = '-';
+        value = -value;
+    }
+    return writeDecimal(out, shortestDecimal(value));
+}
 
 }  // namespace
-
-char* writeShortestIfGrisu2(char* out, double value) {
-    char* o = out;
-    if (std::signbit(value)) {
-        *o++ = '-';
-        value = -value;
-    }
-    const Decimal d = shortestDecimal(value);
-    if (!grisu2Prints(value, d)) return nullptr;
-    return writeDecimal(o, d);
-}
-
-char* writeFloatShortestIfGrisu2(char* out, float value) {
-    // jsonFloat prints floatDecimal(value): the double nearest to the float's shortest decimal.
-    // With a fraction (and at most 22 decimals) that double is the correctly rounded quotient of
-    // two exact doubles, the digits and a power of ten; Grisu2 prints it with the float's
-    // digits when grisu2Prints says so. No shorter decimal lies in that double's interval: it
-    // is under 2^-52 of the value wide, and two decimals of at most 9 digits differ by more.
-    char* o = out;
-    if (std::signbit(value)) {
-        *o++ = '-';
-        value = -value;
-    }
-    const Decimal d = shortestDecimal(value);
-    if (d.exponent >= 0 || d.exponent < -22) return nullptr;
-    const double decimal = static_cast<double>(d.digits) / kExactPowersOfTen[static_cast<std::size_t>(-d.exponent)];
-    // (A float with a fraction is below 2^23: the conversion to int64 cannot overflow.)
-    if (static_cast<double>(static_cast<std::int64_t>(decimal)) == decimal || !grisu2Prints(decimal, d)) return nullptr;
-    return writeDecimal(o, d);
-}
 
 char* writeJsonDouble(char* out, double value) {
     if (!std::isfinite(value)) {
@@ -268,8 +151,7 @@ char* writeJsonDouble(char* out, double value) {
     // (Below 2^53 the int64 conversion is exact for integral values and cheaper than trunc.)
     if (std::fabs(value) < kTwo53 && static_cast<double>(static_cast<std::int64_t>(value)) == value)
         return writeInteger(out, static_cast<std::int64_t>(value));
-    if (char* end = writeShortestIfGrisu2(out, value)) return end;
-    return writeGrisu2(out, value);
+    return writeShortest(out, value);
 }
 
 char* writeJsonFloat(char* out, float value) {
@@ -278,8 +160,12 @@ char* writeJsonFloat(char* out, float value) {
     // apart): floatDecimal returns it unchanged, an integer.
     if (std::fabs(value) < kTwo24 && static_cast<float>(static_cast<std::int32_t>(value)) == value)
         return writeInteger(out, static_cast<std::int32_t>(value));
-    if (char* end = writeFloatShortestIfGrisu2(out, value)) return end;
-    return writeJsonDouble(out, floatDecimal(value));
+    // With a fraction, the float's shortest decimal is also the shortest of floatDecimal(value),
+    // the double nearest to it: a shorter decimal that read back as that double would lie
+    // within 2^-53 of the value of it, closer than two decimals of at most 9 digits can be.
+    // Integral floats from 2^24 up print as jsonDouble prints that double (an integer below 2^53).
+    if (std::fabs(value) >= kTwo24) return writeJsonDouble(out, floatDecimal(value));
+    return writeShortest(out, value);
 }
 
 }  // namespace foresight_cli

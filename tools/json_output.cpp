@@ -1,5 +1,6 @@
 #include "json_output.h"
 
+#include "json_number.h"
 #include "text_file.h"
 
 #include <charconv>
@@ -16,8 +17,7 @@ Json jsonDouble(double value) {
     if (std::isfinite(value) && value == std::trunc(value) && std::fabs(value) < 9007199254740992.0) {
         return Json(static_cast<std::int64_t>(value));
     }
-    // nlohmann prints doubles as their shortest round-trip decimal.
-    return Json(value);
+    return Json(value);  // printed by jsonScalarText
 }
 
 double floatDecimal(float value) {
@@ -52,9 +52,15 @@ Json jsonQuaternion(const foresight::Quat& quaternion) {
     return object;
 }
 
-namespace {
+std::string jsonScalarText(const Json& value) {
+    if (value.is_number_float()) {
+        char buffer[kJsonNumberChars];
+        return std::string(buffer, writeJsonDouble(buffer, value.get<double>()));
+    }
+    return value.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
 
-std::string scalarText(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
+namespace {
 
 /// Number of values in `value`, counting stops once above `limit`.
 std::size_t countNodes(const Json& value, std::size_t limit) {
@@ -84,13 +90,13 @@ void writeInline(std::string& out, const Json& value) {
         for (const auto& [key, child] : value.items()) {
             if (!first) out += ", ";
             first = false;
-            out += scalarText(Json(key));
+            out += jsonScalarText(Json(key));
             out += ": ";
             writeInline(out, child);
         }
         out += '}';
     } else {
-        out += scalarText(value);
+        out += jsonScalarText(value);
     }
 }
 
@@ -125,7 +131,7 @@ void writeValue(std::string& out, const Json& value, std::size_t indent) {
             if (!first) out += ",\n";
             first = false;
             out += inner;
-            out += scalarText(Json(key));
+            out += jsonScalarText(Json(key));
             out += ": ";
             writeValue(out, child, indent + 2);
         }

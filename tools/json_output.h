@@ -20,7 +20,8 @@ namespace foresight_cli {
 /// problems are reported in document order.
 using Json = nlohmann::ordered_json;
 
-/// A JSON number holding `value` (must be finite), printed as its shortest round-trip decimal.
+/// A JSON number holding `value` (must be finite), printed as its shortest round-trip decimal
+/// (writeJsonDouble of json_number.h).
 Json jsonDouble(double value);
 /// A JSON number printed as the shortest decimal that round-trips `value` as a float.
 Json jsonFloat(float value);
@@ -33,6 +34,11 @@ Json jsonPosition(const foresight::RVec3& position);
 Json jsonVector(const foresight::Vec3& vector);
 /// {"w", "x", "y", "z"} of a quaternion.
 Json jsonQuaternion(const foresight::Quat& quaternion);
+
+/// The text of a scalar JSON value as the CLI prints it: a number with a fraction through
+/// writeJsonDouble (json_number.h), anything else (strings, integers, booleans, null) as
+/// nlohmann prints it. Never throws on invalid UTF-8 (replaced by U+FFFD).
+std::string jsonScalarText(const Json& value);
 
 /// Serialises `value` for people and tools alike: small objects and arrays (a vector, a
 /// trajectory point) on one line, larger ones one member per line, indented by two spaces.

@@ -28,9 +28,7 @@ void appendInteger(std::string& out, auto value) {
 }  // namespace
 
 void appendJsonDouble(std::string& out, double value) {
-    // jsonDouble: integral values below 2^53 become integers (-0 prints as 0); the rest as
-    // nlohmann::json's own double conversion (Grisu2, with its exponent format) prints them, so
-    // that the bytes stay those formatJson prints (json_number.h).
+    // The text formatJson prints for jsonDouble(value) (json_number.h).
     char buffer[kJsonNumberChars];
     out.append(buffer, static_cast<std::size_t>(writeJsonDouble(buffer, value) - buffer));
 }
@@ -169,7 +167,7 @@ void JsonStreamWriter::value(const Json& value) {
         for (const auto& element : value) this->value(element);
         end();
     } else {
-        scalar(value.dump(-1, ' ', false, Json::error_handler_t::replace));
+        scalar(jsonScalarText(value));
     }
 }
 

@@ -26,7 +26,7 @@
 namespace foresight_cli {
 
 /// Appends `value` as formatJson prints jsonDouble(value) (must be finite): integral values
-/// below 2^53 without a fraction, others as nlohmann::json prints a double.
+/// below 2^53 without a fraction, others as their shortest decimal (json_number.h).
 void appendJsonDouble(std::string& out, double value);
 /// Appends `value` as formatJson prints jsonFloat(value) (must be finite).
 void appendJsonFloat(std::string& out, float value);
