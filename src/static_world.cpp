@@ -546,9 +546,10 @@ bool mayTouch(const SegmentCast& capsule, const OrientedBox& box) {
     return boundsMeet(c, -half, half);
 }
 
-bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
-    const Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
+namespace {
+
+// mayTouch(const SegmentCast&, const Triangle&) of a prepared (valid) capsule.
+bool mayTouchTriangle(const Capsule& c, const Triangle& triangle) {
     const glm::dvec3 p(triangle.a), q(triangle.b), r(triangle.c);
     if (!boundsMeet(c, glm::min(p, glm::min(q, r)), glm::max(p, glm::max(q, r)))) return false;
     const glm::dvec3 n = glm::cross(q - p, r - p);
@@ -556,6 +557,13 @@ bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
     if (!(area2 > 0.0)) return true;
     const double sa = glm::dot(n, c.a - p) / area2, sb = glm::dot(n, c.b - p) / area2;
     return !((sa > c.radius && sb > c.radius) || (sa < -c.radius && sb < -c.radius));
+}
+
+}  // namespace
+
+bool mayTouch(const SegmentCast& capsule, const Triangle& triangle) {
+    const Capsule c = prepareCapsule(capsule);
+    return !c.valid || mayTouchTriangle(c, triangle);
 }
 
 namespace {
@@ -635,18 +643,32 @@ bool firstTouch(const SegmentCast& capsule, const OrientedBox& box, float& fract
     return touchAt(span, fraction);
 }
 
-bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fraction) {
+namespace {
+
+// firstTouch(const SegmentCast&, const Triangle&, float&) of a prepared (valid) capsule.
+bool touchTriangle(const Capsule& c, const Triangle& triangle, float& fraction) {
     fraction = 0.0f;
-    const Capsule c = prepareCapsule(capsule);
-    if (!c.valid) return true;
     const glm::dvec3 p(triangle.a), q(triangle.b), r(triangle.c);
     const glm::dvec3 lo = glm::min(p, glm::min(q, r)) - c.radius, hi = glm::max(p, glm::max(q, r)) + c.radius;
+    // Bounds certainly apart: the slabs below would leave no span (most triangles of a world are
+    // far from a capsule; this spares their divisions). Written so that NaN goes on to the slabs.
+    const glm::dvec3 clo = glm::min(c.a, c.b), chi = glm::max(c.a, c.b);
+    if (clo.x > hi.x || clo.y > hi.y || clo.z > hi.z || lo.x > chi.x || lo.y > chi.y || lo.z > chi.z) return false;
     Span span;
     for (int axis = 0; axis < 3; ++axis) clip(span, c.a[axis], c.b[axis], lo[axis], hi[axis]);
     const glm::dvec3 n = glm::cross(q - p, r - p);
     const double area2 = glm::length(n);
     if (area2 > 0.0) clip(span, glm::dot(n, c.a - p) / area2, glm::dot(n, c.b - p) / area2, -c.radius, c.radius);
     return touchAt(span, fraction);
+}
+
+}  // namespace
+
+bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fraction) {
+    fraction = 0.0f;
+    const Capsule c = prepareCapsule(capsule);
+    if (!c.valid) return true;
+    return touchTriangle(c, triangle, fraction);
 }
 
 namespace {
@@ -927,8 +949,9 @@ bool StaticWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collec
         if (foresight::mayTouch(region, mSpheres[i]) && !collector.add(mSpheres[i], mSphereMaterials[i])) return false;
     for (std::size_t i = 0; i < mBoxes.size(); ++i)
         if (foresight::mayTouch(region, mBoxes[i]) && !collector.add(mBoxes[i], mBoxMaterials[i])) return false;
+    const Capsule c = prepareCapsule(region);  // once for the triangles
     for (std::size_t i = 0; i < mTriangles.size(); ++i)
-        if (foresight::mayTouch(region, mTriangles[i]) && !collector.add(mTriangles[i], mTriangleMaterials[i]))
+        if ((!c.valid || mayTouchTriangle(c, mTriangles[i])) && !collector.add(mTriangles[i], mTriangleMaterials[i]))
             return false;
     return true;
 }
@@ -940,8 +963,9 @@ bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
         if (foresight::mayTouch(capsule, s)) return true;
     for (const OrientedBox& b : mBoxes)
         if (foresight::mayTouch(capsule, b)) return true;
+    const Capsule c = prepareCapsule(capsule);  // once for the triangles
     for (const Triangle& t : mTriangles)
-        if (foresight::mayTouch(capsule, t)) return true;
+        if (!c.valid || mayTouchTriangle(c, t)) return true;
     return false;
 }
 
@@ -957,7 +981,14 @@ bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const 
     for (const Plane& p : mPlanes) offer(p);
     for (const Sphere& s : mSpheres) offer(s);
     for (const OrientedBox& b : mBoxes) offer(b);
-    for (const Triangle& t : mTriangles) offer(t);
+    // The triangles with the capsule prepared once (each would prepare it again).
+    const Capsule c = prepareCapsule(capsule);
+    for (const Triangle& t : mTriangles) {
+        float f = 0.0f;  // an invalid capsule touches at once (as firstTouch(capsule, t, f) says)
+        if (c.valid && !touchTriangle(c, t, f)) continue;
+        touched = true;
+        fraction = std::min(fraction, f);
+    }
     if (!touched) fraction = 0.0f;
     return touched;
 }
