@@ -475,8 +475,14 @@ namespace {
 struct Capsule {
     glm::dvec3 a{0.0}, b{0.0};
     double radius = 0.0;
+    glm::dvec3 lo{0.0}, hi{0.0};  // the segment's bounds grown by the radius (boundsMeet)
     bool valid = false;
 };
+
+void setBounds(Capsule& c) {
+    c.lo = glm::min(c.a, c.b) - c.radius;
+    c.hi = glm::max(c.a, c.b) + c.radius;
+}
 
 Capsule prepareCapsule(const SegmentCast& capsule) {
     Capsule c;
@@ -486,6 +492,7 @@ Capsule prepareCapsule(const SegmentCast& capsule) {
         {std::abs(c.a.x), std::abs(c.a.y), std::abs(c.a.z), std::abs(c.b.x), std::abs(c.b.y), std::abs(c.b.z)});
     c.radius = std::max(0.0, static_cast<double>(capsule.radius)) + 1e-4 + 1e-6 * magnitude;
     c.valid = std::isfinite(magnitude) && std::isfinite(c.radius);
+    setBounds(c);
     return c;
 }
 
@@ -499,6 +506,7 @@ bool intoBoxFrame(Capsule& c, const OrientedBox& box) {
     const glm::dvec3 centre(box.center);
     c.a = inverse * (c.a - centre);
     c.b = inverse * (c.b - centre);
+    setBounds(c);
     return true;
 }
 
@@ -513,10 +521,10 @@ bool planeHeights(const Capsule& c, const Plane& plane, double& sa, double& sb) 
     return true;
 }
 
-// Whether the boxes [lo, hi] and the capsule's bounds overlap.
+// Whether the boxes [lo, hi] and the capsule's bounds may overlap: false only when they are
+// certainly apart (NaN anywhere: true).
 bool boundsMeet(const Capsule& c, const glm::dvec3& lo, const glm::dvec3& hi) {
-    const glm::dvec3 clo = glm::min(c.a, c.b) - c.radius, chi = glm::max(c.a, c.b) + c.radius;
-    return clo.x <= hi.x && clo.y <= hi.y && clo.z <= hi.z && lo.x <= chi.x && lo.y <= chi.y && lo.z <= chi.z;
+    return !(c.lo.x > hi.x || c.lo.y > hi.y || c.lo.z > hi.z || lo.x > c.hi.x || lo.y > c.hi.y || lo.z > c.hi.z);
 }
 
 }  // namespace
@@ -649,11 +657,11 @@ namespace {
 bool touchTriangle(const Capsule& c, const Triangle& triangle, float& fraction) {
     fraction = 0.0f;
     const glm::dvec3 p(triangle.a), q(triangle.b), r(triangle.c);
-    const glm::dvec3 lo = glm::min(p, glm::min(q, r)) - c.radius, hi = glm::max(p, glm::max(q, r)) + c.radius;
-    // Bounds certainly apart: the slabs below would leave no span (most triangles of a world are
-    // far from a capsule; this spares their divisions). Written so that NaN goes on to the slabs.
-    const glm::dvec3 clo = glm::min(c.a, c.b), chi = glm::max(c.a, c.b);
-    if (clo.x > hi.x || clo.y > hi.y || clo.z > hi.z || lo.x > chi.x || lo.y > chi.y || lo.z > chi.z) return false;
+    const glm::dvec3 tlo = glm::min(p, glm::min(q, r)), thi = glm::max(p, glm::max(q, r));
+    // Bounds apart: the slabs below would leave no span (most triangles of a world are far from
+    // a capsule; this spares their divisions).
+    if (!boundsMeet(c, tlo, thi)) return false;
+    const glm::dvec3 lo = tlo - c.radius, hi = thi + c.radius;
     Span span;
     for (int axis = 0; axis < 3; ++axis) clip(span, c.a[axis], c.b[axis], lo[axis], hi[axis]);
     const glm::dvec3 n = glm::cross(q - p, r - p);
