@@ -7,8 +7,9 @@
 ///
 /// (nlohmann's own conversion, Grisu2, is not always the shortest: it prints about one double in
 /// a thousand with more digits, 3.0990509999999998 where the shortest is 3.099051. Both read
-/// back as the same double. The CLI prints every number through this file, so its text does not
-/// depend on which writer printed it.) tests/cli_output_test.cpp compares the digits with
+/// back as the same double. Every number of the CLI's JSON output goes through this file, so its
+/// text does not depend on which writer printed it; the HTML viewer's embedded data block is
+/// nlohmann's own dump, read by a browser.) tests/cli_output_test.cpp compares the digits with
 /// std::to_chars's and the layout with nlohmann's on over a million values.
 
 #include <cstddef>
