@@ -60,7 +60,8 @@
 ///    edges Bullet adds contacts from the neighbouring triangles with tilted normals, which no
 ///    cast against the surface sees). A second line measures that on the level with its floor as
 ///    two triangles: how far Bullet's own ends move with the triangulation alone, and the
-///    prediction against that world.
+///    prediction against that world. With FORESIGHT_BENCH_ENGINE_DIVERGENCE=1 set, each throw
+///    that ends more than 2 cm from Bullet's also prints the step where it first left Bullet's.
 ///
 /// 4. The same targets timed in turns within one benchmark each (timeInTurns: every part once per
 ///    iteration, the order rotated, so that the parts share the load; the counters are the ratios
@@ -1067,8 +1068,9 @@ public:
     BulletLevelDynamics(const BulletLevelDynamics&) = delete;
     BulletLevelDynamics& operator=(const BulletLevelDynamics&) = delete;
 
-    /// The sphere's centre after kEngineSteps steps.
-    RVec3 simulate(const foresight_bench::Throw& t) {
+    /// The sphere's centre after kEngineSteps steps; with `steps`, also its centre and velocity
+    /// after each step.
+    RVec3 simulate(const foresight_bench::Throw& t, std::vector<TrajectoryPoint>* steps = nullptr) {
         btVector3 inertia;
         mSphere.calculateLocalInertia(1, inertia);
         btTransform start;
@@ -1082,7 +1084,16 @@ public:
         body.setLinearVelocity(btVector3(t.velocity.x, t.velocity.y, t.velocity.z));
         body.setActivationState(DISABLE_DEACTIVATION);
         mWorld.addRigidBody(&body);
-        for (int k = 0; k < kEngineSteps; ++k) mWorld.stepSimulation(btScalar(1.0 / kEngineHz), 0);
+        if (steps) steps->clear();
+        for (int k = 0; k < kEngineSteps; ++k) {
+            mWorld.stepSimulation(btScalar(1.0 / kEngineHz), 0);
+            if (!steps) continue;
+            const btVector3 p = body.getWorldTransform().getOrigin(), v = body.getLinearVelocity();
+            TrajectoryPoint point;
+            point.position = RVec3(p.x(), p.y(), p.z());
+            point.velocity = Vec3(v.x(), v.y(), v.z());
+            steps->push_back(point);
+        }
         const btVector3 end = body.getWorldTransform().getOrigin();
         mWorld.removeRigidBody(&body);
         return RVec3(end.x(), end.y(), end.z());
@@ -1134,6 +1145,29 @@ Mesh levelWithOneFloorQuad(const LevelWorlds& w) {
     return mesh;
 }
 
+/// For a throw that ends more than 2 cm from Bullet's: the step where the prediction's centre
+/// first leaves Bullet's by more than 0.1 mm, and the two steps before it (stderr).
+void printDivergence(std::size_t throwIndex, std::span<const TrajectoryPoint> predicted,
+                     std::span<const TrajectoryPoint> bullet) {
+    // predicted[k] is after step k (predicted[0] the start); bullet[k - 1] is after step k.
+    const std::size_t steps = std::min(predicted.size() - 1, bullet.size());
+    std::size_t first = 1;
+    while (first < steps &&
+           glm::length(glm::dvec3(predicted[first].position) - glm::dvec3(bullet[first - 1].position)) <= 1e-4)
+        ++first;
+    std::fprintf(stderr, "throw %zu leaves Bullet at step %zu:\n", throwIndex, first);
+    for (std::size_t k = first > 2 ? first - 2 : 1; k <= first && k <= steps; ++k) {
+        const TrajectoryPoint &a = predicted[k], &b = bullet[k - 1];
+        std::fprintf(stderr,
+                     "  step %3zu predicted (%.5f %.5f %.5f) v (%.4f %.4f %.4f) contact normal (%.3f %.3f %.3f)\n"
+                     "           Bullet    (%.5f %.5f %.5f) v (%.4f %.4f %.4f)\n",
+                     k, static_cast<double>(a.position.x), static_cast<double>(a.position.y),
+                     static_cast<double>(a.position.z), a.velocity.x, a.velocity.y, a.velocity.z, a.normal.x,
+                     a.normal.y, a.normal.z, static_cast<double>(b.position.x), static_cast<double>(b.position.y),
+                     static_cast<double>(b.position.z), b.velocity.x, b.velocity.y, b.velocity.z);
+    }
+}
+
 /// Once: how far the engine-matched predictions end from the stepped Bullet world. Bullet
 /// collides a triangle mesh triangle by triangle: near the floor tiles' internal edges (and
 /// vertices) a penetrating sphere also gets contacts from the neighbouring triangles, with
@@ -1153,14 +1187,19 @@ void compareEngineOnce() {
             fail("an engine-matched demo level prediction failed");
         return result;
     };
+    // FORESIGHT_BENCH_ENGINE_DIVERGENCE=1: where each throw that misses first leaves Bullet.
+    const bool divergence = std::getenv("FORESIGHT_BENCH_ENGINE_DIVERGENCE") != nullptr;
+    std::vector<TrajectoryPoint> bulletSteps;
     std::vector<double> errors;
     std::size_t contactSteps = 0;
     for (const foresight_bench::Throw& t : w.throws) {
         const ProjectileResult result = predict(*w.embree, t);
         for (std::size_t i = 0; i < result.trajectorySize; ++i)
             contactSteps += trajectory[i].event == TrajectoryEvent::Bounce ? 1 : 0;
-        const RVec3 engine = levelDynamics().simulate(t);
+        const RVec3 engine = levelDynamics().simulate(t, divergence ? &bulletSteps : nullptr);
         errors.push_back(glm::length(glm::dvec3(result.position) - glm::dvec3(engine)));
+        if (divergence && errors.back() > 0.02)
+            printDivergence(errors.size() - 1, std::span(trajectory.data(), result.trajectorySize), bulletSteps);
     }
     char line[300];
     std::snprintf(line, sizeof line,
