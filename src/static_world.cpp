@@ -964,7 +964,7 @@ bool StaticWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collec
     return true;
 }
 
-bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
+FORESIGHT_FLATTEN bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     for (const Plane& p : mPlanes)
         if (foresight::mayTouch(capsule, p)) return true;
     for (const Sphere& s : mSpheres)
@@ -977,7 +977,7 @@ bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     return false;
 }
 
-bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+FORESIGHT_FLATTEN bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
     fraction = 1.0f;
     bool touched = false;
     const auto offer = [&](const auto& shape) {
@@ -1027,9 +1027,21 @@ FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit
         castBox(ray, ray.radius, mBoxes[i], best);
         keep(before, mBoxMaterials[i]);
     }
+    // A triangle can be hit only where the swept sphere comes within its radius and the surface
+    // tolerance of it: one whose bounds stay out of the sweep's (grown by far more than the
+    // rounding of the tests) is skipped without its tests.
+    const DVec3 end = ray.origin + ray.direction * ray.length;
+    const double magnitude = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z),
+                                       std::abs(end.x), std::abs(end.y), std::abs(end.z)});
+    const double grow = ray.radius + ray.tolerance + 1e-6 * (ray.radius + ray.length + magnitude);
+    const DVec3 lo = glm::min(ray.origin, end) - grow, hi = glm::max(ray.origin, end) + grow;
     for (std::size_t i = 0; i < mTriangles.size(); ++i) {
+        const Triangle& t = mTriangles[i];
+        const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
+        const DVec3 tlo = glm::min(a, glm::min(b, c)), thi = glm::max(a, glm::max(b, c));
+        if (tlo.x > hi.x || tlo.y > hi.y || tlo.z > hi.z || lo.x > thi.x || lo.y > thi.y || lo.z > thi.z) continue;
         const double before = best.distance;
-        castTriangle(ray, ray.radius, mTriangles[i], best);
+        castTriangle(ray, ray.radius, t, best);
         keep(before, mTriangleMaterials[i]);
     }
     if (material) best.material = *material;
