@@ -203,6 +203,22 @@ void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& b
     if (localBest.distance < best.distance) best.offer(localBest.distance, q * localBest.normal);
 }
 
+// The bounds of the spheres of radius `reach` along the ray's segment, grown by far more than
+// the rounding of the tests: a shape whose bounds stay out of them is out of that reach.
+struct SweepBounds {
+    DVec3 lo, hi;
+    bool apart(const DVec3& low, const DVec3& high) const {
+        return low.x > hi.x || low.y > hi.y || low.z > hi.z || lo.x > high.x || lo.y > high.y || lo.z > high.z;
+    }
+};
+SweepBounds sweepBounds(const Ray& ray, double reach) {
+    const DVec3 end = ray.origin + ray.direction * ray.length;
+    const double magnitude = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z),
+                                       std::abs(end.x), std::abs(end.y), std::abs(end.z)});
+    const double grow = reach + 1e-6 * (reach + ray.length + magnitude);
+    return SweepBounds{glm::min(ray.origin, end) - grow, glm::max(ray.origin, end) + grow};
+}
+
 void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate& best) {
     const DVec3 a = toD(tri.a), b = toD(tri.b), c = toD(tri.c);
     const DVec3 n = glm::normalize(glm::cross(b - a, c - a));
@@ -238,15 +254,8 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
     // The edges (capsules with their corner spheres). An edge whose bounding box stays out of
     // the swept sphere's (grown by far more than the rounding of the tests) cannot be entered:
     // capsuleEntry offers only points within the radius of the edge, along the segment.
-    const DVec3 end = ray.origin + ray.direction * ray.length;
-    const double magnitude = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z),
-                                       std::abs(end.x), std::abs(end.y), std::abs(end.z)});
-    const double grow = radius + 1e-6 * (radius + ray.length + magnitude);
-    const DVec3 lo = glm::min(ray.origin, end) - grow, hi = glm::max(ray.origin, end) + grow;
-    const auto reaches = [&](const DVec3& u, const DVec3& v) {
-        const DVec3 low = glm::min(u, v), high = glm::max(u, v);
-        return low.x <= hi.x && high.x >= lo.x && low.y <= hi.y && high.y >= lo.y && low.z <= hi.z && high.z >= lo.z;
-    };
+    const SweepBounds sweep = sweepBounds(ray, radius);
+    const auto reaches = [&](const DVec3& u, const DVec3& v) { return !sweep.apart(glm::min(u, v), glm::max(u, v)); };
     if (reaches(a, b)) capsuleEntry(ray, a, b, radius, best);
     if (reaches(b, c)) capsuleEntry(ray, b, c, radius, best);
     if (reaches(c, a)) capsuleEntry(ray, c, a, radius, best);
@@ -1030,16 +1039,11 @@ FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit
     // A triangle can be hit only where the swept sphere comes within its radius and the surface
     // tolerance of it: one whose bounds stay out of the sweep's (grown by far more than the
     // rounding of the tests) is skipped without its tests.
-    const DVec3 end = ray.origin + ray.direction * ray.length;
-    const double magnitude = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z),
-                                       std::abs(end.x), std::abs(end.y), std::abs(end.z)});
-    const double grow = ray.radius + ray.tolerance + 1e-6 * (ray.radius + ray.length + magnitude);
-    const DVec3 lo = glm::min(ray.origin, end) - grow, hi = glm::max(ray.origin, end) + grow;
+    const SweepBounds sweep = sweepBounds(ray, ray.radius + ray.tolerance);
     for (std::size_t i = 0; i < mTriangles.size(); ++i) {
         const Triangle& t = mTriangles[i];
         const DVec3 a = toD(t.a), b = toD(t.b), c = toD(t.c);
-        const DVec3 tlo = glm::min(a, glm::min(b, c)), thi = glm::max(a, glm::max(b, c));
-        if (tlo.x > hi.x || tlo.y > hi.y || tlo.z > hi.z || lo.x > thi.x || lo.y > thi.y || lo.z > thi.z) continue;
+        if (sweep.apart(glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)))) continue;
         const double before = best.distance;
         castTriangle(ray, ray.radius, t, best);
         keep(before, mTriangleMaterials[i]);
