@@ -48,13 +48,27 @@ inline double pathMargin(std::span<const DVec3> points) {
 }
 
 // The capsule that holds every cast of a sphere of radius `reach` along the chords between
-// consecutive `points` (at least two).
-inline SegmentCast pathCapsule(std::span<const DVec3> points, double reach) {
+// consecutive `points` (at least two) that stray at most `bend` from the segment from the first
+// to the last.
+inline SegmentCast pathCapsule(std::span<const DVec3> points, double reach, double bend) {
     SegmentCast capsule;
     capsule.origin = toR(points.front());
     capsule.displacement = toF(points.back() - toD(capsule.origin));
-    capsule.radius = static_cast<float>((reach + pathBend(points) + pathMargin(points)) * (1.0 + 1e-5));
+    capsule.radius = static_cast<float>((reach + bend + pathMargin(points)) * (1.0 + 1e-5));
     return capsule;
+}
+
+// The same, with the bend measured point by point (any path).
+inline SegmentCast pathCapsule(std::span<const DVec3> points, double reach) {
+    return pathCapsule(points, reach, pathBend(points));
+}
+
+// How far points of the parabola p0 + v s + g s^2 / 2 for s in [0, duration] stray from the chord
+// between its ends: p(s) lies |g| s (duration - s) / 2 from the chord's point at the same share
+// of the duration, at most |g| duration^2 / 8 (pathBend's answer for those points without its
+// square roots; the points' own rounding is far inside pathMargin).
+inline double parabolaBend(const DVec3& gravity, double duration) {
+    return glm::length(gravity) * duration * duration * 0.125;
 }
 
 // After CollisionWorld::firstTouch answered `fraction` for pathCapsule(points, ...): how many

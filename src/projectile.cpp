@@ -312,16 +312,17 @@ private:
         const std::uint64_t n = mClearSteps;
         std::size_t points = 1;  // size_t: indexes mClearPath (32 bits on wasm32)
         mClearPath[0] = p0;
+        double duration = 0.0;  // of the stretch [Units: s]
         for (std::uint64_t j = 1; j <= n; ++j) {
             // run()'s grid points (the end time last).
             const double t = std::min(static_cast<double>(mGridIndex + j) * mStep, mEndTime);
-            const double s = t - mTime;
-            mClearPath[points++] = p0 + v0 * s + 0.5 * mGravity * s * s;
+            duration = t - mTime;
+            mClearPath[points++] = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
             if (t >= mEndTime) break;
         }
         if (points < 2) return false;
         const std::span<const DVec3> path(mClearPath.data(), points);
-        const SegmentCast capsule = pathCapsule(path, mSettings.radius);
+        const SegmentCast capsule = pathCapsule(path, mSettings.radius, parabolaBend(mGravity, duration));
         float fraction = 1.0f;
         const std::size_t clear = mWorld.firstTouch(capsule, fraction) ? clearChords(path, fraction) : points - 1;
         if (clear + 1 == points) {

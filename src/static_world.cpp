@@ -688,6 +688,41 @@ bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fra
     return touchTriangle(c, triangle, fraction);
 }
 
+CapsuleTester::CapsuleTester(const SegmentCast& capsule) {
+    const Capsule c = prepareCapsule(capsule);
+    mA = c.a;
+    mB = c.b;
+    mRadius = c.radius;
+    mLo = c.lo;
+    mHi = c.hi;
+    mValid = c.valid;
+}
+
+bool CapsuleTester::mayTouch(const Triangle& triangle) const {
+    if (!mValid) return true;
+    Capsule c;
+    c.a = mA;
+    c.b = mB;
+    c.radius = mRadius;
+    c.lo = mLo;
+    c.hi = mHi;
+    c.valid = true;
+    return mayTouchTriangle(c, triangle);
+}
+
+bool CapsuleTester::firstTouch(const Triangle& triangle, float& fraction) const {
+    fraction = 0.0f;
+    if (!mValid) return true;
+    Capsule c;
+    c.a = mA;
+    c.b = mB;
+    c.radius = mRadius;
+    c.lo = mLo;
+    c.hi = mHi;
+    c.valid = true;
+    return touchTriangle(c, triangle, fraction);
+}
+
 namespace {
 
 // The smallest distance between the segments [p0, p1] and [q0, q1] (Ericson, Real-Time
@@ -741,6 +776,8 @@ PlaneRegionTester::PlaneRegionTester(const PlaneRegion& region) {
     mA = c.a;
     mB = c.b;
     mRadius = c.radius;
+    mLo = c.lo;
+    mHi = c.hi;
     mNormal = normal / length;
     mDistance = glm::dot(mNormal, point);
     // The plane of a mesh's floor holds its vertices up to their float rounding (half an ulp,
@@ -803,7 +840,15 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
 }
 
 void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
-    if (mFailed || !mayTouch(mCapsule, triangle)) return;
+    if (mFailed) return;
+    Capsule capsule;  // mayTouch(region.capsule, triangle) with the capsule prepared once
+    capsule.a = mA;
+    capsule.b = mB;
+    capsule.radius = mRadius;
+    capsule.lo = mLo;
+    capsule.hi = mHi;
+    capsule.valid = true;
+    if (!mayTouchTriangle(capsule, triangle)) return;
     const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
     for (const DVec3& v : {a, b, c}) {
         if (std::abs(glm::dot(mNormal, v) - mDistance) > mTolerance) {

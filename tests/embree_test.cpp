@@ -1059,17 +1059,18 @@ TEST(embree_mesh, SegmentsFarBeyondFloatRaysStillGetTheExactAnswer) {
     }
 }
 
-// firstTouch finds its mesh candidates with Embree point queries, piece by piece along the
-// capsule, and tests them as StaticWorld does. StaticWorld tests every shape, and a triangle's
-// test (its bounds grown by the radius) may raise a false alarm that Embree's point query never
-// offers; so Embree's answer is StaticWorld's or later, and its own promise is checked against
-// its casts: no swept sphere inside the capsule cut at the fraction hits anything.
-TEST(embree_mesh, FirstTouchAnswersAsStaticWorldOrLaterAndKeepsItsPromise) {
+// firstTouch walks a tree of the mesh triangles' boxes (Embree's BVH builder) and tests the
+// triangles of the boxes the capsule's slabs enter as StaticWorld tests every triangle; a box it
+// skips holds only triangles that test refuses, or that touch no earlier than a touch already
+// found. So the answer is StaticWorld's, bit for bit; and its promise is checked against the
+// casts: no swept sphere inside the capsule cut at the fraction hits anything. mayTouch skips
+// the same boxes, so it raises no alarm that StaticWorld's does not.
+TEST(embree_mesh, FirstTouchAnswersAsStaticWorldAndKeepsItsPromise) {
     Worlds w;
     buildWorlds(w);
     std::mt19937 rng(414);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    int touched = 0, cut = 0, clear = 0, same = 0;
+    int touched = 0, cut = 0, clear = 0;
     for (int i = 0; i < 20000; ++i) {
         SegmentCast capsule;
         capsule.origin = r3(-7 + 14 * u(rng), -2 + 8 * u(rng), -6 + 12 * u(rng));
@@ -1080,16 +1081,20 @@ TEST(embree_mesh, FirstTouchAnswersAsStaticWorldOrLaterAndKeepsItsPromise) {
         float fraction = -1.0f, expected = -1.0f;
         const bool touches = w.embree.firstTouch(capsule, fraction);
         const bool referenceTouches = w.reference.firstTouch(capsule, expected);
+        ASSERT_EQ(touches, referenceTouches) << i;
+        const bool alarm = w.embree.mayTouch(capsule);
         if (touches) {
-            ASSERT_TRUE(referenceTouches) << i;
-            ASSERT_GE(fraction, expected) << i;
-            EXPECT_TRUE(w.embree.mayTouch(capsule)) << "a touch that mayTouch rules out, " << i;
+            EXPECT_TRUE(alarm) << "a touch that mayTouch rules out, " << i;
+        }
+        if (alarm) {
+            EXPECT_TRUE(w.reference.mayTouch(capsule)) << "an alarm StaticWorld does not raise, " << i;
+        }
+        if (touches) {
+            ASSERT_EQ(fraction, expected) << i;
             ++touched;
             cut += fraction > 0.0f ? 1 : 0;
-            same += fraction == expected ? 1 : 0;
         } else {
             ++clear;
-            same += referenceTouches ? 0 : 1;
             fraction = 1.0f;
         }
         const DVec3 a = d3(capsule.origin), d = DVec3(capsule.displacement) * static_cast<double>(fraction);
@@ -1107,8 +1112,6 @@ TEST(embree_mesh, FirstTouchAnswersAsStaticWorldOrLaterAndKeepsItsPromise) {
     EXPECT_GT(touched, 1000);
     EXPECT_GT(cut, 1000);
     EXPECT_GT(clear, 100);
-    // The false alarms of grown bounds are rare: at least 95 % of the answers are StaticWorld's.
-    EXPECT_GT(same, 19000) << same << " of 20000 answers as StaticWorld's";
 }
 
 // findNear walks Embree's BVH for the mesh's triangles; StaticWorld tests every triangle. Both

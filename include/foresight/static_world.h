@@ -162,6 +162,40 @@ bool firstTouch(const SegmentCast& capsule, const OrientedBox& box, float& fract
 /// See firstTouch(const SegmentCast&, const Plane&, float&).
 bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fraction);
 
+/// The conservative triangle tests above with the capsule prepared once, for worlds that walk
+/// their own tree of candidate triangles (EmbreeWorld's region queries): the answers of
+/// mayTouch(capsule, triangle) and firstTouch(capsule, triangle, fraction) bit for bit, without
+/// preparing the capsule for each triangle. The tests grow the radius by 1e-4 m and 1e-6 of the
+/// segment's largest coordinate magnitude (rounding): a tree may skip a box of triangles when the
+/// segment stays farther than the radius so grown (and its own rounding) from the box, for the
+/// firstTouch test refuses every triangle inside it. No allocation.
+/// @code
+///   const CapsuleTester tester(capsule);
+///   float fraction = 0.0f;
+///   for (const Triangle& t : candidates) if (tester.firstTouch(t, fraction)) { /* ... */ }
+/// @endcode
+class CapsuleTester {
+public:
+    /// Prepares `capsule` in double precision, its radius grown by the tests' rounding margin.
+    explicit CapsuleTester(const SegmentCast& capsule);
+
+    /// False when the capsule is not finite: then every shape may touch it at once (the tests
+    /// answer true, fraction 0).
+    bool valid() const { return mValid; }
+
+    /// mayTouch(capsule, triangle), with the capsule prepared once.
+    bool mayTouch(const Triangle& triangle) const;
+
+    /// firstTouch(capsule, triangle, fraction), with the capsule prepared once.
+    bool firstTouch(const Triangle& triangle, float& fraction) const;
+
+private:
+    glm::dvec3 mA{0.0}, mB{0.0};    // the segment
+    double mRadius = 0.0;           // grown for rounding
+    glm::dvec3 mLo{0.0}, mHi{0.0};  // the segment's bounds grown by the radius
+    bool mValid = false;
+};
+
 /// The test behind CollisionWorld::isOnlyPlane, offered one shape at a time, for worlds that find
 /// their candidate shapes themselves (as ClosestHitCaster is for casts). A shape that reaches
 /// into the region must lie in the plane with the region's material: an infinite plane covers
@@ -206,9 +240,10 @@ private:
     bool sameMaterial(const SurfaceMaterial& material) const;
     void addEdge(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w);
 
-    SegmentCast mCapsule;         // the region, as given
-    glm::dvec3 mA{0.0}, mB{0.0};  // the capsule's segment
-    double mRadius = 0.0;         // the capsule's radius, grown for rounding
+    SegmentCast mCapsule;           // the region, as given
+    glm::dvec3 mA{0.0}, mB{0.0};    // the capsule's segment
+    double mRadius = 0.0;           // the capsule's radius, grown for rounding
+    glm::dvec3 mLo{0.0}, mHi{0.0};  // the segment's bounds grown by that radius
     glm::dvec3 mNormal{0.0, 1.0, 0.0};
     double mDistance = 0.0;   // dot(normal, x) on the plane
     double mTolerance = 0.0;  // how far from the plane a vertex still lies in it [m]

@@ -161,7 +161,7 @@ public:
     /// about six steps of free flight on average, and costs a cast or more when it clears none).
     /// The default, 1, suits a world that tests every shape for every query (StaticWorld) or
     /// finds the candidates of casts and of region queries by the same search; a world whose
-    /// point casts take a much faster path than its region queries (EmbreeWorld's native rays)
+    /// point casts take a much faster path than its region queries (BulletWorld's ray tests)
     /// says so. Only speed depends on it: the answers are the same either way.
     virtual float regionQueryCost(float radius) const {
         (void)radius;

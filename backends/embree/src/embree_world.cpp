@@ -2,6 +2,10 @@
 
 #include <embree3/rtcore.h>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -127,11 +131,20 @@ struct EmbreeWorld::Impl {
     double largest = 0.0;  // largest coordinate magnitude of the mesh [Units: m]
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    // The region queries' tree (firstTouch, mayTouch, gatherShapes): Embree's BVH builder over
+    // the triangles' float bounding boxes, with nodes of our own (RegionNode, RegionLeaf) that a
+    // capsule walks directly. Embree's own tree answers only rays and point queries (spheres),
+    // and a sphere holding a long capsule holds most of a level.
+    RTCBVH regionBvh = nullptr;
+    const void* regionRoot = nullptr;
     bool committed = false;
 
     ~Impl() { release(); }
     void release() {
         confirmations.release();
+        if (regionBvh) rtcReleaseBVH(regionBvh);
+        regionBvh = nullptr;
+        regionRoot = nullptr;
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
         scene = nullptr;
@@ -690,6 +703,107 @@ Status EmbreeWorld::addMesh(std::span<const RVec3> vertices, std::span<const std
     return Status::Ok;
 }
 
+namespace {
+
+// The region tree's nodes, allocated by Embree's builder (owned by Impl::regionBvh). Both start
+// with a count: 0 for an inner node, the number of triangles for a leaf. An inner node keeps its
+// up to four children's boxes by axis (structure of arrays), for one pass over all four.
+constexpr unsigned kRegionWidth = 4;
+struct alignas(16) RegionNode {
+    std::uint32_t leafCount = 0;  // 0: an inner node
+    std::uint32_t childCount = 0;
+    const void* child[kRegionWidth] = {};
+    float lo[3][kRegionWidth] = {};  // lo[axis][child]: each child's box holds its triangles
+    float hi[3][kRegionWidth] = {};
+};
+struct RegionLeaf {
+    std::uint32_t leafCount = 0;  // > 0: how many of `triangles` are used
+    std::uint32_t triangles[1];   // primitive indices (the leaf is allocated with room for all)
+};
+constexpr unsigned kRegionLeafSize = 8;
+constexpr unsigned kRegionDepth = 64;  // Embree's builder refuses deeper trees
+static_assert(std::is_standard_layout_v<RegionNode> && std::is_standard_layout_v<RegionLeaf>);
+
+std::uint32_t regionCount(const void* node) { return *static_cast<const std::uint32_t*>(node); }
+
+void* createRegionNode(RTCThreadLocalAllocator allocator, unsigned childCount, void*) {
+    void* memory = rtcThreadLocalAlloc(allocator, sizeof(RegionNode), alignof(RegionNode));
+    auto* node = ::new (memory) RegionNode;
+    node->childCount = std::min(childCount, kRegionWidth);
+    return node;
+}
+
+void setRegionChildren(void* node, void** children, unsigned childCount, void*) {
+    auto* n = static_cast<RegionNode*>(node);
+    for (unsigned i = 0; i < childCount && i < kRegionWidth; ++i) n->child[i] = children[i];
+}
+
+void setRegionBounds(void* node, const RTCBounds** bounds, unsigned childCount, void*) {
+    auto* n = static_cast<RegionNode*>(node);
+    for (unsigned i = 0; i < childCount && i < kRegionWidth; ++i) {
+        n->lo[0][i] = bounds[i]->lower_x;
+        n->lo[1][i] = bounds[i]->lower_y;
+        n->lo[2][i] = bounds[i]->lower_z;
+        n->hi[0][i] = bounds[i]->upper_x;
+        n->hi[1][i] = bounds[i]->upper_y;
+        n->hi[2][i] = bounds[i]->upper_z;
+    }
+}
+
+void* createRegionLeaf(RTCThreadLocalAllocator allocator, const RTCBuildPrimitive* primitives, std::size_t count,
+                       void*) {
+    const std::size_t bytes = sizeof(RegionLeaf) + (count > 0 ? count - 1 : 0) * sizeof(std::uint32_t);
+    auto* leaf = ::new (rtcThreadLocalAlloc(allocator, bytes, alignof(RegionLeaf))) RegionLeaf;
+    leaf->leafCount = static_cast<std::uint32_t>(count);
+    for (std::size_t i = 0; i < count; ++i) leaf->triangles[i] = primitives[i].primID;
+    return leaf;
+}
+
+// The float box holding a triangle's vertices (rounded outwards where they are not floats).
+RTCBuildPrimitive regionPrimitive(const Triangle& t, unsigned index) {
+    const Box b = triangleBox(t);
+    const auto down = [](double x) {
+        float f = static_cast<float>(x);
+        return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    };
+    RTCBuildPrimitive p;
+    p.lower_x = down(b.lo.x);
+    p.lower_y = down(b.lo.y);
+    p.lower_z = down(b.lo.z);
+    p.upper_x = floatUp(b.hi.x);
+    p.upper_y = floatUp(b.hi.y);
+    p.upper_z = floatUp(b.hi.z);
+    p.geomID = 0;
+    p.primID = index;
+    return p;
+}
+
+// Builds the region tree over `impl`'s triangles; false when Embree failed.
+bool buildRegionTree(RTCDevice device, const std::vector<Triangle>& triangles, RTCBVH& bvh, const void*& root) {
+    std::vector<RTCBuildPrimitive> primitives(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        primitives[t] = regionPrimitive(triangles[t], static_cast<unsigned>(t));
+    bvh = rtcNewBVH(device);
+    if (!bvh) return false;
+    RTCBuildArguments arguments = rtcDefaultBuildArguments();
+    arguments.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+    arguments.maxBranchingFactor = kRegionWidth;
+    arguments.maxDepth = kRegionDepth;
+    arguments.maxLeafSize = kRegionLeafSize;
+    arguments.bvh = bvh;
+    arguments.primitives = primitives.data();
+    arguments.primitiveCount = primitives.size();
+    arguments.primitiveArrayCapacity = primitives.size();
+    arguments.createNode = createRegionNode;
+    arguments.setNodeChildren = setRegionChildren;
+    arguments.setNodeBounds = setRegionBounds;
+    arguments.createLeaf = createRegionLeaf;
+    root = rtcBuildBVH(&arguments);
+    return root != nullptr && rtcGetDeviceError(device) == RTC_ERROR_NONE;
+}
+
+}  // namespace
+
 bool EmbreeWorld::commit(std::string* error) {
     if (!mImpl) mImpl = std::make_unique<Impl>();
     Impl& impl = *mImpl;
@@ -731,6 +845,12 @@ bool EmbreeWorld::commit(std::string* error) {
     rtcReleaseGeometry(geometry);
     rtcCommitScene(impl.scene);
     if (rtcGetDeviceError(impl.device) != RTC_ERROR_NONE) return fail("building the BVH failed");
+    if (!buildRegionTree(impl.device, impl.triangles, impl.regionBvh, impl.regionRoot)) {
+        // Not fatal: the region queries then test every triangle, as before commit().
+        if (impl.regionBvh) rtcReleaseBVH(impl.regionBvh);
+        impl.regionBvh = nullptr;
+        impl.regionRoot = nullptr;
+    }
     if (!impl.confirmations.allocate(count)) return fail("cannot allocate the confirmation records");
     for (std::size_t t = 0; t < count; ++t) {
         const Triangle& triangle = impl.triangles[t];
@@ -862,37 +982,6 @@ bool EmbreeWorld::castSlow(const SegmentCast& cast, CastHit& hit) const {
 
 namespace {
 
-struct TouchQuery {
-    const Triangle* triangles = nullptr;
-    SegmentCast capsule;
-    bool touched = false;
-};
-
-bool touchCallback(RTCPointQueryFunctionArguments* args) {
-    auto* q = static_cast<TouchQuery*>(args->userPtr);
-    if (q->touched || !mayTouch(q->capsule, q->triangles[args->primID])) return false;
-    q->touched = true;
-    args->query->radius = 0.0f;  // found one: the traversal may stop
-    return true;
-}
-
-}  // namespace
-
-namespace {
-
-struct PlaneQuery {
-    const Triangle* triangles = nullptr;
-    PlaneRegionTester* tester = nullptr;
-};
-
-bool planeCallback(RTCPointQueryFunctionArguments* args) {
-    auto* q = static_cast<PlaneQuery*>(args->userPtr);
-    q->tester->test(q->triangles[args->primID]);
-    if (!q->tester->failed()) return false;
-    args->query->radius = 0.0f;  // ruled out: the traversal may stop
-    return true;
-}
-
 // A point query holding the capsule: a sphere around its middle, grown by the centre's rounding
 // to float and a margin. False when the capsule lies beyond Embree's float range.
 bool capsuleQuery(const SegmentCast& capsule, RTCPointQuery& query) {
@@ -914,35 +1003,6 @@ bool capsuleQuery(const SegmentCast& capsule, RTCPointQuery& query) {
 }
 
 }  // namespace
-
-bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
-    if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
-    PlaneRegionTester tester(region);
-    const StaticWorld& p = mPrimitives;
-    for (std::size_t i = 0; i < p.planes().size() && !tester.failed(); ++i)
-        tester.test(p.planes()[i], p.planeMaterials()[i]);
-    for (std::size_t i = 0; i < p.spheres().size() && !tester.failed(); ++i)
-        tester.test(p.spheres()[i], p.sphereMaterials()[i]);
-    for (std::size_t i = 0; i < p.boxes().size() && !tester.failed(); ++i)
-        tester.test(p.boxes()[i], p.boxMaterials()[i]);
-    for (std::size_t i = 0; i < p.triangles().size() && !tester.failed(); ++i)
-        tester.test(p.triangles()[i], p.triangleMaterials()[i]);
-    const Impl* impl = mImpl.get();
-    if (tester.failed() || !impl || impl->triangles.empty()) return tester.result();
-    if (!impl->committed || !impl->scene) {
-        for (std::size_t i = 0; i < impl->triangles.size() && !tester.failed(); ++i) tester.test(impl->triangles[i]);
-        return tester.result();
-    }
-    RTCPointQuery query;
-    if (!capsuleQuery(region.capsule, query)) return false;
-    PlaneQuery q;
-    q.triangles = impl->triangles.data();
-    q.tester = &tester;
-    RTCPointQueryContext context;
-    rtcInitPointQueryContext(&context);
-    rtcPointQuery(impl->scene, &query, &context, planeCallback, &q);
-    return tester.result();
-}
 
 namespace {
 
@@ -987,118 +1047,180 @@ bool EmbreeWorld::findNear(const NearQuery& query, NearCollector& collector) con
     return true;
 }
 
-bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
-    if (mPrimitives.mayTouch(capsule)) return true;
-    const Impl* impl = mImpl.get();
-    if (!impl || impl->triangles.empty()) return false;
-    if (!impl->committed || !impl->scene) {
-        for (const Triangle& t : impl->triangles)
-            if (foresight::mayTouch(capsule, t)) return true;
-        return false;
-    }
-    RTCPointQuery query;
-    if (!capsuleQuery(capsule, query)) return true;  // beyond Embree's float range: "maybe"
-    TouchQuery q;
-    q.triangles = impl->triangles.data();
-    q.capsule = capsule;
-    RTCPointQueryContext context;
-    rtcInitPointQueryContext(&context);
-    rtcPointQuery(impl->scene, &query, &context, touchCallback, &q);
-    return q.touched;
-}
-
 namespace {
 
-struct FirstTouchQuery {
-    const Triangle* triangles = nullptr;
-    SegmentCast capsule;
-    bool touched = false;
-    float fraction = 1.0f;
+// A capsule prepared for the region tree's boxes, in float: a box is entered when the segment
+// meets it grown by the capsule's radius and a margin that holds every rounding of this float
+// test (1e-5 of the coordinates' magnitude, far above float's 6e-8; a margin only costs speed).
+// The triangles of the boxes entered then go through CapsuleTester's exact double tests.
+struct RegionCapsule {
+    float origin[3] = {};
+    float inverse[3] = {};  // 1 / displacement per axis, its magnitude at most 1e30
+    float grow = 0.0f;      // the radius and the margin [Units: m]
+    bool valid = false;
 };
 
-bool firstTouchCallback(RTCPointQueryFunctionArguments* args) {
-    auto* q = static_cast<FirstTouchQuery*>(args->userPtr);
-    float f = 1.0f;
-    if (!firstTouch(q->capsule, q->triangles[args->primID], f)) return false;
-    q->touched = true;
-    q->fraction = std::min(q->fraction, f);
-    if (q->fraction > 0.0f) return false;
-    args->query->radius = 0.0f;  // touching at the start: nothing can come earlier
+RegionCapsule regionCapsule(const SegmentCast& capsule) {
+    RegionCapsule c;
+    const DVec3 a = toD(capsule.origin), d(capsule.displacement);
+    const double magnitude = std::max(
+        {std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(a.x + d.x), std::abs(a.y + d.y), std::abs(a.z + d.z)});
+    const double radius = std::max(0.0, static_cast<double>(capsule.radius));
+    const double grow = radius + 1e-4 + 1e-5 * (1.0 + magnitude + radius);
+    if (!(magnitude < 1e30) || !(grow < 1e30)) return c;  // not finite, or beyond float: walk everything
+    for (int axis = 0; axis < 3; ++axis) {
+        c.origin[axis] = static_cast<float>(a[axis]);
+        // A displacement of zero (or below 1e-30) as 1e-30: the slabs then say whether the
+        // origin lies inside, without infinities or NaN.
+        const double component = std::abs(d[axis]) < 1e-30 ? std::copysign(1e-30, d[axis]) : d[axis];
+        c.inverse[axis] = static_cast<float>(1.0 / component);
+    }
+    c.grow = floatUp(grow);
+    c.valid = true;
+    return c;
+}
+
+// Which of `node`'s children the capsule enters (bit k for child k), and from which fraction
+// of the segment at the earliest (1e-5 earlier than the float test says: its rounding).
+unsigned enterChildren(const RegionNode& node, const RegionCapsule& c, float (&entry)[kRegionWidth]) {
+#if defined(__SSE2__)
+    // The four children at once (the same operations as the loop below, lane by lane).
+    static_assert(kRegionWidth == 4);
+    const __m128 grow = _mm_set1_ps(c.grow);
+    __m128 first = _mm_setzero_ps(), last = _mm_set1_ps(1.0f);
+    for (int axis = 0; axis < 3; ++axis) {
+        const __m128 o = _mm_set1_ps(c.origin[axis]), inv = _mm_set1_ps(c.inverse[axis]);
+        const __m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_sub_ps(_mm_loadu_ps(node.lo[axis]), grow), o), inv);
+        const __m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(_mm_loadu_ps(node.hi[axis]), grow), o), inv);
+        first = _mm_max_ps(first, _mm_min_ps(t0, t1));
+        last = _mm_min_ps(last, _mm_max_ps(t0, t1));
+    }
+    const __m128 margin = _mm_set1_ps(1e-5f);
+    _mm_storeu_ps(entry, _mm_max_ps(_mm_setzero_ps(), _mm_sub_ps(first, margin)));
+    const unsigned inside = static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(first, _mm_add_ps(last, margin))));
+    return inside & ((1u << node.childCount) - 1u);
+#else
+    float first[kRegionWidth], last[kRegionWidth];
+    for (unsigned k = 0; k < kRegionWidth; ++k) {
+        first[k] = 0.0f;
+        last[k] = 1.0f;
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        const float o = c.origin[axis], inv = c.inverse[axis], g = c.grow;
+        for (unsigned k = 0; k < kRegionWidth; ++k) {
+            const float t0 = (node.lo[axis][k] - g - o) * inv, t1 = (node.hi[axis][k] + g - o) * inv;
+            first[k] = std::max(first[k], std::min(t0, t1));
+            last[k] = std::min(last[k], std::max(t0, t1));
+        }
+    }
+    unsigned mask = 0;
+    for (unsigned k = 0; k < kRegionWidth; ++k) {
+        entry[k] = std::max(0.0f, first[k] - 1e-5f);
+        if (k < node.childCount && first[k] <= last[k] + 1e-5f) mask |= 1u << k;
+    }
+    return mask;
+#endif
+}
+
+// A walk of the region tree, nearer children first; `leaf(leaf)` returns true to stop the walk,
+// `skip(entry)` whether a node entered at `entry` may be skipped. An invalid capsule enters
+// every box. False when the walk ran out of stack (a tree deeper than the builder was allowed to
+// make it): the caller answers "maybe".
+template <class Skip, class Leaf>
+bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Leaf&& leaf) {
+    struct Entry {
+        const void* node;
+        float entry;
+    };
+    std::array<Entry, (kRegionWidth - 1) * kRegionDepth + 4> stack;
+    std::size_t size = 0;
+    stack[size++] = Entry{root, 0.0f};
+    while (size > 0) {
+        const Entry e = stack[--size];
+        if (skip(e.entry)) continue;
+        if (regionCount(e.node) > 0) {
+            if (leaf(*static_cast<const RegionLeaf*>(e.node))) return true;
+            continue;
+        }
+        const auto& node = *static_cast<const RegionNode*>(e.node);
+        float entry[kRegionWidth];
+        const unsigned mask = capsule.valid ? enterChildren(node, capsule, entry) : (1u << node.childCount) - 1u;
+        if (!capsule.valid) std::fill(std::begin(entry), std::end(entry), 0.0f);
+        if (size + kRegionWidth > stack.size()) return false;
+        // The entered children, the farthest pushed first (insertion by entry): the nearest on top.
+        const std::size_t base = size;
+        for (unsigned k = 0; k < kRegionWidth; ++k) {
+            if (!(mask & (1u << k))) continue;
+            std::size_t at = size++;
+            while (at > base && stack[at - 1].entry < entry[k]) {
+                stack[at] = stack[at - 1];
+                --at;
+            }
+            stack[at] = Entry{node.child[k], entry[k]};
+        }
+    }
     return true;
 }
 
 }  // namespace
 
-bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
-    FirstTouchQuery q;
-    q.touched = mPrimitives.firstTouch(capsule, q.fraction);
-    if (!q.touched) q.fraction = 1.0f;
+bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
+    if (mPrimitives.mayTouch(capsule)) return true;
     const Impl* impl = mImpl.get();
-    if (impl && !impl->triangles.empty() && q.fraction > 0.0f) {
-        q.triangles = impl->triangles.data();
-        q.capsule = capsule;
-        RTCPointQuery query;
-        if (!impl->committed || !impl->scene) {
-            for (const Triangle& t : impl->triangles) {
-                float f = 1.0f;
-                if (!foresight::firstTouch(capsule, t, f)) continue;
-                q.touched = true;
-                q.fraction = std::min(q.fraction, f);
-            }
-        } else {
-            // Piece by piece from the start (each point query's sphere holds one piece): a shape
-            // whose first touch lies in a piece is within that piece's sphere, so the pieces
-            // that start after the earliest touch found so far cannot hold an earlier one.
-            const double length = glm::length(DVec3(capsule.displacement));
-            const double radius = std::max(1e-3, 2.0 * static_cast<double>(capsule.radius));
-            const int pieces = static_cast<int>(std::clamp(std::ceil(length / radius), 1.0, 8.0));
-            for (int i = 0; i<pieces&& static_cast<double>(q.fraction)> static_cast<double>(i) / pieces; ++i) {
-                SegmentCast piece = capsule;
-                piece.origin = RVec3(toD(capsule.origin) + DVec3(capsule.displacement) * (double(i) / pieces));
-                piece.displacement = capsule.displacement * (1.0f / static_cast<float>(pieces));
-                if (!capsuleQuery(piece, query)) {
-                    q.touched = true;  // beyond Embree's float range: "maybe, at once"
-                    q.fraction = 0.0f;
-                    break;
-                }
-                RTCPointQueryContext context;
-                rtcInitPointQueryContext(&context);
-                rtcPointQuery(impl->scene, &query, &context, firstTouchCallback, &q);
-            }
+    if (!impl || impl->triangles.empty()) return false;
+    const CapsuleTester tester(capsule);
+    if (!tester.valid()) return true;
+    const Triangle* triangles = impl->triangles.data();
+    if (!impl->committed || !impl->regionRoot) {
+        for (const Triangle& t : impl->triangles)
+            if (tester.mayTouch(t)) return true;
+        return false;
+    }
+    bool touched = false;
+    const bool walked = walkRegion(
+        impl->regionRoot, regionCapsule(capsule), [](float) { return false; },
+        [&](const RegionLeaf& leaf) {
+            for (std::uint32_t i = 0; i < leaf.leafCount; ++i)
+                if (tester.mayTouch(triangles[leaf.triangles[i]])) return touched = true;
+            return false;
+        });
+    return touched || !walked;
+}
+
+bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+    bool touched = mPrimitives.firstTouch(capsule, fraction);
+    const Impl* impl = mImpl.get();
+    if (impl && !impl->triangles.empty() && !(touched && fraction == 0.0f)) {
+        const CapsuleTester tester(capsule);
+        const Triangle* triangles = impl->triangles.data();
+        const auto offer = [&](const Triangle& t) {
+            float f = 0.0f;
+            if (!tester.firstTouch(t, f)) return false;
+            fraction = touched ? std::min(fraction, f) : f;
+            touched = true;
+            return fraction == 0.0f;  // touching at the start: nothing can come earlier
+        };
+        if (!tester.valid()) {
+            touched = true;
+            fraction = 0.0f;
+        } else if (!impl->committed || !impl->regionRoot) {
+            for (const Triangle& t : impl->triangles)
+                if (offer(t)) break;
+        } else if (!walkRegion(
+                       impl->regionRoot, regionCapsule(capsule),
+                       [&](float entry) { return touched && entry >= fraction; },
+                       [&](const RegionLeaf& leaf) {
+                           for (std::uint32_t i = 0; i < leaf.leafCount; ++i)
+                               if (offer(triangles[leaf.triangles[i]])) return true;
+                           return false;
+                       })) {
+            touched = true;  // the walk ran out of stack: "maybe, at once"
+            fraction = 0.0f;
         }
     }
-    fraction = q.touched ? q.fraction : 0.0f;
-    return q.touched;
+    if (!touched) fraction = 0.0f;
+    return touched;
 }
-
-namespace {
-
-struct GatherQuery {
-    const Triangle* triangles = nullptr;
-    Box bounds;                       // the region's bounding box, grown by mayTouch's margins
-    std::array<unsigned, 512> found;  // the first count are used (left uninitialised: per query)
-    std::size_t count = 0;
-    bool overflowed = false;
-};
-
-bool gatherCallback(RTCPointQueryFunctionArguments* args) {
-    auto* q = static_cast<GatherQuery*>(args->userPtr);
-    if (q->overflowed) return false;
-    // Every triangle whose bounding box meets the region's: all that mayTouch(region, triangle)
-    // accepts, and a few more (they cost the local queries a box test each).
-    const Box b = triangleBox(q->triangles[args->primID]);
-    for (int axis = 0; axis < 3; ++axis)
-        if (b.lo[axis] > q->bounds.hi[axis] || b.hi[axis] < q->bounds.lo[axis]) return false;
-    if (q->count == q->found.size()) {
-        q->overflowed = true;
-        args->query->radius = 0.0f;  // no room: the traversal may stop
-        return true;
-    }
-    q->found[q->count++] = args->primID;
-    return false;
-}
-
-}  // namespace
 
 bool EmbreeWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collector) const {
     // castSlow tests the primitives first, then the mesh triangles by index.
@@ -1106,32 +1228,65 @@ bool EmbreeWorld::gatherShapes(const SegmentCast& region, ShapeCollector& collec
     const Impl* impl = mImpl.get();
     if (!impl || impl->triangles.empty()) return true;
     const SurfaceMaterial none;
-    if (!impl->committed || !impl->scene) {
+    const CapsuleTester tester(region);
+    if (!impl->committed || !impl->regionRoot || !tester.valid()) {
         for (const Triangle& t : impl->triangles)
-            if (foresight::mayTouch(region, t) && !collector.add(t, none)) return false;
+            if (tester.mayTouch(t) && !collector.add(t, none)) return false;
         return true;
     }
-    RTCPointQuery query;
-    if (!capsuleQuery(region, query)) return false;  // beyond Embree's float range
-    GatherQuery q;
-    q.triangles = impl->triangles.data();
-    {
-        const DVec3 a = toD(region.origin), b = a + DVec3(region.displacement);
-        const double magnitude =
-            std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
-        // prepareCapsule's growth (src/static_world.cpp), and a hair more for this box's rounding.
-        const double grow = std::max(0.0, static_cast<double>(region.radius)) + 1e-4 + 2e-6 * magnitude;
-        q.bounds.lo = glm::min(a, b) - grow;
-        q.bounds.hi = glm::max(a, b) + grow;
-    }
-    RTCPointQueryContext context;
-    rtcInitPointQueryContext(&context);
-    rtcPointQuery(impl->scene, &query, &context, gatherCallback, &q);
-    if (q.overflowed) return false;
-    std::sort(q.found.begin(), q.found.begin() + static_cast<std::ptrdiff_t>(q.count));
-    for (std::size_t k = 0; k < q.count; ++k)
-        if (!collector.add(impl->triangles[q.found[k]], none)) return false;
+    // Every triangle in a box the capsule's slabs enter, through mayTouch (as the loop above):
+    // all that mayTouch(region, triangle) accepts except those certainly out of reach.
+    std::array<unsigned, 512> found;  // the first count are used (left uninitialised: per query)
+    std::size_t count = 0;
+    bool overflowed = false;
+    const Triangle* triangles = impl->triangles.data();
+    const bool walked = walkRegion(
+        impl->regionRoot, regionCapsule(region), [](float) { return false; },
+        [&](const RegionLeaf& leaf) {
+            for (std::uint32_t i = 0; i < leaf.leafCount; ++i) {
+                const unsigned t = leaf.triangles[i];
+                if (!tester.mayTouch(triangles[t])) continue;
+                if (count == found.size()) return overflowed = true;
+                found[count++] = t;
+            }
+            return false;
+        });
+    if (overflowed || !walked) return false;
+    std::sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(count));
+    for (std::size_t k = 0; k < count; ++k)
+        if (!collector.add(triangles[found[k]], none)) return false;
     return true;
+}
+
+bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
+    if (mSettings.surfaceTolerance != StaticWorldSettings{}.surfaceTolerance) return false;
+    PlaneRegionTester tester(region);
+    const StaticWorld& p = mPrimitives;
+    for (std::size_t i = 0; i < p.planes().size() && !tester.failed(); ++i)
+        tester.test(p.planes()[i], p.planeMaterials()[i]);
+    for (std::size_t i = 0; i < p.spheres().size() && !tester.failed(); ++i)
+        tester.test(p.spheres()[i], p.sphereMaterials()[i]);
+    for (std::size_t i = 0; i < p.boxes().size() && !tester.failed(); ++i)
+        tester.test(p.boxes()[i], p.boxMaterials()[i]);
+    for (std::size_t i = 0; i < p.triangles().size() && !tester.failed(); ++i)
+        tester.test(p.triangles()[i], p.triangleMaterials()[i]);
+    const Impl* impl = mImpl.get();
+    if (tester.failed() || !impl || impl->triangles.empty()) return tester.result();
+    if (!impl->committed || !impl->regionRoot) {
+        for (std::size_t i = 0; i < impl->triangles.size() && !tester.failed(); ++i) tester.test(impl->triangles[i]);
+        return tester.result();
+    }
+    // The triangles of the boxes the capsule enters: those of the others are certainly out of
+    // its reach (they neither reach into the region nor have an edge crossing it).
+    const Triangle* triangles = impl->triangles.data();
+    const bool walked = walkRegion(
+        impl->regionRoot, regionCapsule(region.capsule), [](float) { return false; },
+        [&](const RegionLeaf& leaf) {
+            for (std::uint32_t i = 0; i < leaf.leafCount && !tester.failed(); ++i)
+                tester.test(triangles[leaf.triangles[i]]);
+            return tester.failed();
+        });
+    return walked && tester.result();
 }
 
 FORESIGHT_NAMESPACE_END

@@ -159,8 +159,10 @@ public:
     /// glTF's folder (no absolute or `..` paths leading out of it), kMaxGltfBytes in all.
     MeshLoadResult loadGltf(const std::filesystem::path& path);
 
-    /// Builds the BVH over the mesh triangles. Returns false (and casts fall back to brute
-    /// force) if Embree failed; `error` then says why.
+    /// Builds the BVH over the mesh triangles, and the region queries' tree (Embree's BVH builder
+    /// over the triangles' boxes). Returns false (and casts fall back to brute force) if Embree
+    /// failed; `error` then says why. A region tree Embree cannot build is not an error: the
+    /// region queries then test every triangle.
     bool commit(std::string* error = nullptr);
 
     /// Number of mesh triangles (in the BVH).
@@ -186,28 +188,29 @@ public:
     /// @return the number of hits among the first n casts.
     std::size_t castSegments(std::span<const SegmentCast> casts, std::span<CastHit> hits,
                              std::span<std::uint8_t> found) const;
-    /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
-    /// capsule) whose candidates go through mayTouch(capsule, triangle); it stops at the first.
+    /// The primitives as StaticWorld answers, then a walk of the region tree (built by commit():
+    /// Embree's BVH builder over the mesh triangles' boxes, four children per node) into the
+    /// boxes the capsule enters, whose triangles go through CapsuleTester::mayTouch; it stops at
+    /// the first. No alarm that StaticWorld's mayTouch would not raise.
     bool mayTouch(const SegmentCast& capsule) const override;
-    /// The primitives as StaticWorld answers, then one Embree point query (a sphere holding the
-    /// capsule) whose candidates go through firstTouch(capsule, triangle, fraction): the earliest.
+    /// The primitives as StaticWorld answers, then a walk of the region tree, nearest boxes
+    /// first, whose triangles go through CapsuleTester::firstTouch; boxes entered no earlier than
+    /// the earliest touch found are skipped. The answer is StaticWorld's for the same shapes, bit
+    /// for bit. regionQueryCost keeps its default (1): on the demo level the exact method asks
+    /// it rather than casting every chord, and is faster for it (docs/results.md, Speed).
     bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
-    /// The primitives and the mesh triangles that one Embree point query (a sphere holding the
-    /// capsule) finds, through PlaneRegionTester; it stops at the first that rules the region out.
+    /// The primitives, then the mesh triangles of the region tree's boxes that the region's
+    /// capsule enters, through PlaneRegionTester; it stops at the first that rules the region out.
     bool isOnlyPlane(const PlaneRegion& region) const override;
     /// The primitives as StaticWorld answers, then the mesh triangles that one Embree point query
     /// (the query's sphere, grown by the float rounding of its centre) finds, through NearTester.
     /// False beyond Embree's float range (then nothing of the mesh is reported).
     bool findNear(const NearQuery& query, NearCollector& collector) const override;
-    /// The primitives as StaticWorld gathers them, then the mesh triangles that one Embree point
-    /// query (a sphere holding the region) finds and whose bounding boxes meet the region's, in
-    /// the order added: the order castSegment breaks ties in. False when more than 512 mesh
-    /// triangles qualify, beyond Embree's float range, or when the collector is full.
+    /// The primitives as StaticWorld gathers them, then the mesh triangles of the region tree's
+    /// boxes that the region enters and that CapsuleTester::mayTouch accepts, in the order added:
+    /// the order castSegment breaks ties in. False when more than 512 mesh triangles qualify or
+    /// when the collector is full.
     bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const override;
-    /// 5 for point casts (radius 0: Embree's native ray traversal, about five times cheaper
-    /// than a firstTouch query on a level of 3 000 triangles), 1 for swept spheres (a sphere
-    /// cast walks the tree with point queries, as the region queries do).
-    float regionQueryCost(float radius) const override { return radius > 0.0f ? 1.0f : 5.0f; }
 
 private:
     /// castSegment without its radius-0 fast path (swept spheres, casts in doubt, before commit()).
