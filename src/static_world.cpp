@@ -698,29 +698,30 @@ CapsuleTester::CapsuleTester(const SegmentCast& capsule) {
     mValid = c.valid;
 }
 
-bool CapsuleTester::mayTouch(const Triangle& triangle) const {
-    if (!mValid) return true;
+namespace {
+
+// A capsule that prepareCapsule made (valid), rebuilt from the parts a tester kept.
+Capsule keptCapsule(const glm::dvec3& a, const glm::dvec3& b, double radius, const glm::dvec3& lo,
+                    const glm::dvec3& hi) {
     Capsule c;
-    c.a = mA;
-    c.b = mB;
-    c.radius = mRadius;
-    c.lo = mLo;
-    c.hi = mHi;
+    c.a = a;
+    c.b = b;
+    c.radius = radius;
+    c.lo = lo;
+    c.hi = hi;
     c.valid = true;
-    return mayTouchTriangle(c, triangle);
+    return c;
+}
+
+}  // namespace
+
+bool CapsuleTester::mayTouch(const Triangle& triangle) const {
+    return !mValid || mayTouchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle);
 }
 
 bool CapsuleTester::firstTouch(const Triangle& triangle, float& fraction) const {
     fraction = 0.0f;
-    if (!mValid) return true;
-    Capsule c;
-    c.a = mA;
-    c.b = mB;
-    c.radius = mRadius;
-    c.lo = mLo;
-    c.hi = mHi;
-    c.valid = true;
-    return touchTriangle(c, triangle, fraction);
+    return !mValid || touchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle, fraction);
 }
 
 namespace {
@@ -840,15 +841,8 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
 }
 
 void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
-    if (mFailed) return;
-    Capsule capsule;  // mayTouch(region.capsule, triangle) with the capsule prepared once
-    capsule.a = mA;
-    capsule.b = mB;
-    capsule.radius = mRadius;
-    capsule.lo = mLo;
-    capsule.hi = mHi;
-    capsule.valid = true;
-    if (!mayTouchTriangle(capsule, triangle)) return;
+    // mayTouch(region.capsule, triangle) with the capsule prepared once (in the constructor).
+    if (mFailed || !mayTouchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle)) return;
     const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
     for (const DVec3& v : {a, b, c}) {
         if (std::abs(glm::dot(mNormal, v) - mDistance) > mTolerance) {
