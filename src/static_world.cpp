@@ -875,7 +875,12 @@ void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& ma
 // Keeps edge uv when it comes within the region (it may cross the cross-section), with the side
 // of it that w (the triangle's third vertex) lies on.
 void PlaneRegionTester::addEdge(const DVec3& u, const DVec3& v, const DVec3& w) {
-    if (mFailed || segmentDistance(u, v, mA, mB) > mRadius) return;
+    if (mFailed) return;
+    // An edge whose bounds are apart from the capsule's (the segment's, grown by the radius) is
+    // farther than the radius: spared the distance's divisions and square root.
+    const DVec3 lo = glm::min(u, v), hi = glm::max(u, v);
+    if (lo.x > mHi.x || lo.y > mHi.y || lo.z > mHi.z || hi.x < mLo.x || hi.y < mLo.y || hi.z < mLo.z) return;
+    if (segmentDistance(u, v, mA, mB) > mRadius) return;
     if (mEdgeCount == kMaxEdges) {
         mFailed = true;
         return;
