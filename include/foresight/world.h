@@ -6,6 +6,7 @@
 
 #include <foresight/status.h>
 
+#include <limits>
 #include <type_traits>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -224,6 +225,14 @@ public:
     }
 
     bool castSegment(const SegmentCast& cast, CastHit& hit) const override { return mFunction(mContext, cast, hit); }
+
+    /// Infinite: the function answers casts only, and the region queries' defaults ("maybe",
+    /// at once) clear nothing, so asking them is never worth a cast (ProjectileMethod::Exact
+    /// then casts every step's chord without trying them).
+    float regionQueryCost(float radius) const override {
+        (void)radius;
+        return std::numeric_limits<float>::infinity();
+    }
 
 private:
     CastSegmentFunction mFunction;
