@@ -480,13 +480,9 @@ bool ClosestHitCaster::result(CastHit& hit) const {
 namespace {
 
 // A capsule in double precision, with the margin that covers the float inputs' rounding and the
-// casts' surface tolerance (a conservative answer may only err towards true).
-struct Capsule {
-    glm::dvec3 a{0.0}, b{0.0};
-    double radius = 0.0;
-    glm::dvec3 lo{0.0}, hi{0.0};  // the segment's bounds grown by the radius (boundsMeet)
-    bool valid = false;
-};
+// casts' surface tolerance (a conservative answer may only err towards true); lo and hi are the
+// segment's bounds grown by the radius (boundsMeet).
+using Capsule = detail::PreparedCapsule;
 
 void setBounds(Capsule& c) {
     c.lo = glm::min(c.a, c.b) - c.radius;
@@ -688,40 +684,15 @@ bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fra
     return touchTriangle(c, triangle, fraction);
 }
 
-CapsuleTester::CapsuleTester(const SegmentCast& capsule) {
-    const Capsule c = prepareCapsule(capsule);
-    mA = c.a;
-    mB = c.b;
-    mRadius = c.radius;
-    mLo = c.lo;
-    mHi = c.hi;
-    mValid = c.valid;
-}
-
-namespace {
-
-// A capsule that prepareCapsule made (valid), rebuilt from the parts a tester kept.
-Capsule keptCapsule(const glm::dvec3& a, const glm::dvec3& b, double radius, const glm::dvec3& lo,
-                    const glm::dvec3& hi) {
-    Capsule c;
-    c.a = a;
-    c.b = b;
-    c.radius = radius;
-    c.lo = lo;
-    c.hi = hi;
-    c.valid = true;
-    return c;
-}
-
-}  // namespace
+CapsuleTester::CapsuleTester(const SegmentCast& capsule) : mCapsule(prepareCapsule(capsule)) {}
 
 bool CapsuleTester::mayTouch(const Triangle& triangle) const {
-    return !mValid || mayTouchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle);
+    return !mCapsule.valid || mayTouchTriangle(mCapsule, triangle);
 }
 
 bool CapsuleTester::firstTouch(const Triangle& triangle, float& fraction) const {
     fraction = 0.0f;
-    return !mValid || touchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle, fraction);
+    return !mCapsule.valid || touchTriangle(mCapsule, triangle, fraction);
 }
 
 namespace {
@@ -774,22 +745,18 @@ PlaneRegionTester::PlaneRegionTester(const PlaneRegion& region) {
         return;
     }
     mCapsule = region.capsule;
-    mA = c.a;
-    mB = c.b;
-    mRadius = c.radius;
-    mLo = c.lo;
-    mHi = c.hi;
+    mPrepared = c;
     mNormal = normal / length;
     mDistance = glm::dot(mNormal, point);
     // The plane of a mesh's floor holds its vertices up to their float rounding (half an ulp,
     // 6e-8 of the magnitude), and 1 um besides.
-    const double magnitude = std::max(
-        {std::abs(point.x), std::abs(point.y), std::abs(point.z), std::abs(mA.x), std::abs(mA.y), std::abs(mA.z)});
+    const double magnitude = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z), std::abs(mPrepared.a.x),
+                                       std::abs(mPrepared.a.y), std::abs(mPrepared.a.z)});
     mTolerance = 1e-6 + 1e-7 * magnitude;
     // The anchor must lie in the cross-section: the start within the radius of the plane.
-    const double height = glm::dot(mNormal, mA) - mDistance;
-    if (!(std::abs(height) < mRadius)) mFailed = true;
-    mAnchor = mA - mNormal * height;
+    const double height = glm::dot(mNormal, mPrepared.a) - mDistance;
+    if (!(std::abs(height) < mPrepared.radius)) mFailed = true;
+    mAnchor = mPrepared.a - mNormal * height;
 }
 
 bool PlaneRegionTester::sameMaterial(const SurfaceMaterial& m) const {
@@ -821,17 +788,17 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
     if (!(norm > 0.0) || !sameMaterial(material)) return;
     const glm::dquat inverse = glm::conjugate(q / norm);
     const DVec3 centre = toD(box.center), half(box.halfExtents), n = inverse * mNormal;
-    const DVec3 a = inverse * (mA - centre), b = inverse * (mB - centre);
+    const DVec3 a = inverse * (mPrepared.a - centre), b = inverse * (mPrepared.b - centre);
     const double rounding = static_cast<double>(box.rounding);
     for (int axis = 0; axis < 3; ++axis) {
         if (std::abs(n[axis]) < 1.0 - 1e-12) continue;
         const double sign = n[axis] > 0.0 ? 1.0 : -1.0;
         // The face's plane, and a box deeper than the region reaches behind it.
         if (std::abs(glm::dot(mNormal, centre) + sign * half[axis] - mDistance) > mTolerance) return;
-        if (2.0 * half[axis] < mRadius) return;
+        if (2.0 * half[axis] < mPrepared.radius) return;
         for (int other = 0; other < 3; ++other) {
             if (other == axis) continue;
-            const double room = half[other] - rounding - mRadius;
+            const double room = half[other] - rounding - mPrepared.radius;
             if (!(std::abs(a[other]) <= room && std::abs(b[other]) <= room)) return;
         }
         mFailed = false;
@@ -842,7 +809,7 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
 
 void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
     // mayTouch(region.capsule, triangle) with the capsule prepared once (in the constructor).
-    if (mFailed || !mayTouchTriangle(keptCapsule(mA, mB, mRadius, mLo, mHi), triangle)) return;
+    if (mFailed || !mayTouchTriangle(mPrepared, triangle)) return;
     const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
     for (const DVec3& v : {a, b, c}) {
         if (std::abs(glm::dot(mNormal, v) - mDistance) > mTolerance) {
@@ -878,9 +845,8 @@ void PlaneRegionTester::addEdge(const DVec3& u, const DVec3& v, const DVec3& w) 
     if (mFailed) return;
     // An edge whose bounds are apart from the capsule's (the segment's, grown by the radius) is
     // farther than the radius: spared the distance's divisions and square root.
-    const DVec3 lo = glm::min(u, v), hi = glm::max(u, v);
-    if (lo.x > mHi.x || lo.y > mHi.y || lo.z > mHi.z || hi.x < mLo.x || hi.y < mLo.y || hi.z < mLo.z) return;
-    if (segmentDistance(u, v, mA, mB) > mRadius) return;
+    if (!boundsMeet(mPrepared, glm::min(u, v), glm::max(u, v))) return;
+    if (segmentDistance(u, v, mPrepared.a, mPrepared.b) > mPrepared.radius) return;
     if (mEdgeCount == kMaxEdges) {
         mFailed = true;
         return;

@@ -77,6 +77,14 @@ struct PreparedRay {
     double tolerance = 0.0;               ///< how far behind a one-sided surface a start is "on" it
     double radius = 0.0;
 };
+/// Internal to CapsuleTester and PlaneRegionTester: a capsule prepared for the conservative
+/// tests (double precision, its radius grown for rounding).
+struct PreparedCapsule {
+    glm::dvec3 a{0.0}, b{0.0};    ///< the segment
+    double radius = 0.0;          ///< grown for rounding
+    glm::dvec3 lo{0.0}, hi{0.0};  ///< the segment's bounds grown by the radius
+    bool valid = false;           ///< false: not finite
+};
 /// Internal to ClosestHitCaster: the closest hit so far, as a distance along the ray.
 struct ClosestCandidate {
     double distance = std::numeric_limits<double>::infinity();
@@ -181,7 +189,7 @@ public:
 
     /// False when the capsule is not finite: then every shape may touch it at once (the tests
     /// answer true, fraction 0).
-    bool valid() const { return mValid; }
+    bool valid() const { return mCapsule.valid; }
 
     /// mayTouch(capsule, triangle), with the capsule prepared once.
     bool mayTouch(const Triangle& triangle) const;
@@ -190,10 +198,7 @@ public:
     bool firstTouch(const Triangle& triangle, float& fraction) const;
 
 private:
-    glm::dvec3 mA{0.0}, mB{0.0};    // the segment
-    double mRadius = 0.0;           // grown for rounding
-    glm::dvec3 mLo{0.0}, mHi{0.0};  // the segment's bounds grown by the radius
-    bool mValid = false;
+    detail::PreparedCapsule mCapsule;
 };
 
 /// The test behind CollisionWorld::isOnlyPlane, offered one shape at a time, for worlds that find
@@ -240,10 +245,8 @@ private:
     bool sameMaterial(const SurfaceMaterial& material) const;
     void addEdge(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w);
 
-    SegmentCast mCapsule;           // the region, as given
-    glm::dvec3 mA{0.0}, mB{0.0};    // the capsule's segment
-    double mRadius = 0.0;           // the capsule's radius, grown for rounding
-    glm::dvec3 mLo{0.0}, mHi{0.0};  // the segment's bounds grown by that radius
+    SegmentCast mCapsule;               // the region, as given
+    detail::PreparedCapsule mPrepared;  // the same, prepared for the triangle and edge tests
     glm::dvec3 mNormal{0.0, 1.0, 0.0};
     double mDistance = 0.0;   // dot(normal, x) on the plane
     double mTolerance = 0.0;  // how far from the plane a vertex still lies in it [m]
