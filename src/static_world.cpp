@@ -235,20 +235,37 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
         best.offer(t, s0 > 0.0 ? n : -n);
         return;
     }
-    // A swept sphere against a triangle: the triangle thickened by the radius, a convex solid.
-    const DVec3 closest = closestOnTriangle(ray.origin, a, b, c);
-    const DVec3 away = ray.origin - closest;
-    const double distance = glm::length(away);
-    const DVec3 outward = distance > 0.0 ? away / distance : (s0 >= 0.0 ? n : -n);
-    if (!surfaceRule(ray, distance - radius, outward, best)) return;
+    // A swept sphere against a triangle: the triangle thickened by the radius, a convex solid. It
+    // lies in the slab within the radius of the triangle's plane, so a sphere that starts outside
+    // that slab (by more than the surface tolerance, and 1 um for rounding: the closest point's
+    // distance is then beyond the tolerance too) enters the slab first and the solid no earlier:
+    // a sphere heading away from the plane, or reaching the slab beyond the cast or the best hit
+    // so far, cannot hit; one that reaches it inside the triangle's face hits there.
     const DVec3 side = s0 >= 0.0 ? n : -n;
     const double dn = glm::dot(side, ray.direction);
-    if (dn < 0.0) {
-        // The face, offset by the radius towards the origin.
-        const double t = (std::abs(s0) - radius) / -dn;
-        if (t >= 0.0 && t <= ray.length && t < best.distance) {
-            const DVec3 p = ray.origin + ray.direction * t - side * radius;
-            if (insideTriangle(p, a, b, c, n)) best.offer(t, side);
+    const double outside = std::abs(s0) - radius;
+    if (outside > ray.tolerance + 1e-6) {
+        if (dn >= 0.0) return;
+        const double t = outside / -dn;
+        if (t > ray.length || t >= best.distance) return;
+        const DVec3 p = ray.origin + ray.direction * t - side * radius;
+        if (insideTriangle(p, a, b, c, n)) {
+            best.offer(t, side);
+            return;
+        }
+    } else {
+        const DVec3 closest = closestOnTriangle(ray.origin, a, b, c);
+        const DVec3 away = ray.origin - closest;
+        const double distance = glm::length(away);
+        const DVec3 outward = distance > 0.0 ? away / distance : side;
+        if (!surfaceRule(ray, distance - radius, outward, best)) return;
+        if (dn < 0.0) {
+            // The face, offset by the radius towards the origin.
+            const double t = outside / -dn;
+            if (t >= 0.0 && t <= ray.length && t < best.distance) {
+                const DVec3 p = ray.origin + ray.direction * t - side * radius;
+                if (insideTriangle(p, a, b, c, n)) best.offer(t, side);
+            }
         }
     }
     // The edges (capsules with their corner spheres). An edge whose bounding box stays out of
