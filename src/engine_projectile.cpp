@@ -126,6 +126,8 @@ public:
         mRotates = mProfile.rotates && mRadius > 0.0;
         mAngularFactor = dampingFactor(mProfile.damping, mProfile.angularDamping, mRec.dt);
         mMeshContacts = mProfile.triangleMesh && mProfile.engine == PhysicsEngine::Bullet;
+        // A world whose region queries are worth nothing (CallbackWorld) is never asked them.
+        mRegionQueries = std::isfinite(world.regionQueryCost(static_cast<float>(mRadius)));
         // Bullet 2.83 (ammo.js: the profile warm-starts friction) and Godot 3's Bullet 2.89:
         // several points per manifold. Bullet 3.24 keeps them too, but its profile still solves
         // one point per surface.
@@ -230,7 +232,7 @@ private:
     // they are undone and taken one by one. Returns the steps taken from step k on (0: none);
     // `outcome` is the last one's. The horizon doubles after a promise and halves after a refusal.
     std::uint64_t contactCoast(std::uint64_t k, std::uint64_t steps, StepOutcome& outcome) {
-        if (mCount != 1 || k == 1 || mRadius <= 0.0) return 0;
+        if (!mRegionQueries || mCount != 1 || k == 1 || mRadius <= 0.0) return 0;
         const Surface& surface = mSurfaces[0];
         if (!surface.acting || surface.predictive || surface.reversed || !surface.carried) return 0;
         if (mContactWait > 0) {
@@ -345,16 +347,13 @@ private:
     // chord from the first to the last, so every one of those casts stays inside the capsule of
     // radius r + reach + bend around the chord: when the world says nothing touches that capsule,
     // the n steps are free flight, taken here without casts, with the same arithmetic and so the
-    // same numbers as step by step. Returns the steps taken from step k on (0: step k must be
-    // stepped). The horizon doubles after a clear capsule and halves after a touched one.
-    // (CollisionWorld::firstTouch would say how far a touched capsule is clear; asked here, it
-    // cost more than it saved on the demo level: mayTouch stops at the first candidate.)
+    // same numbers as step by step. Where the world says how far along the capsule nothing
+    // touches it (CollisionWorld::firstTouch), the steps whose chords lie wholly before that are
+    // taken so. Returns the steps taken from step k on (0: step k must be stepped). The horizon
+    // doubles after a clear capsule and halves after a touched one; next to a surface each step
+    // asks again (a refused query costs a fraction of the step it could have saved).
     std::uint64_t coast(std::uint64_t k, std::uint64_t steps) {
-        if (mCount > 0 || (k == 1 && mProfile.firstStep != FirstStepRule::Normal)) return 0;
-        if (mCoastWait > 0) {
-            --mCoastWait;
-            return 0;
-        }
+        if (!mRegionQueries || mCount > 0 || (k == 1 && mProfile.firstStep != FirstStepRule::Normal)) return 0;
         // size_t: indexes mCoastPositions (32 bits on wasm32); at most kMaxCoastSteps.
         const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(mCoastSteps, steps - k + 1));
         if (n < 2) return 0;
@@ -371,14 +370,16 @@ private:
             mCoastPositions[j] = position;
             mCoastVelocities[j] = velocity;
         }
-        const SegmentCast capsule =
-            pathCapsule(std::span<const DVec3>(mCoastPositions.data(), n + 1), mRadius + contactReach());
-        if (mWorld->mayTouch(capsule)) {
+        const std::span<const DVec3> path(mCoastPositions.data(), n + 1);
+        const SegmentCast capsule = pathCapsule(path, mRadius + contactReach());
+        float fraction = 1.0f;
+        const std::size_t clear = mWorld->firstTouch(capsule, fraction) ? clearChords(path, fraction) : n;
+        if (clear < n)
             mCoastSteps = std::max<std::uint64_t>(mCoastSteps / 2, 2);
-            if (mCoastSteps == 2) mCoastWait = 2;  // near a surface: step a while before asking again
-            return 0;
-        }
-        for (std::size_t j = 1; j <= n; ++j) {
+        else
+            mCoastSteps = std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps);
+        if (clear == 0) return 0;
+        for (std::size_t j = 1; j <= clear; ++j) {
             spinDown();
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
@@ -386,8 +387,7 @@ private:
             mRecorder.add(t, k + j - 1 == steps ? TrajectoryEvent::End : TrajectoryEvent::Step, mPosition, mVelocity);
         }
         mTouching = false;
-        mCoastSteps = std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps);
-        return n;
+        return clear;
     }
 
     // The world for the queries of the step from here: the shapes gathered around the sphere
@@ -2078,6 +2078,7 @@ private:
     DVec3 mGravity{0.0};
     double mRadius = 0.0;
     bool mRotates = false;
+    bool mRegionQueries = true;  // whether coast and contactCoast may ask the world's region queries
     bool mMeshContacts = false;  // Bullet's rules for a triangle mesh (EngineProfile::triangleMesh)
     bool mManifold = false;      // Bullet 2.83's multi-point manifolds (updateManifold)
     double mAngularFactor = 1.0;
@@ -2088,7 +2089,6 @@ private:
     int mCount = 0;
     bool mTouching = false;
     std::uint64_t mCoastSteps = 8;    // the next coast's horizon [steps]
-    int mCoastWait = 0;               // steps to take one at a time before coasting again
     std::uint64_t mContactSteps = 8;  // the next contactCoast's horizon [steps]
     int mContactWait = 0;             // steps to take one at a time before contactCoast again
     std::array<DVec3, kMaxCoastSteps + 1> mCoastPositions{}, mCoastVelocities{};

@@ -116,8 +116,7 @@ public:
     /// to `capsule.origin + capsule.displacement` (a capsule; every surface counts, from either
     /// side and whatever the segment's direction). False is a promise: a castSegment whose
     /// swept sphere stays inside the capsule hits nothing. True may be a false alarm; it only
-    /// costs speed. ProjectileMethod::Engine asks it to clear many steps of free flight with one
-    /// query instead of one cast per step. The default answers true (the world cannot tell:
+    /// costs speed. The default answers true (the world cannot tell:
     /// callers then cast step by step), so a world that implements only castSegment stays
     /// correct.
     virtual bool mayTouch(const SegmentCast& capsule) const {
@@ -130,11 +129,10 @@ public:
     /// [Limit: 0 .. 1] so that no surface comes within `capsule.radius` of the segment's points
     /// `origin + t * displacement` for t < fraction: the capsule cut at `fraction` is clear, and a
     /// castSegment whose swept sphere stays inside that part hits nothing. A fraction earlier than
-    /// the real first touch only costs speed. It serves a predictor that would clear a long stretch of
-    /// flight up to the first possible contact with one query (ProjectileMethod::Engine asks mayTouch:
-    /// on a level's floor, the first candidate answers it sooner). The default answers
-    /// from mayTouch (fraction 0 when it says true), so a world that implements only mayTouch, or
-    /// only castSegment, stays correct.
+    /// the real first touch only costs speed. ProjectileMethod::Exact and ProjectileMethod::Engine
+    /// ask it to clear many steps of free flight, up to the first possible contact, with one query
+    /// instead of one cast per step. The default answers from mayTouch (fraction 0 when it says
+    /// true), so a world that implements only mayTouch, or only castSegment, stays correct.
     virtual bool firstTouch(const SegmentCast& capsule, float& fraction) const {
         fraction = 0.0f;
         return mayTouch(capsule);
@@ -228,7 +226,7 @@ public:
 
     /// Infinite: the function answers casts only, and the region queries' defaults ("maybe",
     /// at once) clear nothing, so asking them is never worth a cast (ProjectileMethod::Exact
-    /// then casts every step's chord without trying them).
+    /// and ProjectileMethod::Engine then cast step by step without trying them).
     float regionQueryCost(float radius) const override {
         (void)radius;
         return std::numeric_limits<float>::infinity();
