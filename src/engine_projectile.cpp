@@ -1270,13 +1270,21 @@ private:
             solveBulletWarmStarted(v);
             return;
         }
+        // An iteration that changes nothing (bit for bit) leaves the next ones nothing to change:
+        // the rows read only the velocities and the impulses besides what stays fixed.
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
+            const DVec3 linearBefore = v, angularBefore = mAngular;
+            bool changed = false;
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
+                const double normalBefore = s.normalImpulse;
+                const DVec3 frictionBefore = s.frictionImpulse;
                 frictionRow(s, v, 1.0);
                 normalRow(s, v, s.target);
+                changed = changed || s.normalImpulse != normalBefore || s.frictionImpulse != frictionBefore;
             }
+            if (!changed && v == linearBefore && mAngular == angularBefore) break;
         }
     }
 
