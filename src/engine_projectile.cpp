@@ -513,7 +513,7 @@ private:
         for (int i = 0; i < mCount; ++i) known[i] = SurfacePlace{mSurfaces[i].normal, mSurfaces[i].touch};
         int kept = 0;
         for (int i = 0; i < mCount; ++i) {
-            Surface s = mSurfaces[i];
+            Surface& s = mSurfaces[i];  // in place: kept <= i, and a dropped one is overwritten
             if (s.predictive) continue;
             if (s.reversed) {
                 s.normal = -s.normal;
@@ -551,7 +551,8 @@ private:
             s.gap = glm::dot(mPosition - s.touch, s.normal);
             s.restitution = hit.restitution;
             s.friction = hit.friction;
-            mSurfaces[kept++] = s;
+            if (kept != i) mSurfaces[kept] = s;
+            ++kept;
         }
         mCount = kept;
 
