@@ -1059,6 +1059,39 @@ TEST(embree_mesh, SegmentsFarBeyondFloatRaysStillGetTheExactAnswer) {
     }
 }
 
+// A triangle near the end of the float range (a fuzzed glTF file's vertex of 3.4e38 m): Embree's
+// BVH builder cannot bin such boxes (it aborted on an assertion), so commit() builds no region
+// tree; the region queries then test every triangle and still answer as StaticWorld does.
+TEST(embree_mesh, TriangleAtTheEndOfTheFloatRangeCommitsWithoutARegionTree) {
+    const double far = 3.39e38;  // about the file's float 0x7f7f7f7f
+    const std::vector<RVec3> vertices = {r3(-5, 0, -5), r3(5, 0, -5),    r3(0, 0, 5),
+                                         r3(0, far, 0), r3(far, far, 0), r3(0, far, far)};
+    const std::vector<std::uint32_t> indices = {0, 2, 1, 3, 4, 5};
+    EmbreeWorld world;
+    if (world.addMesh(vertices, indices) != Status::Ok) GTEST_SKIP() << "this build refuses such vertices";
+    std::string error;
+    ASSERT_TRUE(world.commit(&error)) << error;
+    StaticWorld reference;
+    ASSERT_EQ(reference.add(Triangle{vertices[0], vertices[2], vertices[1]}), Status::Ok);
+    ASSERT_EQ(reference.add(Triangle{vertices[3], vertices[4], vertices[5]}), Status::Ok);
+    const SegmentCast capsules[] = {
+        {r3(0, 2, 0), Vec3(0, -4, 0), 0.1f},    // through the floor triangle
+        {r3(0, 2, 0), Vec3(3, 0, 0), 0.5f},     // above it, clear
+        {r3(20, 1, 0), Vec3(-30, 0, 0), 0.0f},  // beside it, through its plane's edge region
+    };
+    for (const SegmentCast& capsule : capsules) {
+        float fraction = -1.0f, expected = -1.0f;
+        const bool touches = world.firstTouch(capsule, fraction);
+        ASSERT_EQ(touches, reference.firstTouch(capsule, expected));
+        if (touches) {
+            EXPECT_EQ(fraction, expected);
+        }
+        EXPECT_EQ(world.mayTouch(capsule), reference.mayTouch(capsule));
+        CastHit hit, expectedHit;
+        ASSERT_EQ(world.castSegment(capsule, hit), reference.castSegment(capsule, expectedHit));
+    }
+}
+
 // firstTouch walks a tree of the mesh triangles' boxes (Embree's BVH builder) and tests the
 // triangles of the boxes the capsule's slabs enter as StaticWorld tests every triangle; a box it
 // skips holds only triangles that test refuses, or that touch no earlier than a touch already

@@ -436,7 +436,8 @@ struct FastCast {
 // Whether `cast` takes the fast path (radius 0, a valid segment within Embree's float range,
 // `built`: a committed scene), and its prepared values; `largest` is Impl::largest.
 bool prepareFast(const SegmentCast& cast, bool built, double largest, FastCast& f) {
-    if (!(cast.radius <= 0.0f) || !built) return false;
+    // A mesh reaching beyond kEmbreeReach would start the ray that far back (rho): no fast path.
+    if (!(cast.radius <= 0.0f) || !built || !(largest < kEmbreeReach)) return false;
     f.origin = toD(cast.origin);
     f.displacement = toD(cast.displacement);
     f.length = glm::length(f.displacement);
@@ -779,10 +780,16 @@ RTCBuildPrimitive regionPrimitive(const Triangle& t, unsigned index) {
 }
 
 // Builds the region tree over `impl`'s triangles; false when Embree failed.
+// Not built (false) when a box reaches beyond kEmbreeReach: Embree's builder bins the boxes in
+// float and fails there (a vertex near the float range's end made it abort on an assertion).
 bool buildRegionTree(RTCDevice device, const std::vector<Triangle>& triangles, RTCBVH& bvh, const void*& root) {
     std::vector<RTCBuildPrimitive> primitives(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        primitives[t] = regionPrimitive(triangles[t], static_cast<unsigned>(t));
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const RTCBuildPrimitive& p = primitives[t] = regionPrimitive(triangles[t], static_cast<unsigned>(t));
+        const float bound = static_cast<float>(kEmbreeReach);
+        for (const float x : {p.lower_x, p.lower_y, p.lower_z, p.upper_x, p.upper_y, p.upper_z})
+            if (!(std::abs(x) <= bound)) return false;
+    }
     bvh = rtcNewBVH(device);
     if (!bvh) return false;
     RTCBuildArguments arguments = rtcDefaultBuildArguments();
@@ -942,8 +949,10 @@ bool EmbreeWorld::castSlow(const SegmentCast& cast, CastHit& hit) const {
         const double length = glm::length(displacement);
         const double originMagnitude = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
         // Embree's float rays are valid only well inside float range (it asserts beyond about
-        // 1.8e18): a segment reaching past 1e15 m is tested against every triangle instead.
-        const bool built = impl->committed && impl->scene && originMagnitude + length < kEmbreeReach;
+        // 1.8e18): a segment reaching past 1e15 m, or any segment in a mesh that does (its ray
+        // would start rho back, floatReach), is tested against every triangle instead.
+        const bool built =
+            impl->committed && impl->scene && originMagnitude + length < kEmbreeReach && impl->largest < kEmbreeReach;
         QueryState q;
         q.triangles = impl->triangles.data();
         q.single = pristine;

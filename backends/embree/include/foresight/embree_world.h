@@ -162,7 +162,9 @@ public:
     /// Builds the BVH over the mesh triangles, and the region queries' tree (Embree's BVH builder
     /// over the triangles' boxes). Returns false (and casts fall back to brute force) if Embree
     /// failed; `error` then says why. A region tree Embree cannot build is not an error: the
-    /// region queries then test every triangle.
+    /// region queries then test every triangle. A mesh with a coordinate beyond 1e15 m [Units: m]
+    /// gets no region tree, and its casts test every triangle (Embree's float rays and box
+    /// binning are not valid that far out).
     bool commit(std::string* error = nullptr);
 
     /// Number of mesh triangles (in the BVH).
