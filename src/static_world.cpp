@@ -244,27 +244,24 @@ void castTriangle(const Ray& ray, double radius, const Triangle& tri, Candidate&
     const DVec3 side = s0 >= 0.0 ? n : -n;
     const double dn = glm::dot(side, ray.direction);
     const double outside = std::abs(s0) - radius;
-    if (outside > ray.tolerance + 1e-6) {
-        if (dn >= 0.0) return;
-        const double t = outside / -dn;
-        if (t > ray.length || t >= best.distance) return;
-        const DVec3 p = ray.origin + ray.direction * t - side * radius;
-        if (insideTriangle(p, a, b, c, n)) {
-            best.offer(t, side);
-            return;
-        }
+    const bool outsideSlab = outside > ray.tolerance + 1e-6;
+    if (outsideSlab) {
+        if (dn >= 0.0 || outside / -dn > ray.length || outside / -dn >= best.distance) return;
     } else {
         const DVec3 closest = closestOnTriangle(ray.origin, a, b, c);
         const DVec3 away = ray.origin - closest;
         const double distance = glm::length(away);
         const DVec3 outward = distance > 0.0 ? away / distance : side;
         if (!surfaceRule(ray, distance - radius, outward, best)) return;
-        if (dn < 0.0) {
-            // The face, offset by the radius towards the origin.
-            const double t = outside / -dn;
-            if (t >= 0.0 && t <= ray.length && t < best.distance) {
-                const DVec3 p = ray.origin + ray.direction * t - side * radius;
-                if (insideTriangle(p, a, b, c, n)) best.offer(t, side);
+    }
+    if (dn < 0.0) {
+        // The face, offset by the radius towards the origin.
+        const double t = outside / -dn;
+        if (t >= 0.0 && t <= ray.length && t < best.distance) {
+            const DVec3 p = ray.origin + ray.direction * t - side * radius;
+            if (insideTriangle(p, a, b, c, n)) {
+                best.offer(t, side);
+                if (outsideSlab) return;
             }
         }
     }

@@ -780,16 +780,10 @@ RTCBuildPrimitive regionPrimitive(const Triangle& t, unsigned index) {
 }
 
 // Builds the region tree over `impl`'s triangles; false when Embree failed.
-// Not built (false) when a box reaches beyond kEmbreeReach: Embree's builder bins the boxes in
-// float and fails there (a vertex near the float range's end made it abort on an assertion).
 bool buildRegionTree(RTCDevice device, const std::vector<Triangle>& triangles, RTCBVH& bvh, const void*& root) {
     std::vector<RTCBuildPrimitive> primitives(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        const RTCBuildPrimitive& p = primitives[t] = regionPrimitive(triangles[t], static_cast<unsigned>(t));
-        const float bound = static_cast<float>(kEmbreeReach);
-        for (const float x : {p.lower_x, p.lower_y, p.lower_z, p.upper_x, p.upper_y, p.upper_z})
-            if (!(std::abs(x) <= bound)) return false;
-    }
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        primitives[t] = regionPrimitive(triangles[t], static_cast<unsigned>(t));
     bvh = rtcNewBVH(device);
     if (!bvh) return false;
     RTCBuildArguments arguments = rtcDefaultBuildArguments();
@@ -852,7 +846,10 @@ bool EmbreeWorld::commit(std::string* error) {
     rtcReleaseGeometry(geometry);
     rtcCommitScene(impl.scene);
     if (rtcGetDeviceError(impl.device) != RTC_ERROR_NONE) return fail("building the BVH failed");
-    if (!buildRegionTree(impl.device, impl.triangles, impl.regionBvh, impl.regionRoot)) {
+    // A mesh reaching beyond kEmbreeReach gets no tree: Embree's builder bins the boxes in float
+    // and fails there (a vertex near the float range's end made it abort on an assertion).
+    if (!(impl.largest < kEmbreeReach) ||
+        !buildRegionTree(impl.device, impl.triangles, impl.regionBvh, impl.regionRoot)) {
         // Not fatal: the region queries then test every triangle, as before commit().
         if (impl.regionBvh) rtcReleaseBVH(impl.regionBvh);
         impl.regionBvh = nullptr;
