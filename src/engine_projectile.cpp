@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
 namespace detail {
@@ -80,7 +81,7 @@ struct Surface {
     double target = 0.0;  // the normal velocity the solver aims at [m/s]
     double normalImpulse = 0.0;
     DVec3 frictionImpulse{0.0};
-    DVec3 tangent{0.0};  // PhysX: this step's first friction direction
+    DVec3 tangent{0.0};  // PhysX: this step's first friction direction; Bullet 3: its only one
     double e = 0.0, mu = 0.0;
     double approach = 0.0;  // normal speed towards the surface before the solve [m/s]
     bool bounce = false;
@@ -1234,7 +1235,11 @@ private:
             const bool overThreshold = engine == PhysicsEngine::Jolt || engine == PhysicsEngine::Box2D
                                            ? vn < -mProfile.restitutionThreshold
                                            : -base > mProfile.restitutionThreshold;
-            const bool reaches = s.gap <= 0.0 || vn < -speculative;
+            // Bullet sets its restitution target whether or not the sphere would reach the
+            // surface within the step (btSequentialImpulseConstraintSolver::setupContactConstraint):
+            // a sphere that approaches faster than the threshold is pushed back even while the
+            // speculative gap is still open.
+            const bool reaches = s.gap <= 0.0 || vn < -speculative || engine == PhysicsEngine::Bullet;
             s.bounce = s.e > 0.0 && overThreshold && reaches && base < 0.0;
             switch (engine) {
                 case PhysicsEngine::Bullet:
@@ -1271,6 +1276,10 @@ private:
             solveBulletWarmStarted(v);
             return;
         }
+        const bool bullet = engine == PhysicsEngine::Bullet;
+        if (bullet)
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].acting) chooseBulletTangent(mSurfaces[i], v);
         // An iteration that changes nothing (bit for bit) leaves the next ones nothing to change:
         // the rows read only the velocities and the impulses besides what stays fixed.
         for (int iteration = 0; iteration < kSolverIterations; ++iteration) {
@@ -1281,9 +1290,18 @@ private:
                 if (!s.acting) continue;
                 const double normalBefore = s.normalImpulse;
                 const DVec3 frictionBefore = s.frictionImpulse;
-                frictionRow(s, v, 1.0);
+                if (!bullet) frictionRow(s, v, 1.0);
                 normalRow(s, v, s.target);
                 changed = changed || s.normalImpulse != normalBefore || s.frictionImpulse != frictionBefore;
+            }
+            // Bullet 3 solves every normal row first, then every friction row whose contact
+            // pushes (btSequentialImpulseConstraintSolver::solveSingleIteration, default mode).
+            for (int i = 0; bullet && i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (!s.acting || !(s.normalImpulse > 0.0)) continue;
+                const DVec3 frictionBefore = s.frictionImpulse;
+                frictionRowBullet(s, v);
+                changed = changed || s.frictionImpulse != frictionBefore;
             }
             if (!changed && v == linearBefore && mAngular == angularBefore) break;
         }
@@ -1955,6 +1973,38 @@ private:
             applyTangential((total - applied) * t, n, radius, v);
             s.frictionImpulse += (total - applied) * t;
         }
+    }
+
+    // Bullet 3 (btSequentialImpulseConstraintSolver::convertContact, default solver mode): one
+    // friction direction per contact, set once per step along the contact point's tangential
+    // velocity (gravity included), or btPlaneSpace1's first axis when its square is below float
+    // epsilon. With two contacts (a wall beside the floor) the slip at one turns while the other
+    // acts; the row stays on its direction, where a disk would follow the slip.
+    void chooseBulletTangent(Surface& s, const DVec3& v) const {
+        const DVec3 n = s.normal;
+        DVec3 slip = v + glm::cross(mAngular, -contactArm(s) * n);
+        slip -= glm::dot(slip, n) * n;
+        if (glm::dot(slip, slip) > static_cast<double>(std::numeric_limits<float>::epsilon()))
+            s.tangent = glm::normalize(slip);
+        else if (std::abs(n.z) > 0.70710678)
+            s.tangent = glm::normalize(DVec3(0.0, -n.z, n.y));
+        else
+            s.tangent = glm::normalize(DVec3(-n.y, n.x, 0.0));
+    }
+
+    // Bullet 3's friction row along the contact's one direction, clamped to +- mu times the
+    // contact's normal impulse so far.
+    void frictionRowBullet(Surface& s, DVec3& v) {
+        const double radius = contactArm(s);
+        const DVec3 arm = -radius * s.normal;
+        const double mass =
+            mRotates ? 1.0 / (1.0 + inverseInertiaFactor() * (radius * radius) / (mRadius * mRadius)) : 1.0;
+        const double applied = glm::dot(s.frictionImpulse, s.tangent);
+        const double slip = glm::dot(v + glm::cross(mAngular, arm), s.tangent);
+        const double limit = s.mu * s.normalImpulse;
+        const double total = std::clamp(applied - mass * slip, -limit, limit);
+        applyTangential((total - applied) * s.tangent, s.normal, radius, v);
+        s.frictionImpulse = total * s.tangent;
     }
 
     // PhysX sets the friction directions up again in every step's contact preparation.

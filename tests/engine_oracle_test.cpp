@@ -8,7 +8,10 @@
 //   - scenes: the first bounce on the engine's step in >= 90 % of throws, and the position after
 //     the last step within 0.02 m of the engine's in >= 90 %.
 // FORESIGHT_ENGINE_SEED draws another set of throws; FORESIGHT_ENGINE_COUNT=<n> runs n scenes per
-// engine instead of 40.
+// engine instead of 40. For looking into misses: FORESIGHT_ENGINE_VERBOSE prints every scene's
+// end error, FORESIGHT_ENGINE_DUMP=<id> one scene's steps, FORESIGHT_ENGINE_DIVERGE each missed
+// scene's first steps where the velocities part (by 2e-4 m/s, then by 0.05 m/s), and
+// FORESIGHT_ENGINE_KEEP keeps the harnesses' case and result files in the temporary directory.
 // A runtime that is not installed skips its engines (and says so), unless FORESIGHT_REQUIRE_ENGINES
 // is set (scripts/test.sh sets it: CI runs them all).
 
@@ -216,6 +219,31 @@ void materials(const Throw& t, Json& body, Json& box) {
     box["friction"] = sf;
 }
 
+// A contact rule of Bullet 3.24's solver in a throw of its own that native Bullet runs beside the
+// random ones (ids "bullet-rule-..."; not counted in the shares): a ball that comes down faster
+// than the restitution threshold but would not close its speculative gap within the step is
+// pushed back by its restitution target all the same. The throw ends before the
+// ball has slid on the floor for long: there Bullet's deceleration wanders by 10 % from step to
+// step, which the prediction does not follow (left open).
+std::vector<Throw> bulletRuleThrows() {
+    std::vector<Throw> throws;
+    Throw t;
+    t.harnessEngine = "bullet";
+    t.engine = PhysicsEngine::Bullet;
+    t.scene = true;
+    t.boxes.push_back(Box{DVec3(0.0, -0.5, 0.0), DVec3(30.0, 0.5, 30.0)});
+    t.id = "bullet-rule-speculative";
+    t.hz = 90;
+    t.steps = 8;
+    t.radius = 0.24;
+    t.position = DVec3(0.0, 0.24 + 0.0044, 0.0);
+    t.velocity = DVec3(1.0, -0.23, 0.5);
+    t.restitution = 0.7;
+    t.friction = 0.1;
+    throws.push_back(t);
+    return throws;
+}
+
 Json caseJson(const Throw& t) {
     Json c;
     c["id"] = t.id;
@@ -358,6 +386,10 @@ protected:
                 casesByRuntime[info.runtime]["cases"].push_back(caseJson(t));
             }
         }
+        for (const Throw& t : bulletRuleThrows()) {
+            sThrows.push_back(t);
+            casesByRuntime["native"]["cases"].push_back(caseJson(t));
+        }
         const std::string engineDir = FORESIGHT_ENGINE_DIR;
         std::map<std::string, std::string> commands;
         const std::string node = FORESIGHT_NODE;
@@ -398,7 +430,7 @@ protected:
             }
             if (results.contains("engine_versions")) sVersions[runtime] = results["engine_versions"].dump();
         }
-        std::filesystem::remove_all(dir);
+        if (!std::getenv("FORESIGHT_ENGINE_KEEP")) std::filesystem::remove_all(dir);
     }
 
     void check(const char* engineName) {
@@ -426,7 +458,7 @@ protected:
         int endWithinExact = 0, endWithinStepped = 0;
         std::vector<double> endErrors, exactErrors, steppedErrors;
         for (const Throw& t : sThrows) {
-            if (t.harnessEngine != engineName) continue;
+            if (t.harnessEngine != engineName || t.id.starts_with("bullet-rule-")) continue;
             auto it = sRuns.find(t.id);
             ASSERT_NE(it, sRuns.end()) << "no result for " << t.id;
             const EngineRun& run = it->second;
@@ -454,6 +486,28 @@ protected:
                         "%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f "
                         "%8.4f\n",
                         k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+                }
+            }
+            if (std::getenv("FORESIGHT_ENGINE_DIVERGE")) {
+                int first = -1, big = -1;
+                for (std::size_t k = 0; k < run.positions.size(); ++k) {
+                    const double dv = glm::length(run.velocities[k] - engine.velocities[k]);
+                    if (first < 0 && dv > 2e-4) first = static_cast<int>(k);
+                    if (big < 0 && dv > 0.05) big = static_cast<int>(k);
+                }
+                const double err = glm::length(engine.end - last);
+                if (err > kEndTolerance) {
+                    std::printf("DIVERGE %s err %.4f first %d big %d\n", t.id.c_str(), err, first, big);
+                    for (int k : {first, big})
+                        if (k >= 1)
+                            for (int j = k - 1; j <= k; ++j) {
+                                const DVec3 a = run.positions[j], b = engine.positions[j];
+                                const DVec3 va = run.velocities[j], vb = engine.velocities[j];
+                                std::printf(
+                                    "  %3d eng %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f "
+                                    "%8.4f %8.4f\n",
+                                    j, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+                            }
                 }
             }
             if (t.ownMaterials) {
@@ -522,6 +576,38 @@ TEST_F(EngineOracle, PhysX) { check("physx"); }
 TEST_F(EngineOracle, Rapier) { check("rapier"); }
 TEST_F(EngineOracle, BulletWasm) { check("ammo"); }
 TEST_F(EngineOracle, BulletNative) { check("bullet"); }
+
+// The rule throws (bulletRuleThrows) step for step: every position within 0.1 mm and every
+// velocity within 1 mm/s of native Bullet's. They differ by float rounding (below 1e-4 m/s
+// here); without the rule the prediction is up to 0.18 m/s and 3 mm off.
+TEST_F(EngineOracle, BulletNativeContactRules) {
+    if (sFailed.count("native")) FAIL() << "native harness failed: " << sFailed["native"];
+    if (sMissing.count("native")) {
+        if (std::getenv("FORESIGHT_REQUIRE_ENGINES")) FAIL() << sMissing["native"];
+        GTEST_SKIP() << sMissing["native"];
+    }
+    for (const Throw& t : bulletRuleThrows()) {
+        auto it = sRuns.find(t.id);
+        ASSERT_NE(it, sRuns.end()) << "no result for " << t.id;
+        const EngineRun& run = it->second;
+        const Prediction engine = predict(t, ProjectileMethod::Engine);
+        ASSERT_EQ(engine.positions.size(), run.positions.size()) << t.id;
+        double worstPosition = 0.0, worstVelocity = 0.0;
+        for (std::size_t k = 0; k < run.positions.size(); ++k) {
+            worstPosition = std::max(worstPosition, glm::length(engine.positions[k] - run.positions[k]));
+            worstVelocity = std::max(worstVelocity, glm::length(engine.velocities[k] - run.velocities[k]));
+            if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))
+                std::printf("%3zu engine v %9.5f %9.5f %9.5f y %9.5f | predicted v %9.5f %9.5f %9.5f y %9.5f\n", k,
+                            run.velocities[k].x, run.velocities[k].y, run.velocities[k].z, run.positions[k].y,
+                            engine.velocities[k].x, engine.velocities[k].y, engine.velocities[k].z,
+                            engine.positions[k].y);
+        }
+        std::printf("%s: worst step error %.2e m, %.2e m/s\n", t.id.c_str(), worstPosition, worstVelocity);
+        EXPECT_LE(worstPosition, 1e-4) << t.id;
+        EXPECT_LE(worstVelocity, 1e-3) << t.id;
+    }
+}
+
 TEST_F(EngineOracle, Godot3) { check("godot3"); }
 TEST_F(EngineOracle, Godot3Bullet) { check("godot3-bullet"); }
 TEST_F(EngineOracle, Box2D) { check("box2d"); }
