@@ -129,11 +129,10 @@ public:
         mMeshContacts = mProfile.triangleMesh && mProfile.engine == PhysicsEngine::Bullet;
         // A world whose region queries are worth nothing (CallbackWorld) is never asked them.
         mRegionQueries = std::isfinite(world.regionQueryCost(static_cast<float>(mRadius)));
-        // Bullet 2.83 (ammo.js: the profile warm-starts friction) and Godot 3's Bullet 2.89:
-        // several points per manifold. Bullet 3.24 keeps them too, but its profile still solves
-        // one point per surface.
-        const bool warmFriction = mProfile.frictionWarmStart > 0.0f;
-        mManifold = (mProfile.engine == PhysicsEngine::Bullet && warmFriction && !mMeshContacts) ||
+        // Bullet (2.83 in ammo.js, 3.24 native) and Godot 3's Bullet 2.89 keep several points
+        // per manifold, each with its normal impulse warm-started (and its friction impulse, by
+        // frictionWarmStart: ammo.js's). Against a triangle mesh, one point per surface.
+        mManifold = (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) ||
                     mProfile.engine == PhysicsEngine::Godot3Bullet;
     }
 

@@ -219,12 +219,15 @@ void materials(const Throw& t, Json& body, Json& box) {
     box["friction"] = sf;
 }
 
-// A contact rule of Bullet 3.24's solver in a throw of its own that native Bullet runs beside the
-// random ones (ids "bullet-rule-..."; not counted in the shares): a ball that comes down faster
-// than the restitution threshold but would not close its speculative gap within the step is
-// pushed back by its restitution target all the same. The throw ends before the
-// ball has slid on the floor for long: there Bullet's deceleration wanders by 10 % from step to
-// step, which the prediction does not follow (left open).
+// Contact rules of Bullet 3.24's solver, in throws of their own that native Bullet runs beside
+// the random ones (ids "bullet-rule-..."; not counted in the shares):
+//   - speculative: a ball that comes down faster than the restitution threshold but would not
+//     close its speculative gap within the step is pushed back by its restitution target all
+//     the same; it then slides and turns to rolling, where the manifold's older point (its
+//     normal impulse warm-started) makes the deceleration wander by 10 % from step to step;
+//   - wall beside the floor: a rolling ball meets a wall; the floor's older point, warm-started,
+//     takes the floor's share in the first iteration, every normal row is solved before the
+//     friction rows, and each friction row keeps the direction its slip had when the step began.
 std::vector<Throw> bulletRuleThrows() {
     std::vector<Throw> throws;
     Throw t;
@@ -234,12 +237,22 @@ std::vector<Throw> bulletRuleThrows() {
     t.boxes.push_back(Box{DVec3(0.0, -0.5, 0.0), DVec3(30.0, 0.5, 30.0)});
     t.id = "bullet-rule-speculative";
     t.hz = 90;
-    t.steps = 8;
+    t.steps = 40;
     t.radius = 0.24;
     t.position = DVec3(0.0, 0.24 + 0.0044, 0.0);
     t.velocity = DVec3(1.0, -0.23, 0.5);
     t.restitution = 0.7;
     t.friction = 0.1;
+    throws.push_back(t);
+    t.id = "bullet-rule-wall-beside-floor";
+    t.hz = 60;
+    t.steps = 75;
+    t.radius = 0.2;
+    t.position = DVec3(0.0, 0.2, 0.0);
+    t.velocity = DVec3(3.0, 0.0, -1.0);
+    t.restitution = 0.35;
+    t.friction = 0.5;
+    t.boxes.push_back(Box{DVec3(2.5, 1.0, -1.5), DVec3(0.6, 2.0, 3.0), 0.8});
     throws.push_back(t);
     return throws;
 }
@@ -578,8 +591,10 @@ TEST_F(EngineOracle, BulletWasm) { check("ammo"); }
 TEST_F(EngineOracle, BulletNative) { check("bullet"); }
 
 // The rule throws (bulletRuleThrows) step for step: every position within 0.1 mm and every
-// velocity within 1 mm/s of native Bullet's. They differ by float rounding (below 1e-4 m/s
-// here); without the rule the prediction is up to 0.18 m/s and 3 mm off.
+// velocity within 3 mm/s of native Bullet's. They differ by float rounding: below 1e-4 m/s,
+// except where a slip near zero decides the step on which sliding turns to rolling (one step
+// apart: 1.6e-3 m/s). Without the manifold's older points the prediction is 0.02 and 0.17 m/s
+// off, without the restitution rule 0.18 m/s.
 TEST_F(EngineOracle, BulletNativeContactRules) {
     if (sFailed.count("native")) FAIL() << "native harness failed: " << sFailed["native"];
     if (sMissing.count("native")) {
@@ -604,7 +619,7 @@ TEST_F(EngineOracle, BulletNativeContactRules) {
         }
         std::printf("%s: worst step error %.2e m, %.2e m/s\n", t.id.c_str(), worstPosition, worstVelocity);
         EXPECT_LE(worstPosition, 1e-4) << t.id;
-        EXPECT_LE(worstVelocity, 1e-3) << t.id;
+        EXPECT_LE(worstVelocity, 3e-3) << t.id;
     }
 }
 

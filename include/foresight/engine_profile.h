@@ -123,11 +123,10 @@ struct EngineProfile {
     /// contact persists into the next step (warm starting of friction), along that step's new
     /// friction direction; a contact whose normal impulse then comes out zero keeps it
     /// uncorrected. Bullet up to 2.88 (ammo.js 0.0.10 carries 2.83): 0.85; Bullet 2.89 and later
-    /// and the other engines' profiles: 0 [Limit: 0 .. 1]. A Bullet profile with it above 0 also
-    /// keeps Bullet 2.83's contact manifolds against convex shapes: up to four points per surface,
-    /// each with its own warm-started normal and friction impulses (docs/engines.md, ammo.js).
-    /// The Godot 3 with Bullet profile always keeps them, with the normal impulses warm-started
-    /// and friction by this factor (0 for its Bullet 2.89).
+    /// and the other engines' profiles: 0 [Limit: 0 .. 1]. The Bullet profiles keep Bullet's
+    /// contact manifolds against convex shapes (not against a triangleMesh): up to four points per
+    /// surface, each with its own normal impulse warm-started (by Bullet's 0.85) and its friction
+    /// impulse by this factor (docs/engines.md); so does the Godot 3 with Bullet profile.
     float frictionWarmStart = 0.0f;
     /// Largest linear speed the engine allows; faster bodies are slowed to it each step
     /// (Jolt: 500) [Units: m/s] [Limit: > 0].
