@@ -294,6 +294,14 @@ struct Prediction {
     DVec3 end{0.0};
 };
 
+// One step of an engine's run beside the prediction (for the diagnostics below).
+void printStep(const EngineRun& run, const Prediction& predicted, std::size_t k) {
+    const DVec3 a = run.positions[k], b = predicted.positions[k];
+    const DVec3 va = run.velocities[k], vb = predicted.velocities[k];
+    std::printf("%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f\n", k,
+                a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
+}
+
 Prediction predict(const Throw& t, ProjectileMethod method) {
     StaticWorld world;
     const bool planar = t.engine == PhysicsEngine::Box2D;
@@ -491,16 +499,8 @@ protected:
             const EngineProfile profile = engineProfile(t.engine);
             const int engineFirst = firstContactStep(run.velocities, profile, t);
             const int predictedFirst = firstContactStep(engine.velocities, profile, t);
-            if (const char* dump = std::getenv("FORESIGHT_ENGINE_DUMP"); dump && t.id == dump) {
-                for (std::size_t k = 0; k < run.positions.size(); ++k) {
-                    const DVec3 a = run.positions[k], b = engine.positions[k];
-                    const DVec3 va = run.velocities[k], vb = engine.velocities[k];
-                    std::printf(
-                        "%3zu engine %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f %8.4f "
-                        "%8.4f\n",
-                        k, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
-                }
-            }
+            if (const char* dump = std::getenv("FORESIGHT_ENGINE_DUMP"); dump && t.id == dump)
+                for (std::size_t k = 0; k < run.positions.size(); ++k) printStep(run, engine, k);
             if (std::getenv("FORESIGHT_ENGINE_DIVERGE")) {
                 int first = -1, big = -1;
                 for (std::size_t k = 0; k < run.positions.size(); ++k) {
@@ -512,15 +512,8 @@ protected:
                 if (err > kEndTolerance) {
                     std::printf("DIVERGE %s err %.4f first %d big %d\n", t.id.c_str(), err, first, big);
                     for (int k : {first, big})
-                        if (k >= 1)
-                            for (int j = k - 1; j <= k; ++j) {
-                                const DVec3 a = run.positions[j], b = engine.positions[j];
-                                const DVec3 va = run.velocities[j], vb = engine.velocities[j];
-                                std::printf(
-                                    "  %3d eng %9.5f %9.5f %9.5f v %8.4f %8.4f %8.4f | pred %9.5f %9.5f %9.5f v %8.4f "
-                                    "%8.4f %8.4f\n",
-                                    j, a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
-                            }
+                        if (k >= 1 && (k == first || big != first))
+                            for (int j = k - 1; j <= k; ++j) printStep(run, engine, static_cast<std::size_t>(j));
                 }
             }
             if (t.ownMaterials) {
@@ -611,11 +604,7 @@ TEST_F(EngineOracle, BulletNativeContactRules) {
         for (std::size_t k = 0; k < run.positions.size(); ++k) {
             worstPosition = std::max(worstPosition, glm::length(engine.positions[k] - run.positions[k]));
             worstVelocity = std::max(worstVelocity, glm::length(engine.velocities[k] - run.velocities[k]));
-            if (std::getenv("FORESIGHT_ENGINE_VERBOSE"))
-                std::printf("%3zu engine v %9.5f %9.5f %9.5f y %9.5f | predicted v %9.5f %9.5f %9.5f y %9.5f\n", k,
-                            run.velocities[k].x, run.velocities[k].y, run.velocities[k].z, run.positions[k].y,
-                            engine.velocities[k].x, engine.velocities[k].y, engine.velocities[k].z,
-                            engine.positions[k].y);
+            if (std::getenv("FORESIGHT_ENGINE_VERBOSE")) printStep(run, engine, k);
         }
         std::printf("%s: worst step error %.2e m, %.2e m/s\n", t.id.c_str(), worstPosition, worstVelocity);
         EXPECT_LE(worstPosition, 1e-4) << t.id;
