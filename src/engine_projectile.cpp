@@ -578,6 +578,7 @@ private:
         if (mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet)
             for (int i = 0; i < mCount; ++i)
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
+        if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
@@ -902,6 +903,58 @@ private:
             if (s.gap >= reach) continue;
             addFound(s);
             if (mCount == kMaxSurfaces) return;
+        }
+    }
+
+    // Bullet's GJK measures a deep contact at the closest points too, where probing along the
+    // normal converges slowly (each probe shrinks the normal's error by about |gap| / (r +
+    // rounding): near 1 when the centre is near the surface, as in a fast glancing hit that
+    // ends a step half inside a box). For a surface whose centre lies within half the radius
+    // of it, the world's closest-point query answers at once, where the world has one: the
+    // shape whose normal there is nearest the probed one (within about 25 degrees) gives the
+    // contact. A centre inside a solid is not answered (Bullet's EPA case): the probes stay.
+    void closestPointsNear(double reach) {
+        if (mCount == 0 || mRadius <= 0.0) return;
+        bool deep = false;
+        for (int i = 0; i < mCount; ++i) deep = deep || mSurfaces[i].gap < -0.5 * mRadius;
+        if (!deep) return;
+        // The best match per surface as the world reports, in whatever order: the nearest
+        // normal, ties to the nearer shape.
+        struct Collector final : NearCollector {
+            const Surface* surfaces = nullptr;
+            int count = 0;
+            double radius = 0.0;
+            std::array<NearSurface, kMaxSurfaces> best{};
+            std::array<double, kMaxSurfaces> bestDot{};
+            void add(const NearSurface& near) override {
+                const DVec3 n = glm::normalize(toD(near.normal));
+                for (int i = 0; i < count; ++i) {
+                    if (!(surfaces[i].gap < -0.5 * radius)) continue;
+                    const double d = glm::dot(n, surfaces[i].normal);
+                    if (d > bestDot[i] || (d == bestDot[i] && near.distance < best[i].distance)) {
+                        bestDot[i] = d;
+                        best[i] = near;
+                    }
+                }
+            }
+        } collector;
+        collector.surfaces = mSurfaces.data();
+        collector.count = mCount;
+        collector.radius = mRadius;
+        collector.bestDot.fill(0.9);
+        NearQuery query;
+        query.center = toR(mPosition);
+        query.radius = static_cast<float>(mRadius + reach);
+        if (!mWorld->findNear(query, collector)) return;
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!(s.gap < -0.5 * mRadius) || !(collector.bestDot[i] > 0.9)) continue;
+            const NearSurface& near = collector.best[i];
+            s.normal = glm::normalize(toD(near.normal));
+            s.gap = static_cast<double>(near.distance) - mRadius;
+            s.touch = toD(near.point) + s.normal * mRadius;
+            s.restitution = near.restitution;
+            s.friction = near.friction;
         }
     }
 
