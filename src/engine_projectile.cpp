@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
 namespace detail {
@@ -1371,14 +1370,7 @@ private:
     void solveBulletWarmStarted(DVec3& v) {
         const double reach = contactReach();
         auto direction = [&](const Surface& s, const DVec3& arm) {
-            DVec3 slip = v + glm::cross(mAngular, arm);
-            slip -= glm::dot(slip, s.normal) * s.normal;
-            const double length2 = glm::dot(slip, slip);
-            if (length2 > 1.1920929e-07) return slip / std::sqrt(length2);  // SIMD_EPSILON (float)
-            // btPlaneSpace1's first axis.
-            const DVec3 n = s.normal;
-            if (std::abs(n.z) > 0.70710678) return glm::normalize(DVec3(0.0, -n.z, n.y));
-            return glm::normalize(DVec3(-n.y, n.x, 0.0));
+            return bulletFrictionDirection(v + glm::cross(mAngular, arm), s.normal);
         };
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
@@ -1462,16 +1454,7 @@ private:
                     push = std::max(push, mProfile.splitImpulseCorrection * -p.distance / dt);
                 p.target = target;
                 p.normalMass = massAlong(p.arm, n);
-                DVec3 slip = after + glm::cross(spin, p.arm);
-                slip -= glm::dot(slip, n) * n;
-                const double length2 = glm::dot(slip, slip);
-                if (length2 > 1.1920929e-07) {  // SIMD_EPSILON (float)
-                    p.direction = slip / std::sqrt(length2);
-                } else if (std::abs(n.z) > 0.70710678) {  // btPlaneSpace1's first axis
-                    p.direction = glm::normalize(DVec3(0.0, -n.z, n.y));
-                } else {
-                    p.direction = glm::normalize(DVec3(-n.y, n.x, 0.0));
-                }
+                p.direction = bulletFrictionDirection(after + glm::cross(spin, p.arm), n);
                 p.frictionMass = massAlong(p.arm, p.direction);
             }
             mPushVelocity += s.normal * push;
@@ -2027,21 +2010,24 @@ private:
         }
     }
 
-    // Bullet 3 (btSequentialImpulseConstraintSolver::convertContact, default solver mode): one
-    // friction direction per contact, set once per step along the contact point's tangential
-    // velocity (gravity included), or btPlaneSpace1's first axis when its square is below float
-    // epsilon. With two contacts (a wall beside the floor) the slip at one turns while the other
-    // acts; the row stays on its direction, where a disk would follow the slip.
+    // Bullet's friction direction for a contact with normal `n` whose point moves with
+    // `velocity` (btSequentialImpulseConstraintSolver::convertContact, default solver mode): the
+    // tangential part of that velocity, or btPlaneSpace1's first axis when its square is below
+    // SIMD_EPSILON (float).
+    static DVec3 bulletFrictionDirection(const DVec3& velocity, const DVec3& n) {
+        const DVec3 slip = velocity - glm::dot(velocity, n) * n;
+        const double length2 = glm::dot(slip, slip);
+        if (length2 > 1.1920929e-07) return slip / std::sqrt(length2);
+        if (std::abs(n.z) > 0.70710678) return glm::normalize(DVec3(0.0, -n.z, n.y));
+        return glm::normalize(DVec3(-n.y, n.x, 0.0));
+    }
+
+    // Bullet 3: one friction direction per contact, set once per step from the contact point's
+    // velocity when the solve starts (gravity included). With two contacts (a wall beside the
+    // floor) the slip at one turns while the other acts; the row stays on its direction, where
+    // a disk would follow the slip.
     void chooseBulletTangent(Surface& s, const DVec3& v) const {
-        const DVec3 n = s.normal;
-        DVec3 slip = v + glm::cross(mAngular, -contactArm(s) * n);
-        slip -= glm::dot(slip, n) * n;
-        if (glm::dot(slip, slip) > static_cast<double>(std::numeric_limits<float>::epsilon()))
-            s.tangent = glm::normalize(slip);
-        else if (std::abs(n.z) > 0.70710678)
-            s.tangent = glm::normalize(DVec3(0.0, -n.z, n.y));
-        else
-            s.tangent = glm::normalize(DVec3(-n.y, n.x, 0.0));
+        s.tangent = bulletFrictionDirection(v + glm::cross(mAngular, -contactArm(s) * s.normal), s.normal);
     }
 
     // Bullet 3's friction row along the contact's one direction, clamped to +- mu times the
