@@ -87,6 +87,7 @@ struct Surface {
     bool carried = false;     // applied an impulse in the previous step (Rapier: no new bounce)
     bool predictive = false;  // Godot 3 with Bullet: a continuous-collision contact at the centre, this step only
     bool settled = false;     // this step's probe along the normal from the centre found the same normal
+    bool closest = false;     // this step's closest-point query (findNear) measured it
     double warmNormal = 0.0;  // Rapier: the last sub-step's impulses, warm-starting the next
     int color = -1;           // Rapier: the solver colour of the contact (solved lowest first)
     DVec3 warmFriction{0.0};
@@ -332,6 +333,13 @@ private:
         }
     }
 
+    // Box2D 2.4's b2_maxRotation: a body turns at most a quarter turn in a step or a time-of-impact
+    // sub-step of length h; b2Island scales the stored angular velocity down to that.
+    void limitBox2DRotation(double h) {
+        const double turn = glm::length(mAngular) * h, maxTurn = 0.5 * M_PI;
+        if (turn > maxTurn) mAngular *= maxTurn / turn;
+    }
+
     // Jolt's MotionProperties::mMaxAngularVelocity: 0.25 pi / (1/60 s) = 47.1 rad/s, applied
     // with the forces and again after the contact solve (JobIntegrateVelocity).
     void capSpin() {
@@ -441,12 +449,13 @@ private:
         mVelocity = v;
         if (acted) capSpin();
 
-        // Box2D's translation limit acts on the solved velocity.
+        // Box2D's translation limit acts on the solved velocity, and so does its rotation limit.
         const double travel = glm::length(mVelocity) * dt;
         if (travel > mProfile.maxStepDistance) {
             mVelocity *= mProfile.maxStepDistance / travel;
             freeMotion = mVelocity * dt;
         }
+        if (mProfile.engine == PhysicsEngine::Box2D) limitBox2DRotation(dt);
         const DVec3 before = mPosition;
         if (acted && mProfile.engine == PhysicsEngine::Rapier)
             mPosition = mSubstepPosition;
@@ -519,6 +528,7 @@ private:
                 s.reversed = false;
             }
             s.persists = s.acting;
+            s.closest = false;
             // Probe from outside the surface, along its normal.
             const double gapNow = glm::dot(mPosition - s.touch, s.normal);
             if (gapNow > reach + glm::length(freeMotion) + 0.05) continue;  // far: forget it
@@ -569,6 +579,11 @@ private:
         if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet ||
             mProfile.engine == PhysicsEngine::Bullet)
             slideCast(freeMotion, reach);
+        // Box2D's narrow phase makes a contact with every polygon within the skin, wherever the
+        // circle heads: a ball rolling under a box's lower corner is wedged there, though no cast
+        // along its motion (tilted down by the step's gravity, so it meets the floor first) meets
+        // the corner.
+        if (mProfile.engine == PhysicsEngine::Box2D) findNearShapes(reach);
         if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
         // Bullet's narrow phase (GJK between the sphere's centre and the box's inner box, the
         // margins added) measures a contact at the closest points where the step starts, as
@@ -583,7 +598,7 @@ private:
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
             findNearSurfaces(freeMotion, reach);
         }
-        if (!mProfile.planar) findPenetrated();
+        if (!mProfile.planar && mCount > 0) findNearShapes(0.0);
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
@@ -602,9 +617,10 @@ private:
     // they measured them: a surface near the plane of a known one is that one (its neighbour
     // triangle's edge seen from a ball resting across the edge).
     // Asked only while the sphere touches a surface: in free flight the cast along the motion
-    // meets what lies ahead before the sphere can sink into it.
-    void findPenetrated() {
-        if (mCount == 0 || mCount == kMaxSurfaces || mRadius <= 0.0) return;
+    // meets what lies ahead before the sphere can sink into it. `within`: the largest gap that
+    // counts (0: the surfaces the sphere penetrates; Box2D: every one within its skin).
+    void findNearShapes(double within) {
+        if (mCount == kMaxSurfaces || mRadius <= 0.0) return;
         struct Collector final : NearCollector {
             std::array<NearSurface, kMaxSurfaces> found{};
             int count = 0;
@@ -622,7 +638,7 @@ private:
         } collector;
         NearQuery query;
         query.center = toR(mPosition);
-        query.radius = static_cast<float>(mRadius);
+        query.radius = static_cast<float>(mRadius + within);
         if (!mWorld->findNear(query, collector)) return;
         // Worlds report in their own order (a tree's, or the order added): the deepest first,
         // ties by point, so that the surfaces and their solve order do not depend on it.
@@ -643,7 +659,8 @@ private:
             const DVec3 n = glm::normalize(toD(near.normal));
             const DVec3 point = toD(near.point);
             const double gap = glm::dot(mPosition - point, n) - mRadius;
-            if (!(gap < 0.0)) continue;
+            if (!(gap < within)) continue;
+            if (mProfile.planar && std::abs(n.z) > 0.5) continue;  // a face the plane of motion cuts
             bool known = false;
             for (int i = 0; i < mCount && !known; ++i) {
                 const Surface& s = mSurfaces[i];
@@ -659,6 +676,7 @@ private:
             s.gap = gap;
             s.restitution = near.restitution;
             s.friction = near.friction;
+            s.closest = true;
         }
     }
 
@@ -765,7 +783,9 @@ private:
             Surface s = mSurfaces[i];
             DVec3 axis = s.normal;
             double distance = 0.0;
-            if (closestDistance(mPosition, mRadius + reach + 0.1, axis, distance)) {
+            // A surface the world's closest-point query measured is measured already (probing
+            // again could converge on a nearer shape beside it: a wall over the floor).
+            if (!s.closest && closestDistance(mPosition, mRadius + reach + 0.1, axis, distance)) {
                 s.normal = axis;
                 s.gap = distance - mRadius;
                 s.touch = mPosition - axis * s.gap;
@@ -1507,24 +1527,32 @@ private:
     // restitution threshold (velocityBias = -e vRel), else its target is 0; there is no
     // speculative allowance. The impulses stored by the previous step warm-start the solve
     // (applied to the velocity first); then 8 velocity iterations, friction before the normal
-    // row. The time-of-impact sub-step (`toi`) starts its accumulated impulses from the stored
-    // ones without applying them, as b2Island::SolveTOI does (no WarmStart call).
+    // row. The time-of-impact sub-step (`toi`) starts its accumulated impulses at zero: b2World::
+    // SolveTOI's sub-step turns warm starting off (with the stored impulses as the start, a
+    // ball that bounced in the discrete solve lost that bounce again in a time of impact).
     void solveBox2D(DVec3& v, bool toi) {
+        // b2ContactSolver::InitializeVelocityConstraints: every target from the velocity before
+        // any warm start is applied (applied first, the floor's stored impulse would lift a ball
+        // wedged under a corner into a bounce off the corner).
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             if (!s.acting) continue;
             const double vn = glm::dot(v, s.normal);
             s.bounce = vn < -mProfile.restitutionThreshold && s.e > 0.0;
             s.target = s.bounce ? -s.e * vn : 0.0;
-            s.normalImpulse = s.warmNormal;
-            s.frictionImpulse = s.warmFriction - glm::dot(s.warmFriction, s.normal) * s.normal;
-            if (!toi) {
-                v += s.normalImpulse * s.normal;
-                applyTangential(s.frictionImpulse, s.normal, contactArm(s), v);
-            }
+            s.normalImpulse = toi ? 0.0 : s.warmNormal;
+            s.frictionImpulse = toi ? DVec3(0.0) : s.warmFriction - glm::dot(s.warmFriction, s.normal) * s.normal;
         }
+        for (int i = 0; i < mCount && !toi; ++i) {
+            Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            v += s.normalImpulse * s.normal;
+            applyTangential(s.frictionImpulse, s.normal, contactArm(s), v);
+        }
+        // The island lists a body's contacts newest first (b2ContactManager puts a new contact at
+        // the head of the body's list), and the surfaces here are oldest first.
         for (int iteration = 0; iteration < 8; ++iteration) {
-            for (int i = 0; i < mCount; ++i) {
+            for (int i = mCount - 1; i >= 0; --i) {
                 Surface& s = mSurfaces[i];
                 if (!s.acting) continue;
                 frictionRow(s, v, 1.0);
@@ -1556,7 +1584,11 @@ private:
             c.displacement = toF(motion);
             c.radius = static_cast<float>(target);
             CastHit hit;
-            if (!mWorld->castSegment(c, hit)) return;
+            // A shape already within the target (plus the tolerance) where the sweep starts is
+            // touched at once: b2TimeOfImpact's first distance settles it (a ball that a step
+            // left sunk into the floor is pushed out from there before it moves on). A cast
+            // would start inside it and pass.
+            if (!touchedAtStart(c0, target, tolerance, hit) && !mWorld->castSegment(c, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             const DVec3 at = toD(hit.position);
             // The separation function: along the face normal, or, at a corner, along the
@@ -1684,12 +1716,46 @@ private:
             const double h = (1.0 - alpha) * dt;
             const double travel = glm::length(v) * h;
             if (travel > mProfile.maxStepDistance) v *= mProfile.maxStepDistance / travel;
+            limitBox2DRotation(h);
             p += v * h;
             if (mProfile.planar) p.z = start.z;
             mVelocity = v;
             mPosition = p;
             alpha0 = alpha;
         }
+    }
+
+    // For Box2D's time of impact: the nearest shape whose closest point lies within
+    // `target + tolerance` of `centre` but not at it (b2TimeOfImpact gives up on shapes that
+    // overlap the centre), as the hit of a cast of radius `target` that stopped there: `hit`'s
+    // position is the closest point moved `target` out along the normal. False when there is
+    // none or the world does not answer closest-point queries.
+    bool touchedAtStart(const DVec3& centre, double target, double tolerance, CastHit& hit) const {
+        struct Collector final : NearCollector {
+            NearSurface nearest{};
+            double limit = 0.0;
+            bool planar = false;
+            bool found = false;
+            void add(const NearSurface& surface) override {
+                if (!(surface.distance > 0.0f) || !(surface.distance < limit)) return;
+                if (planar && std::abs(surface.normal.z) > 0.5f) return;
+                if (found && !(surface.distance < nearest.distance)) return;
+                nearest = surface;
+                found = true;
+            }
+        } collector;
+        collector.planar = mProfile.planar;
+        collector.limit = target + tolerance;
+        NearQuery query;
+        query.center = toR(centre);
+        query.radius = static_cast<float>(target + tolerance);
+        if (!mWorld->findNear(query, collector) || !collector.found) return false;
+        const DVec3 n = glm::normalize(toD(collector.nearest.normal));
+        hit.position = toR(toD(collector.nearest.point) + n * target);
+        hit.normal = toF(n);
+        hit.restitution = collector.nearest.restitution;
+        hit.friction = collector.nearest.friction;
+        return true;
     }
 
     // Whether a sphere cast (radius `radius`) that stopped with its centre at `centre` and the
