@@ -1706,12 +1706,19 @@ private:
             // The velocity constraints are set up where the position solve left the body.
             for (int i = 0; i < mCount; ++i) mSurfaces[i].gap = glm::dot(p - mSurfaces[i].touch, mSurfaces[i].normal);
             DVec3 v = mVelocity;
-            double approach[kMaxSurfaces] = {};
-            for (int i = 0; i < mCount; ++i) approach[i] = -glm::dot(v, mSurfaces[i].normal);
+            double approach[kMaxSurfaces] = {}, impulse[kMaxSurfaces] = {};
+            for (int i = 0; i < mCount; ++i) {
+                approach[i] = -glm::dot(v, mSurfaces[i].normal);
+                impulse[i] = mSurfaces[i].normalImpulse;
+            }
             solveBox2D(v, true);
+            // The step's impulse on a surface is the largest of its solves: a second impact at
+            // once (a point, whose target lies above where the push-out stops) solves an already
+            // leaving velocity to nothing.
             for (int i = 0; i < mCount; ++i) {
                 Surface& s = mSurfaces[i];
                 if (s.acting) s.approach = std::max(s.approach, approach[i]);
+                s.normalImpulse = std::max(s.normalImpulse, impulse[i]);
             }
             const double h = (1.0 - alpha) * dt;
             const double travel = glm::length(v) * h;
