@@ -219,6 +219,31 @@ void materials(const Throw& t, Json& body, Json& box) {
     box["friction"] = sf;
 }
 
+// A rule throw's engine and floor (a box 30 m either side, its top at y = 0, `depth` half deep
+// along z: Box2D's plane ignores it).
+Throw ruleBase(const char* harnessEngine, PhysicsEngine engine, double depth) {
+    Throw t;
+    t.harnessEngine = harnessEngine;
+    t.engine = engine;
+    t.scene = true;
+    t.boxes.push_back(Box{DVec3(0.0, -0.5, 0.0), DVec3(30.0, 0.5, depth)});
+    return t;
+}
+
+// `base` (its engine and boxes) with this flight: a rule throw.
+Throw ruleThrow(Throw base, const char* id, int hz, int steps, double radius, DVec3 position, DVec3 velocity,
+                double restitution, double friction) {
+    base.id = id;
+    base.hz = hz;
+    base.steps = steps;
+    base.radius = radius;
+    base.position = position;
+    base.velocity = velocity;
+    base.restitution = restitution;
+    base.friction = friction;
+    return base;
+}
+
 // Contact rules of Bullet 3.24's solver, in throws of their own that native Bullet runs beside
 // the random ones (ids "bullet-rule-..."; not counted in the shares):
 //   - speculative: a ball that comes down faster than the restitution threshold but would not
@@ -229,83 +254,40 @@ void materials(const Throw& t, Json& body, Json& box) {
 //     takes the floor's share in the first iteration, every normal row is solved before the
 //     friction rows, and each friction row keeps the direction its slip had when the step began.
 std::vector<Throw> bulletRuleThrows() {
+    Throw base = ruleBase("bullet", PhysicsEngine::Bullet, 30.0);
     std::vector<Throw> throws;
-    Throw t;
-    t.harnessEngine = "bullet";
-    t.engine = PhysicsEngine::Bullet;
-    t.scene = true;
-    t.boxes.push_back(Box{DVec3(0.0, -0.5, 0.0), DVec3(30.0, 0.5, 30.0)});
-    t.id = "bullet-rule-speculative";
-    t.hz = 90;
-    t.steps = 40;
-    t.radius = 0.24;
-    t.position = DVec3(0.0, 0.24 + 0.0044, 0.0);
-    t.velocity = DVec3(1.0, -0.23, 0.5);
-    t.restitution = 0.7;
-    t.friction = 0.1;
-    throws.push_back(t);
-    t.id = "bullet-rule-wall-beside-floor";
-    t.hz = 60;
-    t.steps = 75;
-    t.radius = 0.2;
-    t.position = DVec3(0.0, 0.2, 0.0);
-    t.velocity = DVec3(3.0, 0.0, -1.0);
-    t.restitution = 0.35;
-    t.friction = 0.5;
-    t.boxes.push_back(Box{DVec3(2.5, 1.0, -1.5), DVec3(0.6, 2.0, 3.0), 0.8});
-    throws.push_back(t);
+    throws.push_back(ruleThrow(base, "bullet-rule-speculative", 90, 40, 0.24, DVec3(0.0, 0.24 + 0.0044, 0.0),
+                               DVec3(1.0, -0.23, 0.5), 0.7, 0.1));
+    base.boxes.push_back(Box{DVec3(2.5, 1.0, -1.5), DVec3(0.6, 2.0, 3.0), 0.8});
+    throws.push_back(ruleThrow(base, "bullet-rule-wall-beside-floor", 60, 75, 0.2, DVec3(0.0, 0.2, 0.0),
+                               DVec3(3.0, 0.0, -1.0), 0.35, 0.5));
     return throws;
 }
 
 // Throws that show Box2D's contact rules one by one (docs/engines.md), run by native Box2D
-// (ids "box2d-rule-..."; not counted in the shares either).
+// (ids "box2d-rule-..."; not counted in the shares either):
+//   - spin limit: two sliding bounces spin a small ball past a quarter turn per step
+//     (b2_maxRotation); the third bounce's friction depends on the spin Box2D kept;
+//   - wedged: a ball rolling on the floor under a tilted box's lower corner, within the skin of
+//     both, is wedged and stops (every shape within the skin is a contact; the targets taken
+//     before the warm start; the newest contact solved first);
+//   - sunk: bounces between a floor and walls until a step leaves the ball sunk 6 mm into the
+//     floor (step 169): the next step's time of impact is at its start, pushes the ball out from
+//     there and keeps the bounce its discrete solve gave (the sub-step does not warm-start).
 std::vector<Throw> box2dRuleThrows() {
+    Throw base = ruleBase("box2d", PhysicsEngine::Box2D, 0.5);
     std::vector<Throw> throws;
-    Throw t;
-    t.harnessEngine = "box2d";
-    t.engine = PhysicsEngine::Box2D;
-    t.scene = true;
-    t.boxes.push_back(Box{DVec3(0.0, -0.5, 0.0), DVec3(30.0, 0.5, 0.5)});
-    // Two sliding bounces spin a small ball past a quarter turn per step (b2_maxRotation); the
-    // third bounce's friction depends on the spin Box2D kept.
-    t.id = "box2d-rule-spin-limit";
-    t.hz = 30;
-    t.steps = 90;
-    t.radius = 0.0872;
-    t.position = DVec3(-0.78, 0.82, 0.0);
-    t.velocity = DVec3(11.48, 6.35, 0.0);
-    t.restitution = 0.59;
-    t.friction = 0.2;
-    throws.push_back(t);
-    // A ball rolling on the floor under a tilted box's lower corner: within the skin of both, it
-    // is wedged and stops (every shape within the skin is a contact; targets taken before the
-    // warm start; the newest contact solved first).
-    t.id = "box2d-rule-wedged";
-    t.hz = 90;
-    t.steps = 120;
-    t.radius = 0.0808;
-    t.position = DVec3(4.5, 0.0808 + 0.005, 0.0);
-    t.velocity = DVec3(2.5, 0.0, 0.0);
-    t.restitution = 0.43;
-    t.friction = 0.56;
-    t.boxes.push_back(Box{DVec3(6.1805, 1.0337, 0.0), DVec3(0.6372, 0.9206, 0.5), -0.08371});
-    throws.push_back(t);
-    // Bounces between a floor and walls until a step leaves the ball sunk 6 mm into the floor
-    // (step 169): the next step's time of impact is at its start, pushes the ball out from there
-    // and keeps the bounce its discrete solve gave (the sub-step does not warm-start).
-    t.id = "box2d-rule-sunk";
-    t.hz = 120;
-    t.steps = 180;
-    t.radius = 0.06855;
-    t.position = DVec3(-0.02725, 0.68669, 0.0);
-    t.velocity = DVec3(2.81132, 5.77455, 0.0);
-    t.restitution = 0.6971;
-    t.friction = 0.427;
-    t.boxes.resize(1);
-    t.boxes.push_back(Box{DVec3(3.12509, 0.66153, 0.0), DVec3(0.44185, 1.73427, 0.5), -0.22572});
-    t.boxes.push_back(Box{DVec3(-6.82485, 1.55372, 0.0), DVec3(0.71729, 0.82159, 0.5), 0.23126});
-    t.boxes.push_back(Box{DVec3(4.40266, 1.58706, 0.0), DVec3(0.77596, 0.52113, 0.5), -0.23473});
-    throws.push_back(t);
+    throws.push_back(ruleThrow(base, "box2d-rule-spin-limit", 30, 90, 0.0872, DVec3(-0.78, 0.82, 0.0),
+                               DVec3(11.48, 6.35, 0.0), 0.59, 0.2));
+    Throw wedge = base;
+    wedge.boxes.push_back(Box{DVec3(6.1805, 1.0337, 0.0), DVec3(0.6372, 0.9206, 0.5), -0.08371});
+    throws.push_back(ruleThrow(wedge, "box2d-rule-wedged", 90, 120, 0.0808, DVec3(4.5, 0.0808 + 0.005, 0.0),
+                               DVec3(2.5, 0.0, 0.0), 0.43, 0.56));
+    base.boxes.push_back(Box{DVec3(3.12509, 0.66153, 0.0), DVec3(0.44185, 1.73427, 0.5), -0.22572});
+    base.boxes.push_back(Box{DVec3(-6.82485, 1.55372, 0.0), DVec3(0.71729, 0.82159, 0.5), 0.23126});
+    base.boxes.push_back(Box{DVec3(4.40266, 1.58706, 0.0), DVec3(0.77596, 0.52113, 0.5), -0.23473});
+    throws.push_back(ruleThrow(base, "box2d-rule-sunk", 120, 180, 0.06855, DVec3(-0.02725, 0.68669, 0.0),
+                               DVec3(2.81132, 5.77455, 0.0), 0.6971, 0.427));
     return throws;
 }
 
