@@ -388,6 +388,9 @@ private:
         if (clear == 0) return 0;
         for (std::size_t j = 1; j <= clear; ++j) {
             spinDown();
+            // No contact acts in free flight: Box2D's limit after the solve applies to the spin
+            // as it is (a time of impact may have left it above the limit of a whole step).
+            if (mProfile.engine == PhysicsEngine::Box2D) limitBox2DRotation(dt);
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
             const double t = static_cast<double>(k + j - 1) * dt;
