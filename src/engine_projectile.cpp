@@ -1448,7 +1448,7 @@ private:
         // newest first: btSimulationIslandManager sorts them by island (btAlignedObjectArray::
         // quickSort), and the sphere's are all of its island, an order the sort reverses for two
         // or three (a ball that met two boxes in one step ended 0.17 m/s off the engine with the
-        // older first, and within 1e-5 m/s with the newer first; ammo.js, 30 Hz). The surfaces
+        // older first, and within 4e-5 m/s with the newer first; ammo.js, 30 Hz). The surfaces
         // here are oldest first.
         int order[kMaxSurfaces] = {}, count = 0;
         for (int i = 0; i < mCount; ++i)
