@@ -579,9 +579,8 @@ private:
         // Bullet's narrow phase (native, ammo.js, Godot 3 with Bullet) tests every shape whose
         // bounds overlap the sphere's: a sphere rolling on the floor finds the wall ahead as PhysX
         // does (without this, a ball sliding into a wall of triangles went through it).
-        if (mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Godot3Bullet ||
-            mProfile.engine == PhysicsEngine::Bullet)
-            slideCast(freeMotion, reach);
+        const bool bullet = mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet;
+        if (bullet || mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
         // Box2D's narrow phase makes a contact with every polygon within the skin, wherever the
         // circle heads: a ball rolling under a box's lower corner is wedged there, though no cast
         // along its motion (tilted down by the step's gravity, so it meets the floor first) meets
@@ -589,14 +588,13 @@ private:
         // where the step starts: a ball that flies up past a box's top edge 2.6 mm from it, the
         // edge never nearer along the motion, is pushed off it (ammo.js). Asked for Bullet when
         // the casts found nothing (a shape found both ways would count twice; measured worse).
-        const bool bullet = mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet;
         if (mProfile.engine == PhysicsEngine::Box2D || (bullet && !mMeshContacts && mCount == 0)) findNearShapes(reach);
         if (mProfile.engine == PhysicsEngine::Rapier || mProfile.engine == PhysicsEngine::Box2D) closestPoints(reach);
         // Bullet's narrow phase (GJK between the sphere's centre and the box's inner box, the
         // margins added) measures a contact at the closest points where the step starts, as
         // Jolt's does: on a rounded edge the normal there differs from the one a cast meets.
         // A surface whose probe from the centre found its normal again is measured there already.
-        if (mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet)
+        if (bullet)
             for (int i = 0; i < mCount; ++i)
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
