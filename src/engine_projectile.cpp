@@ -19,6 +19,7 @@
 //     included); otherwise `p += v dt`. A position correction then moves the sphere out by
 //     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
+#include "bullet_gjk.h"
 #include "engine_internal.h"
 #include "local_world.h"
 #include "path_capsule.h"
@@ -107,6 +108,11 @@ struct Surface {
     // Bullet 2.83 (ammo.js, see EngineRun::updateManifold): the shape's manifold points.
     std::array<ManifoldPoint, kManifoldPoints> points{};
     int pointCount = 0;
+    // Bullet 3.24 and Godot 3's Bullet: this step's contact as Bullet's float GJK measured it
+    // (EngineRun::measureAsBullet).
+    bool floatContact = false;
+    DVec3 floatArm{0.0};        // from the centre to the contact point on the sphere [m]
+    DVec3 floatOnSurface{0.0};  // the contact point on the box [m]
 };
 
 // A surface's normal and the centre where the sphere touches it (what Surface says of its place).
@@ -140,6 +146,7 @@ public:
         mPosition = start;
         mVelocity = startVelocity;
         if (mProfile.planar) mVelocity.z = 0.0;
+        startFloatFlight();
         mRecorder.add(0.0, TrajectoryEvent::Start, mPosition, mVelocity);
         for (std::uint64_t k = 1; k <= steps; ++k) {
             if (const std::uint64_t taken = coast(k, steps); taken > 0) {
@@ -393,6 +400,7 @@ private:
             if (mProfile.engine == PhysicsEngine::Box2D) limitBox2DRotation(dt);
             mPosition = mCoastPositions[j];
             mVelocity = mCoastVelocities[j];
+            advanceFloatFlight(false);
             const double t = static_cast<double>(k + j - 1) * dt;
             mRecorder.add(t, k + j - 1 == steps ? TrajectoryEvent::End : TrajectoryEvent::Step, mPosition, mVelocity);
         }
@@ -437,7 +445,120 @@ private:
         if (mWorld == mFullWorld) mWorld = nearWorld();
         const bool bounced = stepIn(first);
         mWorld = world;
+        advanceFloatFlight(mActed);
         return bounced;
+    }
+
+    // Bullet 3.24 (and Godot 3's Bullet 2.89) steps the body in float. While the prediction's
+    // steps are free flight (no contact has acted), the same float operations give Bullet's own
+    // position to the bit, on which the rounding of its narrow phase depends (bullet_gjk.h):
+    // btRigidBody::applyDamping (v times (1 - c)^dt), the solver's gravity impulse (g dt: the
+    // total force times the inverse mass is g exactly for a body of mass 1, as in the engine
+    // oracle) and btTransformUtil::integrateTransform (p + v dt).
+    void startFloatFlight() {
+        // Bullet 3.24 damps with btPow; Godot 3's Bullet 2.89 is built with its old damping method.
+        // ammo.js (Bullet 2.83, frictionWarmStart) is asm.js that computes Bullet's float
+        // expressions in JavaScript doubles and rounds them only where it stores them: its rounding
+        // is not float's, and is not followed.
+        const bool native = mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts &&
+                            mProfile.damping == DampingLaw::Power && mProfile.firstStep == FirstStepRule::Normal;
+        const bool godot = mProfile.engine == PhysicsEngine::Godot3Bullet &&
+                           mProfile.damping == DampingLaw::LinearClamped &&
+                           mProfile.firstStep == FirstStepRule::DampingOnly;
+        // Both are Bullet 2.89 or later, which warm-starts no friction (frictionWarmStart 0).
+        mFloatFlight = (native || godot) && mProfile.frictionWarmStart == 0.0f && mRadius > 0.0 && !mProfile.planar &&
+                       mProfile.substeps == 1 && mProfile.order == DampingOrder::DampingThenGravity;
+        if (!mFloatFlight) return;
+        const float dt = mProfile.timestep;
+        const float c = std::clamp(mProfile.linearDamping + mProfile.addedLinearDamping, 0.0f, 1.0f);
+        mFloatDamping = native ? std::pow(1.0f - c, dt) : std::max(1.0f - dt * c, 0.0f);
+        mFloatFirstStep = godot;  // Godot's first step: no gravity
+        mFloatGravityStep =
+            detail::BulletVec{mSettings.gravity.x * dt, mSettings.gravity.y * dt, mSettings.gravity.z * dt};
+        mFloatPosition = detail::BulletVec{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
+                                           static_cast<float>(mPosition.z)};
+        mFloatVelocity = detail::BulletVec{static_cast<float>(mVelocity.x), static_cast<float>(mVelocity.y),
+                                           static_cast<float>(mVelocity.z)};
+    }
+    void advanceFloatFlight(bool acted) {
+        if (!mFloatFlight) return;
+        if (acted) {
+            mFloatFlight = false;  // Bullet's float solve is not followed
+            return;
+        }
+        const float dt = mProfile.timestep;
+        detail::BulletVec& v = mFloatVelocity;
+        v = detail::BulletVec{v.x * mFloatDamping, v.y * mFloatDamping, v.z * mFloatDamping};
+        if (!mFloatFirstStep)
+            v = detail::BulletVec{v.x + mFloatGravityStep.x, v.y + mFloatGravityStep.y, v.z + mFloatGravityStep.z};
+        mFloatFirstStep = false;
+        detail::BulletVec& p = mFloatPosition;
+        p = detail::BulletVec{p.x + v.x * dt, p.y + v.y * dt, p.z + v.z * dt};
+        // The double prediction and the float one agree to rounding; anything else (a profile
+        // field this does not follow) ends the float flight.
+        const DVec3 gap = DVec3(p.x, p.y, p.z) - mPosition;
+        const double tolerance = 1e-4 + 1e-5 * glm::length(mPosition);
+        if (!(std::abs(gap.x) <= tolerance && std::abs(gap.y) <= tolerance && std::abs(gap.z) <= tolerance))
+            mFloatFlight = false;
+    }
+
+    // Bullet meets a sphere and a box with GJK (bullet_gjk.h), whose float rounding over a
+    // large box (a floor 30 m wide) tilts the normal by up to 1e-4 rad and moves the contact point
+    // off the sphere's axis. While the float flight is Bullet's own, each known surface that is a
+    // gathered box gets the contact Bullet's GJK finds for it: its normal, distance and points.
+    void measureAsBullet() {
+        for (int i = 0; i < mCount; ++i) mSurfaces[i].floatContact = false;
+        if (!mFloatFlight || mWorld != &mLocal || mCount == 0) return;
+        const auto radius = static_cast<float>(mRadius);
+        for (const OrientedBox& b : mLocal.boxes()) {
+            detail::BulletBox box;
+            const detail::BulletVec h{b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
+            // Godot 3 sets its boxes' margin after construction (the box's rounding, 0.04 m); a
+            // Bullet box keeps the constructor's (0.04 m, or a tenth of the smallest half extent)
+            // unless its rounding says otherwise.
+            detail::bulletBoxShape(h, -1.0f, box);
+            if (mProfile.engine == PhysicsEngine::Godot3Bullet ||
+                std::abs(box.margin - b.rounding) > 1e-6f * box.margin)
+                detail::bulletBoxShape(h, b.rounding, box);
+            box.basis = detail::bulletBasis(b.orientation.x, b.orientation.y, b.orientation.z, b.orientation.w);
+            box.origin = detail::BulletVec{static_cast<float>(b.center.x), static_cast<float>(b.center.y),
+                                           static_cast<float>(b.center.z)};
+            float distance = box.margin + radius + bulletBreakingThreshold(box, radius);
+            distance *= distance;
+            const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(box, mFloatPosition, radius, distance);
+            if (!c.handled || !c.found) continue;
+            const DVec3 normal = -DVec3(c.normalOnB.x, c.normalOnB.y, c.normalOnB.z);
+            const double gap = c.distance;
+            for (int i = 0; i < mCount; ++i) {
+                Surface& s = mSurfaces[i];
+                if (s.predictive || glm::dot(s.normal, normal) < 0.99 || std::abs(s.gap - gap) > 1e-3) continue;
+                const DVec3 centre(mFloatPosition.x, mFloatPosition.y, mFloatPosition.z);
+                const DVec3 onSphere(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z);
+                const detail::BulletVec a{c.pointOnB.x + c.normalOnB.x * c.distance,
+                                          c.pointOnB.y + c.normalOnB.y * c.distance,
+                                          c.pointOnB.z + c.normalOnB.z * c.distance};  // btManifoldResult's point on A
+                s.normal = normal;
+                s.gap = gap;
+                s.touch = mPosition - normal * gap;
+                s.floatContact = true;
+                s.floatArm = onSphere - centre;
+                s.floatOnSurface = DVec3(a.x, a.y, a.z);
+                break;
+            }
+        }
+    }
+
+    // The contact breaking threshold of a box-sphere manifold (btCollisionDispatcher with its
+    // relative threshold: the smaller shape's angular motion disc x gContactBreakingThreshold).
+    static float bulletBreakingThreshold(const detail::BulletBox& box, float radius) {
+        const auto disc = [](float x, float y, float z) {  // getBoundingSphere: half the AABB's diagonal
+            const float lx = x + x, ly = y + y, lz = z + z;
+            return std::sqrt(lx * lx + ly * ly + lz * lz) * 0.5f;
+        };
+        const float m = box.margin;
+        const float sphere = disc(radius, radius, radius) * 0.02f;
+        const float boxDisc = disc(box.halfExtents.x + m, box.halfExtents.y + m, box.halfExtents.z + m) * 0.02f;
+        return std::min(sphere, boxDisc);
     }
 
     bool stepIn(bool first) {
@@ -449,6 +570,7 @@ private:
 
         findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
+        mActed = acted;
         mVelocity = v;
         if (acted) capSpin();
 
@@ -598,6 +720,7 @@ private:
             for (int i = 0; i < mCount; ++i)
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
+        if (bullet) measureAsBullet();
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
@@ -752,6 +875,7 @@ private:
         DVec3 n;
         if (!ccdSweep(from, motion, hit, n)) return;
         mPosition = from + motion * static_cast<double>(hit.fraction);
+        mFloatFlight = false;  // the float flight does not follow the sweep
     }
 
     // PhysX makes a contact with every shape within the contact distance at the step's start,
@@ -1101,8 +1225,9 @@ private:
     void updateManifold(Surface& s, double reach) {
         if (s.acting) {
             ManifoldPoint p;
-            p.arm = -mRadius * s.normal;
-            p.onSurface = mPosition - (mRadius + s.gap) * s.normal;  // the closest point, not the cast's
+            p.arm = s.floatContact ? s.floatArm : -mRadius * s.normal;
+            // The closest point, not the cast's.
+            p.onSurface = s.floatContact ? s.floatOnSurface : mPosition - (mRadius + s.gap) * s.normal;
             p.normal = s.normal;
             p.distance = s.gap;
             int nearest = -1;
@@ -2287,6 +2412,12 @@ private:
     DVec3 mSubstepPosition{0.0};  // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
+    bool mActed = false;  // the last step's solve changed the velocity
+    // Bullet's own float state (Bullet 3.24, Godot 3's Bullet) while the flight is free (startFloatFlight).
+    bool mFloatFlight = false;
+    float mFloatDamping = 1.0f;
+    bool mFloatFirstStep = false;  // the next float step is Godot's first: no gravity
+    detail::BulletVec mFloatGravityStep, mFloatPosition, mFloatVelocity;
     std::uint64_t mCoastSteps = 8;    // the next coast's horizon [steps]
     std::uint64_t mContactSteps = 8;  // the next contactCoast's horizon [steps]
     int mContactWait = 0;             // steps to take one at a time before contactCoast again

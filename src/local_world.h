@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 FORESIGHT_NAMESPACE_BEGIN
 namespace detail {
@@ -75,6 +76,11 @@ public:
         bounds.hi = c + pad;
         testShapes(bounds, tester);
         return true;
+    }
+
+    /// The boxes gathered, in the world's order (none when the world could not gather).
+    std::span<const OrientedBox> boxes() const {
+        return mValid ? std::span<const OrientedBox>(mBoxes.data(), mBoxCount) : std::span<const OrientedBox>();
     }
 
     // The region queries serve long stretches of flight or rolling, beyond a gathered region:

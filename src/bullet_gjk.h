@@ -1,0 +1,62 @@
+#pragma once
+// Bullet's closest points between a box and a sphere, in Bullet's own float arithmetic. Internal
+// to the library.
+//
+// Bullet (native 3.24, and the 2.8x inside ammo.js and Godot 3) meets a sphere and a box with its
+// general convex test: btConvexConvexAlgorithm hands the two shapes to btGjkPairDetector, whose
+// GJK loop (with btVoronoiSimplexSolver) finds the closest points of the box shrunk by its margin
+// and the sphere's centre, then adds the margins back. In float, over a box whose corners are
+// metres away from the contact (a floor box 30 m wide), the simplex's barycentric arithmetic
+// rounds the closest point by micrometres: the contact normal comes out tilted by up to 1e-4 rad
+// and the contact point off the sphere's axis, and both change completely with the last bit of
+// the sphere's position. Only the same operations in the same order give the same contact; this
+// is that computation, step for step, for the case where GJK alone decides (the sphere's centre
+// outside the box shrunk by its margin by more than twice Bullet's penetration tolerance). Checked
+// bit for bit against the linked btGjkPairDetector (3.24) in the Bullet tests.
+
+#include "internal.h"
+
+#include <array>
+
+FORESIGHT_NAMESPACE_BEGIN
+namespace detail {
+
+/// A float 3-vector with btVector3's arithmetic (the same operations in the same order).
+struct BulletVec {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+};
+
+/// A box as Bullet holds it: its world transform (row-major rotation, as btMatrix3x3 from the
+/// quaternion, and origin), its half extents without the margin (btBoxShape's implicit shape
+/// dimensions) and its margin [m].
+struct BulletBox {
+    std::array<BulletVec, 3> basis{};  ///< rows of the rotation matrix
+    BulletVec origin;
+    BulletVec halfExtents;  ///< without the margin
+    float margin = 0.0f;
+};
+
+/// btMatrix3x3::setRotation of the quaternion (x, y, z, w), in float as Bullet computes it.
+std::array<BulletVec, 3> bulletBasis(float x, float y, float z, float w);
+
+/// A btBoxShape's half extents without its margin and its margin, for full half extents `h` and a
+/// margin `margin` set after construction, or the constructor's default margin (0.04 m, lowered
+/// to a tenth of the smallest half extent: setSafeMargin) when `margin` is negative. Bullet 3.24.
+void bulletBoxShape(const BulletVec& h, float margin, BulletBox& box);
+
+/// The contact btGjkPairDetector reports for box A and a sphere B (centre `center`, radius
+/// `radius`), given the largest squared distance of interest (btConvexConvexAlgorithm's:
+/// (margin A + margin B + contact breaking threshold)^2).
+struct BulletGjkContact {
+    bool handled = false;   ///< false: a case this does not reproduce (EPA, degenerate): no answer
+    bool found = false;     ///< a contact within the distance of interest (output.addContactPoint)
+    BulletVec normalOnB;    ///< unit normal on the sphere, pointing from the sphere towards the box
+    BulletVec pointOnB;     ///< the contact point on the sphere's surface [m]
+    float distance = 0.0f;  ///< negative when penetrating [m]
+};
+/// Bullet 2.88 and later (Godot 3's 2.89 and 3.24 have the same code here).
+BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& center, float radius,
+                                    float maximumDistanceSquared);
+
+}  // namespace detail
+FORESIGHT_NAMESPACE_END
