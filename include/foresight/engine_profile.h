@@ -126,7 +126,9 @@ struct EngineProfile {
     /// and the other engines' profiles: 0 [Limit: 0 .. 1]. The Bullet profiles keep Bullet's
     /// contact manifolds against convex shapes (not against a triangleMesh): up to four points per
     /// surface, each with its own normal impulse warm-started (by Bullet's 0.85) and its friction
-    /// impulse by this factor (docs/engines.md); so does the Godot 3 with Bullet profile.
+    /// impulse by this factor (docs/engines.md); so does the Godot 3 with Bullet profile. With
+    /// 0 (Bullet 2.89 and later) these two profiles also compute the first contact with a box as
+    /// Bullet's float arithmetic does, from Bullet's own float position (docs/engines.md).
     float frictionWarmStart = 0.0f;
     /// Largest linear speed the engine allows; faster bodies are slowed to it each step
     /// (Jolt: 500) [Units: m/s] [Limit: > 0].
