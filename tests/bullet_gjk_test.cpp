@@ -10,9 +10,11 @@
 #include <btBulletCollisionCommon.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 
 namespace {
