@@ -405,6 +405,20 @@ void bulletBoxShape(const BulletVec& h, float margin, BulletBox& box) {
     box.margin = current;
 }
 
+float bulletContactDistanceSquared(const BulletBox& box, float radius) {
+    // getAngularMotionDisc: the bounding sphere of the shape's AABB at the origin (half its
+    // diagonal), times the threshold factor.
+    const auto disc = [](float x, float y, float z) {
+        const float lx = x + x, ly = y + y, lz = z + z;
+        return std::sqrt(lx * lx + ly * ly + lz * lz) * 0.5f;
+    };
+    const float m = box.margin;
+    const float sphere = disc(radius, radius, radius) * 0.02f;
+    const float boxDisc = disc(box.halfExtents.x + m, box.halfExtents.y + m, box.halfExtents.z + m) * 0.02f;
+    const float distance = m + radius + std::min(sphere, boxDisc);
+    return distance * distance;
+}
+
 BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& center, float radius,
                                     float maximumDistanceSquared) {
     BulletGjkContact out;

@@ -44,6 +44,12 @@ std::array<BulletVec, 3> bulletBasis(float x, float y, float z, float w);
 /// to a tenth of the smallest half extent: setSafeMargin) when `margin` is negative. Bullet 3.24.
 void bulletBoxShape(const BulletVec& h, float margin, BulletBox& box);
 
+/// btConvexConvexAlgorithm's largest squared distance of interest for box A and a sphere of
+/// `radius` [m^2]: (margin A + margin B + the manifold's contact breaking threshold)^2, that
+/// threshold being btCollisionDispatcher's relative one (the smaller shape's angular motion disc
+/// times gContactBreakingThreshold, 0.02).
+float bulletContactDistanceSquared(const BulletBox& box, float radius);
+
 /// The contact btGjkPairDetector reports for box A and a sphere B (centre `center`, radius
 /// `radius`), given the largest squared distance of interest (btConvexConvexAlgorithm's:
 /// (margin A + margin B + contact breaking threshold)^2).

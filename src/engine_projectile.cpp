@@ -445,7 +445,6 @@ private:
         if (mWorld == mFullWorld) mWorld = nearWorld();
         const bool bounced = stepIn(first);
         mWorld = world;
-        advanceFloatFlight(mActed);
         return bounced;
     }
 
@@ -523,9 +522,8 @@ private:
             box.basis = detail::bulletBasis(b.orientation.x, b.orientation.y, b.orientation.z, b.orientation.w);
             box.origin = detail::BulletVec{static_cast<float>(b.center.x), static_cast<float>(b.center.y),
                                            static_cast<float>(b.center.z)};
-            float distance = box.margin + radius + bulletBreakingThreshold(box, radius);
-            distance *= distance;
-            const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(box, mFloatPosition, radius, distance);
+            const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
+                box, mFloatPosition, radius, detail::bulletContactDistanceSquared(box, radius));
             if (!c.handled || !c.found) continue;
             const DVec3 normal = -DVec3(c.normalOnB.x, c.normalOnB.y, c.normalOnB.z);
             const double gap = c.distance;
@@ -548,19 +546,6 @@ private:
         }
     }
 
-    // The contact breaking threshold of a box-sphere manifold (btCollisionDispatcher with its
-    // relative threshold: the smaller shape's angular motion disc x gContactBreakingThreshold).
-    static float bulletBreakingThreshold(const detail::BulletBox& box, float radius) {
-        const auto disc = [](float x, float y, float z) {  // getBoundingSphere: half the AABB's diagonal
-            const float lx = x + x, ly = y + y, lz = z + z;
-            return std::sqrt(lx * lx + ly * ly + lz * lz) * 0.5f;
-        };
-        const float m = box.margin;
-        const float sphere = disc(radius, radius, radius) * 0.02f;
-        const float boxDisc = disc(box.halfExtents.x + m, box.halfExtents.y + m, box.halfExtents.z + m) * 0.02f;
-        return std::min(sphere, boxDisc);
-    }
-
     bool stepIn(bool first) {
         const double dt = mRec.dt;
         const DVec3 v0 = mVelocity;
@@ -570,7 +555,6 @@ private:
 
         findSurfaces(freeMotion);
         const bool acted = solve(v0, v);
-        mActed = acted;
         mVelocity = v;
         if (acted) capSpin();
 
@@ -633,6 +617,7 @@ private:
             }
         }
         if (bounced) ++mResult.bounces;
+        advanceFloatFlight(acted);
         return bounced;
     }
 
@@ -2412,7 +2397,6 @@ private:
     DVec3 mSubstepPosition{0.0};  // Rapier: the position its sub-steps reached
     int mCount = 0;
     bool mTouching = false;
-    bool mActed = false;  // the last step's solve changed the velocity
     // Bullet's own float state (Bullet 3.24, Godot 3's Bullet) while the flight is free (startFloatFlight).
     bool mFloatFlight = false;
     float mFloatDamping = 1.0f;

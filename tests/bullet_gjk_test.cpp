@@ -111,9 +111,10 @@ TEST(BulletGjk, ContactsAreBulletsToTheBit) {
         const Placement s = randomSetup(random);
         btBoxShape boxShape(s.half);
         btSphereShape sphereShape(s.radius);
-        // btConvexConvexAlgorithm's distance of interest, with the sphere's contact breaking
-        // threshold (the relative one: its angular motion disc times gContactBreakingThreshold).
-        const float threshold = sphereShape.getContactBreakingThreshold(0.02f);
+        // btConvexConvexAlgorithm's distance of interest, with the manifold's contact breaking
+        // threshold (btCollisionDispatcher's relative one: the smaller of the two shapes').
+        const float threshold = std::min(boxShape.getContactBreakingThreshold(gContactBreakingThreshold),
+                                         sphereShape.getContactBreakingThreshold(gContactBreakingThreshold));
         float maximum = boxShape.getMargin() + sphereShape.getMargin() + threshold;
         maximum *= maximum;
 
@@ -129,6 +130,7 @@ TEST(BulletGjk, ContactsAreBulletsToTheBit) {
         foresight::detail::bulletBoxShape(BulletVec{s.half.x(), s.half.y(), s.half.z()}, -1.0f, box);
         box.basis = foresight::detail::bulletBasis(s.rotation.x(), s.rotation.y(), s.rotation.z(), s.rotation.w());
         box.origin = BulletVec{s.origin.x(), s.origin.y(), s.origin.z()};
+        ASSERT_EQ(bits(foresight::detail::bulletContactDistanceSquared(box, s.radius)), bits(maximum)) << "case " << i;
         const auto ours = foresight::detail::bulletBoxSphereGjk(
             box, BulletVec{s.center.x(), s.center.y(), s.center.z()}, s.radius, maximum);
         if (!ours.handled) continue;
