@@ -420,7 +420,7 @@ float bulletContactDistanceSquared(const BulletBox& box, float radius) {
 }
 
 BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& center, float radius,
-                                    float maximumDistanceSquared) {
+                                    float maximumDistanceSquared, bool tooClose) {
     BulletGjkContact out;
     // btGjkPairDetector::getClosestPointsNonVirtual with A = the box, B = the sphere (its support
     // without margin is its centre, whatever its rotation).
@@ -441,7 +441,8 @@ BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& cente
             const float dx = std::max(std::abs(local.x) - box.halfExtents.x, 0.0f);
             const float dy = std::max(std::abs(local.y) - box.halfExtents.y, 0.0f);
             const float dz = std::max(std::abs(local.z) - box.halfExtents.z, 0.0f);
-            if (dx * dx + dy * dy + dz * dz <= reach * reach) return out;  // not handled
+            const float outside = dx * dx + dy * dy + dz * dz;
+            if (tooClose ? outside == 0.0f : outside <= reach * reach) return out;  // not handled
         }
     }
 
@@ -526,7 +527,7 @@ BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& cente
     // Where Bullet would go on to EPA (an invalid result, or a degenerate exit within the
     // penetration tolerance), the answer is not reproduced.
     const bool catchDegenerate = degenerate != 0 && (distance + margin) < kEpaPenetrationTolerance;
-    if (!valid || catchDegenerate) return out;
+    if (!valid || (catchDegenerate && !tooClose)) return out;
     out.handled = true;
     if (!(distance < 0.0f || distance * distance < maximumDistanceSquared)) return out;
 

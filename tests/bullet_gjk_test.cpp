@@ -8,6 +8,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <btBulletCollisionCommon.h>
+#include <btBulletDynamicsCommon.h>
+#include <foresight/foresight.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -177,6 +180,217 @@ TEST(BulletGjk, TheFloorBoxTiltsTheNormal) {
     ASSERT_TRUE(b.handled && b.found);
     EXPECT_LT(b.normalOnB.x, -1e-4f);
     EXPECT_LT(b.normalOnB.z, -1e-4f);
+}
+
+// Where GJK hands over, in the linked Bullet (A = the box, B = the sphere, as
+// btConvexConvexAlgorithm asks). Random boxes (0.2 to 15 m half extents, a third of them
+// axis-aligned, the rest turned) and spheres (0.03 to 0.33 m) over a face, the centre:
+// - 0.05 to 0.95 mm outside the box shrunk by its margin: GJK's "too close" exit scales the
+//   sphere's point by a short axis over a long one, so the point lies near the centre. EPA runs
+//   too and replaces GJK's answer only where it comes out deeper, by rounding: about one case in
+//   ten. Where GJK's answer stands, the port's point (bulletBoxSphereGjk with tooClose) lies
+//   within 1 % of the radius of Bullet's in all but a few cases: the engine profiles take it.
+// - inside the box shrunk by its margin: EPA answers with the face nearest the centre, always,
+//   its normal within 1e-3 rad of that face's and its depth within 0.5 mm (EPA's own
+//   tolerance): the profiles take that face.
+TEST(BulletGjk, WhereGjkHandsOverTheContactComesFromNearTheCentre) {
+    std::mt19937 random(20261128);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    btVoronoiSimplexSolver simplexSolver;
+    btGjkEpaPenetrationDepthSolver epa;
+    constexpr int kCases = 4000;
+    for (const bool inside : {false, true}) {
+        int centred = 0, kept = 0, portNear = 0, nearestFace = 0;
+        double worstTilt = 0.0, worstDepth = 0.0;
+        for (int i = 0; i < kCases; ++i) {
+            const auto extent = [&] { return btScalar(0.2 + 15.0 * unit(random) * unit(random)); };
+            const btVector3 half(extent(), extent(), extent());
+            btBoxShape box(half);
+            const double margin = box.getMargin();
+            const btVector3 axis = btVector3(btScalar(unit(random) - 0.5), btScalar(unit(random) - 0.5),
+                                             btScalar(unit(random) - 0.5 + 1e-3))
+                                       .normalized();
+            const btQuaternion rotation(axis, unit(random) < 0.3 ? btScalar(0) : btScalar(6.28 * unit(random)));
+            const btTransform placed(rotation, btVector3(btScalar(20 * unit(random) - 10), btScalar(3 * unit(random)),
+                                                         btScalar(20 * unit(random) - 10)));
+            const double radius = 0.03 + 0.3 * unit(random);
+            btSphereShape sphere(static_cast<btScalar>(radius));
+            const int face = static_cast<int>(random() % 3);
+            const double side = random() % 2 != 0 ? 1.0 : -1.0;
+            btVector3 local;
+            for (int k = 0; k < 3; ++k) local[k] = btScalar((unit(random) * 1.6 - 0.8) * (half[k] - margin));
+            const double inner = half[face] - margin;
+            local[face] =
+                btScalar(side * (inside ? inner - (0.002 + 0.5 * unit(random)) * std::min(inner, radius + margin)
+                                        : inner + (0.05 + 0.9 * unit(random)) * 1e-3));
+            const btVector3 centre = placed * local;
+            btGjkPairDetector gjk(&box, &sphere, &simplexSolver, &epa);
+            btGjkPairDetector::ClosestPointInput input;
+            input.m_transformA = placed;
+            input.m_transformB = btTransform(btQuaternion::getIdentity(), centre);
+            input.m_maximumDistanceSquared = btScalar(1e30);
+            btPointCollector bullet;
+            gjk.getClosestPoints(input, bullet, nullptr);
+            ASSERT_TRUE(bullet.m_hasResult) << i;
+            if ((bullet.m_pointInWorld - centre).length() < 0.1 * radius) ++centred;
+            if (!inside) {
+                BulletBox port;
+                foresight::detail::bulletBoxShape(BulletVec{half.x(), half.y(), half.z()}, -1.0f, port);
+                const btQuaternion q = placed.getRotation();
+                port.basis = foresight::detail::bulletBasis(q.x(), q.y(), q.z(), q.w());
+                const btVector3 o = placed.getOrigin();
+                port.origin = BulletVec{o.x(), o.y(), o.z()};
+                const auto ours = foresight::detail::bulletBoxSphereGjk(
+                    port, BulletVec{centre.x(), centre.y(), centre.z()}, static_cast<float>(radius), 1e30f, true);
+                ASSERT_TRUE(ours.handled && ours.found) << i;
+                if (gjk.m_lastUsedMethod != 8) continue;  // 8: EPA ran, GJK's answer stands
+                ++kept;
+                const btVector3 point(ours.pointOnB.x, ours.pointOnB.y, ours.pointOnB.z);
+                if ((point - bullet.m_pointInWorld).length() <= 0.01 * radius) ++portNear;
+                continue;
+            }
+            int nearest = 0;
+            double room = 1e30;
+            for (int k = 0; k < 3; ++k) {
+                const double r = half[k] - std::abs(local[k]);
+                if (r < room) {
+                    room = r;
+                    nearest = k;
+                }
+            }
+            btVector3 outward(0, 0, 0);
+            outward[nearest] = local[nearest] < 0 ? -1 : 1;
+            const double along = (placed.getBasis() * outward).dot(-bullet.m_normalOnBInWorld);
+            if (along < 0.99) continue;
+            ++nearestFace;
+            worstTilt = std::max(worstTilt, std::acos(std::min(1.0, along)));
+            worstDepth = std::max(worstDepth, std::abs(bullet.m_distance + room + radius));
+        }
+        if (inside) {
+            std::printf(
+                "BulletGjk: centre inside the inner box: %d of %d contacts on the nearest face (normal "
+                "within %.2e rad, depth within %.2e m)\n",
+                nearestFace, kCases, worstTilt, worstDepth);
+            EXPECT_EQ(nearestFace, kCases);
+            EXPECT_LT(worstTilt, 1e-3);
+            EXPECT_LT(worstDepth, 5e-4);
+        } else {
+            std::printf(
+                "BulletGjk: centre within 1 mm outside the inner box: %d of %d contacts with the point "
+                "on the sphere within r / 10 of the centre; GJK's answer in %d, the port's point within "
+                "r / 100 of it in %d\n",
+                centred, kCases, kept, portNear);
+            EXPECT_GT(centred, kCases * 8 / 10);
+            EXPECT_GT(kept, kCases * 8 / 10);
+            EXPECT_GE(portNear, kept * 99 / 100);
+        }
+    }
+}
+
+// One throw in a btDiscreteDynamicsWorld set up as the engine oracle's native harness does
+// (static boxes added first, a btSphereShape of mass 1 with its inertia, deactivation off, one
+// internal step per stepSimulation), and the Bullet 3.24 profile's prediction of it.
+struct Throw {
+    btVector3 half, centre;
+    double radius = 0.1, restitution = 0.5, friction = 0.5;
+    btVector3 position, velocity;
+    int steps = 30;
+};
+
+btVector3 bulletEnd(const Throw& t) {
+    btDefaultCollisionConfiguration configuration;
+    btCollisionDispatcher dispatcher(&configuration);
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+    world.setGravity(btVector3(0, btScalar(-9.81), 0));
+    btBoxShape boxShape(t.half);
+    btRigidBody::btRigidBodyConstructionInfo boxInfo(0, nullptr, &boxShape);
+    boxInfo.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), t.centre);
+    boxInfo.m_restitution = 1;  // neutral under Bullet's product rule
+    boxInfo.m_friction = 1;
+    btRigidBody box(boxInfo);
+    world.addRigidBody(&box);
+    btSphereShape sphere(btScalar(t.radius));
+    btVector3 inertia(0, 0, 0);
+    sphere.calculateLocalInertia(1, inertia);
+    btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &sphere, inertia);
+    info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), t.position);
+    info.m_restitution = btScalar(t.restitution);
+    info.m_friction = btScalar(t.friction);
+    btRigidBody body(info);
+    body.setLinearVelocity(t.velocity);
+    body.setActivationState(DISABLE_DEACTIVATION);
+    world.addRigidBody(&body);
+    for (int i = 0; i < t.steps; ++i) world.stepSimulation(btScalar(1.0 / 30.0), 0);
+    const btVector3 end = body.getWorldTransform().getOrigin();
+    world.removeRigidBody(&body);
+    world.removeRigidBody(&box);
+    return end;
+}
+
+btVector3 predictedEnd(const Throw& t) {
+    using namespace foresight;
+    StaticWorld world;
+    OrientedBox box;
+    box.center = RVec3(t.centre.x(), t.centre.y(), t.centre.z());
+    box.halfExtents = Vec3(t.half.x(), t.half.y(), t.half.z());
+    // btBoxShape's margin rounds the edges: 0.04 m, or a tenth of the smallest half extent.
+    box.rounding = std::min(0.04f, 0.1f * std::min({box.halfExtents.x, box.halfExtents.y, box.halfExtents.z}));
+    EXPECT_EQ(world.add(box, SurfaceMaterial{1.0f, 1.0f}), Status::Ok);
+    ProjectileSettings settings;
+    settings.method = ProjectileMethod::Engine;
+    settings.engine = engineProfile(PhysicsEngine::Bullet);
+    settings.engine.timestep = static_cast<float>(1.0 / 30.0);
+    settings.step = settings.engine.timestep;
+    settings.radius = static_cast<float>(t.radius);
+    settings.restitution = static_cast<float>(t.restitution);
+    settings.friction = static_cast<float>(t.friction);
+    std::vector<TrajectoryPoint> points(static_cast<std::size_t>(t.steps) + 400);
+    ProjectileResult result;
+    EXPECT_EQ(predictProjectile(RVec3(t.position.x(), t.position.y(), t.position.z()),
+                                Vec3(t.velocity.x(), t.velocity.y(), t.velocity.z()),
+                                static_cast<float>(t.steps) / 30.0f, settings, &world, points, result),
+              Status::Ok);
+    return btVector3(static_cast<btScalar>(result.position.x), static_cast<btScalar>(result.position.y),
+                     static_cast<btScalar>(result.position.z));
+}
+
+// A ball whose first step into the floor ends with its centre 0.5 mm above the floor box shrunk
+// by its margin (0.0395 m below the top). Bullet's contact point on the sphere lies 1.6 cm from
+// the centre (of a 10 cm radius), so the friction of the bounce hardly spins the ball: it skids
+// at its friction limit, losing 4.7 m/s of its 5 m/s along the floor. With the contact point at
+// the bottom of the sphere (the profile before this rule) the ball rolled on and ended 3 m
+// further.
+TEST(BulletGjk, ADeepBounceNextToTheInnerBoxSkidsAsInBullet) {
+    Throw t;
+    t.half = btVector3(30, 0.5, 30);
+    t.centre = btVector3(0, -0.5, 0);
+    t.position = btVector3(0, btScalar(0.1714), 0);  // one 30 Hz step: -0.0395
+    t.velocity = btVector3(5, -6, 0);
+    const btVector3 bullet = bulletEnd(t), predicted = predictedEnd(t);
+    std::printf("BulletGjk: deep bounce: Bullet ends at x = %.4f m, the prediction %.4f m\n", bullet.x(),
+                predicted.x());
+    EXPECT_LT(bullet.x(), 1.0);  // it skidded (rolling away it would end near 2.6 m)
+    EXPECT_LT((bullet - predicted).length(), 0.02);
+}
+
+// A 5 cm ball at 9 m/s into a 20 cm board: after one 30 Hz step its centre lies 3 cm past the
+// board's middle, inside the box shrunk by its margin. Bullet's EPA pushes it out of the face
+// nearest the centre, the far one: the ball goes through. Off the face it came in through (the
+// profile before this rule) it bounced back and ended 13 m away.
+TEST(BulletGjk, AFastBallPastABoardsMiddleGoesThroughAsInBullet) {
+    Throw t;
+    t.half = btVector3(2, 2, btScalar(0.1));
+    t.centre = btVector3(0, 2, 0);
+    t.radius = 0.05;
+    t.position = btVector3(0, btScalar(1.5), btScalar(-0.27));
+    t.velocity = btVector3(0, 0, 9);
+    const btVector3 bullet = bulletEnd(t), predicted = predictedEnd(t);
+    std::printf("BulletGjk: fast ball into a board: Bullet ends at z = %.4f m, the prediction %.4f m\n", bullet.z(),
+                predicted.z());
+    EXPECT_GT(bullet.z(), 0.1);  // beyond the board
+    EXPECT_LT((bullet - predicted).length(), 0.02);
 }
 
 }  // namespace
