@@ -156,6 +156,14 @@ const char* engineName(PhysicsEngine engine) {
     return "unknown";
 }
 
+EngineProfile ammoJsProfile() {
+    EngineProfile p = engineProfile(PhysicsEngine::Bullet);
+    p.restitutionThreshold = 0.0f;
+    p.frictionWarmStart = 0.85f;
+    p.splitImpulseCorrection = 0.8f;
+    return p;
+}
+
 Status validateEngineProfile(const EngineProfile& p) {
     const float values[] = {p.timestep,        p.linearDamping,        p.addedLinearDamping,
                             p.angularDamping,  p.restitutionThreshold, p.contactDistance,

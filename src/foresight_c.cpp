@@ -1212,6 +1212,8 @@ fs_engine_profile fs_engine_profile_default(int32_t engine) noexcept {
     return toC(engineProfile(static_cast<PhysicsEngine>(engine)));
 }
 
+fs_engine_profile fs_engine_profile_ammo_js(void) noexcept { return toC(ammoJsProfile()); }
+
 fs_status fs_validate_engine_profile(const fs_engine_profile* profile) noexcept {
     if (profile == nullptr) return FS_STATUS_NULL_POINTER;
     EngineProfile cppProfile;

@@ -744,6 +744,11 @@ static void test_engine_profiles(void) {
     CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).damping == FS_DAMPING_LAW_POWER);
     CHECK(fs_engine_profile_default(FS_ENGINE_BULLET).order == FS_DAMPING_ORDER_DAMPING_THEN_GRAVITY);
     CHECK(fs_engine_profile_default(99).engine == FS_ENGINE_CUSTOM);
+    /* ammo.js's Bullet 2.83: no bounce threshold, friction warm-started, erp2 0.8. */
+    CHECK(fs_engine_profile_ammo_js().engine == FS_ENGINE_BULLET);
+    CHECK(fs_engine_profile_ammo_js().restitution_threshold == 0.0f);
+    CHECK(fs_engine_profile_ammo_js().friction_warm_start == 0.85f);
+    CHECK(fs_engine_profile_ammo_js().split_impulse_correction == 0.8f);
     CHECK_STATUS(fs_validate_engine_profile(&profile), FS_STATUS_OK);
 
     /* The named profile through either door: the same flight, bit for bit. */

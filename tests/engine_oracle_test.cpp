@@ -401,17 +401,12 @@ Prediction predict(const Throw& t, ProjectileMethod method) {
     }
     ProjectileSettings settings;
     settings.method = method;
-    settings.engine = engineProfile(t.engine);
+    // ammo.js 0.0.10 carries Bullet 2.83 (ammoJsProfile): no restitution threshold (2.87 added
+    // it), friction warm-started (removed in 2.89), deep penetrations pushed out with erp2 = 0.8
+    // (0.2 from 2.85 on).
+    settings.engine = t.harnessEngine == "ammo" ? ammoJsProfile() : engineProfile(t.engine);
     settings.engine.timestep = static_cast<float>(1.0 / t.hz);
     if (t.damping) settings.engine.linearDamping = static_cast<float>(*t.damping);
-    // ammo.js 0.0.10 carries a Bullet older than 2.87: no restitution threshold (a project setting).
-    // It also warm-starts friction (removed in 2.89) and pushes deep penetrations out with
-    // erp2 = 0.8 (0.2 from 2.85 on).
-    if (t.harnessEngine == "ammo") {
-        settings.engine.restitutionThreshold = 0.0f;
-        settings.engine.frictionWarmStart = 0.85f;
-        settings.engine.splitImpulseCorrection = 0.8f;
-    }
     settings.step = settings.engine.timestep;
     settings.radius = static_cast<float>(t.radius);
     settings.restitution = static_cast<float>(t.restitution);

@@ -336,7 +336,8 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
         {"jolt", PhysicsEngine::Jolt},     {"physx", PhysicsEngine::PhysX},
         {"rapier", PhysicsEngine::Rapier}, {"bullet", PhysicsEngine::Bullet},
         {"godot3", PhysicsEngine::Godot3}, {"godot3-bullet", PhysicsEngine::Godot3Bullet},
-        {"box2d", PhysicsEngine::Box2D},   {"custom", PhysicsEngine::Custom}};
+        {"box2d", PhysicsEngine::Box2D},   {"custom", PhysicsEngine::Custom},
+        {"ammo", PhysicsEngine::Bullet}};
     PhysicsEngine engine = PhysicsEngine::Custom;
     std::string name;
     if (!f.string("profile", true, name)) {
@@ -350,12 +351,11 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
             known = true;
         }
     if (!known) {
-        f.diagnostics().error(f.at("profile"),
-                              "unknown profile " + jsonQuoted(name) +
-                                  " (expected \"jolt\", \"physx\", \"rapier\", \"bullet\", \"godot3\", "
-                                  "\"godot3-bullet\", \"box2d\" or \"custom\")");
+        f.diagnostics().error(f.at("profile"), "unknown profile " + jsonQuoted(name) +
+                                                   " (expected \"jolt\", \"physx\", \"rapier\", \"bullet\", \"ammo\", "
+                                                   "\"godot3\", \"godot3-bullet\", \"box2d\" or \"custom\")");
     }
-    foresight::EngineProfile profile = foresight::engineProfile(engine);
+    foresight::EngineProfile profile = name == "ammo" ? foresight::ammoJsProfile() : foresight::engineProfile(engine);
     f.positive("timestep", false, true, profile.timestep);
     f.positive("linear_damping", false, false, profile.linearDamping);
     f.positive("added_linear_damping", false, false, profile.addedLinearDamping);
@@ -401,6 +401,16 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
                               "must be in [0, 1] (got " + shortNumber(profile.positionCorrection) + ")");
     }
     f.boolean("correction_is_velocity", false, profile.correctionIsVelocity);
+    if (f.positive("split_impulse_correction", false, false, profile.splitImpulseCorrection) &&
+        profile.splitImpulseCorrection > 1.0f) {
+        f.diagnostics().error(f.at("split_impulse_correction"),
+                              "must be in [0, 1] (got " + shortNumber(profile.splitImpulseCorrection) + ")");
+    }
+    if (f.positive("friction_warm_start", false, false, profile.frictionWarmStart) &&
+        profile.frictionWarmStart > 1.0f) {
+        f.diagnostics().error(f.at("friction_warm_start"),
+                              "must be in [0, 1] (got " + shortNumber(profile.frictionWarmStart) + ")");
+    }
     f.positive("max_linear_speed", false, true, profile.maxLinearSpeed);
     f.positive("max_step_distance", false, true, profile.maxStepDistance);
     f.boolean("planar", false, profile.planar);

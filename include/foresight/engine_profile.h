@@ -155,6 +155,13 @@ struct EngineProfile {
 /// PhysicsEngine::Custom gives plain semi-implicit Euler with nothing else.
 EngineProfile engineProfile(PhysicsEngine engine);
 
+/// Bullet as ammo.js 0.0.10 carries it (Bullet 2.83 compiled to asm.js, the Bullet of many web
+/// games): engineProfile(PhysicsEngine::Bullet) with no restitution threshold (Bullet 2.87 added
+/// it), friction warm-started by 0.85 (frictionWarmStart; removed in Bullet 2.89) and deep
+/// penetrations pushed out with erp2 = 0.8 (splitImpulseCorrection; 0.2 from Bullet 2.85 on).
+/// The scenario format's profile "ammo"; timestep 1/60 s.
+EngineProfile ammoJsProfile();
+
 /// The profile's name as the scenario format writes it ("jolt", "physx", "rapier", "bullet",
 /// "godot3", "godot3-bullet", "box2d", "custom"). Never null.
 const char* engineName(PhysicsEngine engine);

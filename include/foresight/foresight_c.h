@@ -575,6 +575,10 @@ typedef struct fs_engine_profile {
 /// (foresight::engineProfile); FS_ENGINE_CUSTOM's for a value outside the enumeration.
 FS_API fs_engine_profile fs_engine_profile_default(int32_t engine) FS_NOEXCEPT;
 
+/// Bullet as ammo.js 0.0.10 carries it (Bullet 2.83; foresight::ammoJsProfile): FS_ENGINE_BULLET's
+/// profile with restitution_threshold 0, friction_warm_start 0.85, split_impulse_correction 0.8.
+FS_API fs_engine_profile fs_engine_profile_ammo_js(void) FS_NOEXCEPT;
+
 /// Checks a profile (foresight::validateEngineProfile).
 /// @return OK, NULL_POINTER, NON_FINITE_INPUT, INVALID_STEP (timestep) or INVALID_SETTING.
 FS_API fs_status fs_validate_engine_profile(const fs_engine_profile* profile) FS_NOEXCEPT;

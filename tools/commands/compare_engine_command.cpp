@@ -379,8 +379,14 @@ int compareEngineCommand(const std::string& file, const CompareOptions& options)
                                                 "; compared with the " + engine->name + " profile at its timestep");
             }
         }
-        // ammo.js carries a Bullet from before the restitution threshold (a project setting).
-        if (std::string(engine->name) == "ammo") c.settings.engine.restitutionThreshold = 0.0f;
+        // ammo.js carries Bullet 2.83: no restitution threshold, friction warm-started, erp2 0.8
+        // (the "ammo" profile's values, whichever Bullet profile the prediction names).
+        if (std::string(engine->name) == "ammo") {
+            const foresight::EngineProfile ammo = foresight::ammoJsProfile();
+            c.settings.engine.restitutionThreshold = ammo.restitutionThreshold;
+            c.settings.engine.frictionWarmStart = ammo.frictionWarmStart;
+            c.settings.engine.splitImpulseCorrection = ammo.splitImpulseCorrection;
+        }
         c.settings.method = foresight::ProjectileMethod::Engine;
         c.settings.step = c.settings.engine.timestep;
         c.settings.radius = p.projectile.radius > 0.0f ? p.projectile.radius : kPointRadius;

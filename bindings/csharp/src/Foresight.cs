@@ -531,6 +531,10 @@ namespace Foresight
         /// an engine outside the enumeration gives Jolt's.</summary>
         public static EngineProfile Default(PhysicsEngine engine) { return Native.fs_engine_profile_default(engine); }
 
+        /// <summary>Bullet as ammo.js 0.0.10 carries it (Bullet 2.83): Bullet's profile with no
+        /// restitution threshold, friction warm-started by 0.85 and erp2 0.8 (docs/engines.md).</summary>
+        public static EngineProfile AmmoJs() { return Native.fs_engine_profile_ammo_js(); }
+
         /// <summary>Checks every field of <paramref name="profile"/>.</summary>
         /// <returns>Ok, NonFiniteInput, InvalidStep (timestep) or InvalidSetting.</returns>
         public static Status Validate(EngineProfile profile) { return Native.fs_validate_engine_profile(ref profile); }

@@ -55,6 +55,7 @@ namespace Foresight
         [DllImport(Library)] internal static extern Status fs_predict_projectile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, IntPtr noWorld, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);
 
         [DllImport(Library)] internal static extern EngineProfile fs_engine_profile_default(PhysicsEngine engine);
+        [DllImport(Library)] internal static extern EngineProfile fs_engine_profile_ammo_js();
         [DllImport(Library)] internal static extern Status fs_validate_engine_profile(ref EngineProfile profile);
         [DllImport(Library)] internal static extern UIntPtr fs_trajectory_capacity_with_profile(float time, ref ProjectileSettings settings, ref EngineProfile profile);
         [DllImport(Library)] internal static extern Status fs_predict_projectile_with_profile(DVec3 position, Vector3Native velocity, float time, ref ProjectileSettings settings, ref EngineProfile profile, WorldHandle world, ref TrajectoryPoint points, UIntPtr capacity, out ProjectileResult result);

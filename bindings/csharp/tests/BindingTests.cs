@@ -547,6 +547,10 @@ internal static class BindingTests
             Check(d.Engine == engine && d.Timestep > 0 && d.Substeps >= 1, "profile default " + engine);
             Is(EngineProfiles.Validate(d), Status.Ok, "validate default " + engine);
         }
+        EngineProfile ammo = EngineProfiles.AmmoJs();
+        Check(ammo.Engine == PhysicsEngine.Bullet && ammo.RestitutionThreshold == 0 && ammo.FrictionWarmStart == 0.85f &&
+                  ammo.SplitImpulseCorrection == 0.8f,
+              "profile AmmoJs");
         // The Custom profile is plain semi-implicit Euler: after n steps of dt,
         // v = v0 + g n dt and p = p0 + v0 n dt + g dt^2 n (n + 1) / 2.
         EngineProfile custom = EngineProfiles.Default(PhysicsEngine.Custom);

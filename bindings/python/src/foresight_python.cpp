@@ -900,6 +900,9 @@ PYBIND11_MODULE(foresight, m) {
         });
     m.def("engine_profile", &engineProfile, py::arg("engine"),
           "The named profile of `engine` with the engine's own defaults (timestep 1/60 s).");
+    m.def("ammo_js_profile", &ammoJsProfile,
+          "Bullet as ammo.js 0.0.10 carries it (Bullet 2.83): Bullet's profile with no restitution "
+          "threshold, friction_warm_start 0.85 and split_impulse_correction 0.8.");
     m.def("engine_name", &engineName, py::arg("engine"), "The profile's name, e.g. 'jolt'.");
     m.def("combine_material", &combineMaterial, py::arg("rule"), py::arg("a"), py::arg("b"),
           "The coefficient a contact uses for two materials under `rule`.");

@@ -114,22 +114,28 @@ def test_bounce_on_a_floor_reflects_with_restitution():
     assert result.bounces == 1
 
 
-@pytest.mark.parametrize("method", ["stepped", "exact", "engine"])
+@pytest.mark.parametrize("method", ["stepped", "exact", "engine", "ammo"])
 def test_projectiles_match_the_cli(cli_predict, method):
     world = {"planes": [{"normal": [0, 1, 0], "distance": 0}],
              "boxes": [{"center": [0, 1.5, 10], "half_extents": [5, 1.5, 0.25], "orientation": IDENTITY,
                         "restitution": 0.2, "friction": 0.6}],
              "spheres": [{"center": [3, 0, 3], "radius": 1}],
              "triangles": [[[-6, 0.01, 0], [-5, 0.01, 0], [-6, 0.01, 1]]]}
-    scenario = {"id": "g", "model": "projectile", "method": method, "position": [0, 1.6, 0],
-                "velocity": [0.5, 4, 12], "time": 1.5, "restitution": 0.5, "friction": 0.3, "radius": 0.05}
+    scenario = {"id": "g", "model": "projectile", "method": "engine" if method == "ammo" else method,
+                "position": [0, 1.6, 0], "velocity": [0.5, 4, 12], "time": 1.5, "restitution": 0.5, "friction": 0.3, "radius": 0.05}
     settings = fs.ProjectileSettings(restitution=0.5, friction=0.3, radius=0.05)
     settings.method = {"stepped": fs.ProjectileMethod.Stepped, "exact": fs.ProjectileMethod.Exact,
-                       "engine": fs.ProjectileMethod.Engine}[method]
+                       "engine": fs.ProjectileMethod.Engine, "ammo": fs.ProjectileMethod.Engine}[method]
     if method == "engine":
         scenario["engine"] = {"profile": "bullet", "linear_damping": 0.3}
         profile = fs.engine_profile(fs.PhysicsEngine.Bullet)
         profile.linear_damping = 0.3  # an overridden field reaches the library
+        settings.engine = profile
+    if method == "ammo":  # the scenario format's "ammo" profile is the library's ammo_js_profile()
+        scenario["engine"] = {"profile": "ammo", "linear_damping": 0.3}
+        profile = fs.ammo_js_profile()
+        assert profile.friction_warm_start == pytest.approx(0.85) and profile.restitution_threshold == 0
+        profile.linear_damping = 0.3
         settings.engine = profile
     ref = cli_predict({"world": world, "predictions": [scenario]})["g"]
 
