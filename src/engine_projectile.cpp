@@ -1420,17 +1420,11 @@ private:
     // of whose rows moved by more than 1e-4 m/s rests for the step's remaining iterations.
     void solveGodotContacts(DVec3& v) {
         const double dt = mRec.dt;
-        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
+        const double invInertia = armInverseInertia();
         constexpr double kMinVelocity = 1e-4;
         constexpr int kIterations = 8;
-        const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) {
-            v += impulse;
-            mAngular += invInertia * glm::cross(arm, impulse);
-        };
-        const auto massAlong = [&](const DVec3& arm, const DVec3& d) {
-            const DVec3 c = glm::cross(arm, d);
-            return 1.0 / (1.0 + invInertia * glm::dot(c, c));
-        };
+        const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) { applyAtArm(impulse, arm, v); };
+        const auto massAlong = [&](const DVec3& arm, const DVec3& d) { return rowMass(arm, d); };
         DVec3 biased(0.0), biasedSpin(0.0);
         struct Row {
             ManifoldPoint* p;
@@ -1809,7 +1803,6 @@ private:
     // point that ends with no normal impulse keeps its warm-started friction.
     void solveBulletManifold(const DVec3& v0, DVec3& v) {
         const double dt = mRec.dt;
-        const double invInertia = mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0;
         const double warmNormal = kBulletWarmStart;
         const double warmFriction = static_cast<double>(mProfile.frictionWarmStart);
         const DVec3 before = v0 * mRec.d, after = v, spin = mAngular;
@@ -1825,14 +1818,8 @@ private:
             if (mSurfaces[i].acting && mSurfaces[i].predictive) order[count++] = i;
         for (int i = mCount - 1; i >= 0; --i)
             if (mSurfaces[i].acting && !mSurfaces[i].predictive) order[count++] = i;
-        const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) {
-            v += impulse;
-            mAngular += invInertia * glm::cross(arm, impulse);
-        };
-        const auto massAlong = [&](const DVec3& arm, const DVec3& d) {
-            const DVec3 c = glm::cross(arm, d);
-            return 1.0 / (1.0 + invInertia * glm::dot(c, c));
-        };
+        const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) { applyAtArm(impulse, arm, v); };
+        const auto massAlong = [&](const DVec3& arm, const DVec3& d) { return rowMass(arm, d); };
         for (int q = 0; q < count; ++q) {
             Surface& s = mSurfaces[order[q]];
             // The predictive contact never bounces (restitution 0).
@@ -2548,6 +2535,21 @@ private:
             mAngular += -(inverseInertiaFactor() * arm / (mRadius * mRadius)) * glm::cross(normal, impulse);
         }
     }
+
+    // An impulse (per unit mass) at `arm` from the centre: the velocity and the spin it adds.
+    void applyAtArm(const DVec3& impulse, const DVec3& arm, DVec3& v) {
+        v += impulse;
+        mAngular += armInverseInertia() * glm::cross(arm, impulse);
+    }
+
+    // The mass (per unit mass) that a row along `d` at `arm` from the centre meets.
+    double rowMass(const DVec3& arm, const DVec3& d) const {
+        const DVec3 c = glm::cross(arm, d);
+        return 1.0 / (1.0 + armInverseInertia() * glm::dot(c, c));
+    }
+
+    // The inverse inertia per unit mass [1/m^2]; 0 when the body does not turn.
+    double armInverseInertia() const { return mRotates ? inverseInertiaFactor() / (mRadius * mRadius) : 0.0; }
 
     // 1 / k for the body's inertia k m R^2: a solid sphere (k = 2/5), Box2D's disk (k = 1/2).
     double inverseInertiaFactor() const { return mProfile.planar ? 2.0 : 2.5; }
