@@ -1390,16 +1390,11 @@ private:
                 }
             }
             if (slot == kManifoldPoints) {
-                int least = -1;
-                double shallowest = depthOf(p);
-                for (int j = 0; j < s.pointCount; ++j) {
-                    const double d = depthOf(s.points[j]);
-                    if (d < shallowest) {
-                        shallowest = d;
-                        least = j;
-                    }
-                }
-                if (least >= 0) s.points[least] = p;
+                // The least deep of the five goes (the first of equal ones; the new one last).
+                int least = 0;
+                for (int j = 1; j < s.pointCount; ++j)
+                    if (depthOf(s.points[j]) < depthOf(s.points[least])) least = j;
+                if (!(depthOf(p) < depthOf(s.points[least]))) s.points[least] = p;
             } else {
                 s.points[slot] = p;
                 if (slot == s.pointCount) ++s.pointCount;
@@ -1489,7 +1484,7 @@ private:
                     const DVec3 before = p.tangentImpulse;
                     p.tangentImpulse += dir * (-speed * massAlong(p.arm, dir));
                     const double size = glm::length(p.tangentImpulse), limit = p.normalImpulse * r.s->mu;
-                    if (size > 1.19209290e-07 && size > limit) p.tangentImpulse *= limit / size;
+                    if (size > 1e-5 && size > limit) p.tangentImpulse *= limit / size;  // CMP_EPSILON
                     applyAt(p.tangentImpulse - before, p.arm);
                     r.active = true;
                 }
