@@ -601,38 +601,48 @@ private:
                 }
                 continue;
             }
-            // EPA: the face with the least room between the centre and it.
-            int nearest = 0;
-            double room = std::numeric_limits<double>::infinity();
-            for (int k = 0; k < 3; ++k) {
-                const double r = static_cast<double>(b.halfExtents[k]) - std::abs(local[k]);
-                if (r < room) {
-                    room = r;
-                    nearest = k;
-                }
+            pushOutNearestFace(b);
+        }
+    }
+
+    // A sphere whose centre a step left inside box `b` (inside it shrunk by its margin or
+    // rounding): Bullet's EPA and the penetration tests of Jolt, PhysX and GodotPhysics measure
+    // the overlap along the face nearest the centre, so a ball that went past a box's middle is
+    // pushed out of the far side. A surface of that box found by the casts becomes that face.
+    void pushOutNearestFace(const OrientedBox& b) {
+        const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
+        const glm::dquat toLocal = glm::conjugate(q);
+        const DVec3 local = toLocal * (mPosition - DVec3(b.center));
+        int nearest = 0;
+        double room = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < 3; ++k) {
+            const double r = static_cast<double>(b.halfExtents[k]) - std::abs(local[k]);
+            if (r < room) {
+                room = r;
+                nearest = k;
             }
-            DVec3 axis(0.0);
-            axis[nearest] = local[nearest] < 0.0 ? -1.0 : 1.0;
-            const DVec3 n = q * axis;
-            for (int i = 0; i < mCount; ++i) {
-                Surface& s = mSurfaces[i];
-                if (s.predictive || s.floatContact) continue;
-                // One of this box's faces: along one of its axes, its plane through that face.
-                const DVec3 along = toLocal * s.normal;
-                int face = -1;
-                for (int k = 0; k < 3; ++k)
-                    if (std::abs(along[k]) > 0.999) face = k;
-                if (face < 0) continue;
-                const DVec3 onFace = toLocal * (s.touch - s.normal * mRadius - DVec3(b.center));
-                if (std::abs(std::abs(onFace[face]) - static_cast<double>(b.halfExtents[face])) > 1e-3) continue;
-                if (glm::dot(s.normal, n) < 0.999) {
-                    s.normal = n;
-                    s.gap = -room - mRadius;
-                    s.touch = mPosition - n * s.gap;
-                    s.settled = false;
-                }
-                break;
+        }
+        DVec3 axis(0.0);
+        axis[nearest] = local[nearest] < 0.0 ? -1.0 : 1.0;
+        const DVec3 n = q * axis;
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (s.predictive || s.floatContact) continue;
+            // One of this box's faces: along one of its axes, its plane through that face.
+            const DVec3 along = toLocal * s.normal;
+            int face = -1;
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(along[k]) > 0.999) face = k;
+            if (face < 0) continue;
+            const DVec3 onFace = toLocal * (s.touch - s.normal * mRadius - DVec3(b.center));
+            if (std::abs(std::abs(onFace[face]) - static_cast<double>(b.halfExtents[face])) > 1e-3) continue;
+            if (glm::dot(s.normal, n) < 0.999) {
+                s.normal = n;
+                s.gap = -room - mRadius;
+                s.touch = mPosition - n * s.gap;
+                s.settled = false;
             }
+            return;
         }
     }
 
@@ -809,6 +819,17 @@ private:
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
         if (bullet) measureAsBullet();
         if (bullet) bulletNarrowPhaseCases();
+        // The other engines alike, for a centre inside a box shrunk by its rounding (Jolt's
+        // convex radius; the others' boxes are sharp). Box2D's time of impact keeps its own.
+        if (!bullet && mCount > 0 && mWorld == &mLocal && !mProfile.planar)
+            for (const OrientedBox& b : mLocal.boxes()) {
+                const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
+                const DVec3 local = glm::conjugate(q) * (mPosition - DVec3(b.center));
+                bool inside = true;
+                for (int k = 0; k < 3; ++k)
+                    inside = inside && std::abs(local[k]) < static_cast<double>(b.halfExtents[k] - b.rounding);
+                if (inside) pushOutNearestFace(b);
+            }
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
