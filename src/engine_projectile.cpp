@@ -114,7 +114,7 @@ struct Surface {
     int pointCount = 0;
     // The Bullet profiles: this step's contact as Bullet's float GJK measured it
     // (EngineRun::measureAsBullet), or its point on the sphere only, next to the box shrunk by its
-    // margin (EngineRun::bulletNarrowPhaseCases).
+    // margin (EngineRun::narrowPhaseInsideBoxes).
     bool floatContact = false;
     DVec3 floatArm{0.0};        // from the centre to the contact point on the sphere [m]
     DVec3 floatOnSurface{0.0};  // the contact point on the box [m]
@@ -517,10 +517,7 @@ private:
         if (!mFloatFlight || mWorld != &mLocal || mCount == 0) return;
         const auto radius = static_cast<float>(mRadius);
         for (const OrientedBox& b : mLocal.boxes()) {
-            detail::BulletBox box = bulletBoxOf(b);
-            box.basis = detail::bulletBasis(b.orientation.x, b.orientation.y, b.orientation.z, b.orientation.w);
-            box.origin = detail::BulletVec{static_cast<float>(b.center.x), static_cast<float>(b.center.y),
-                                           static_cast<float>(b.center.z)};
+            const detail::BulletBox box = bulletBoxOf(b);
             const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
                 box, mFloatPosition, radius, detail::bulletContactDistanceSquared(box, radius), true);
             if (!c.handled || !c.found) continue;
@@ -545,70 +542,64 @@ private:
         }
     }
 
-    // Two answers of Bullet's narrow phase (btGjkPairDetector, box A and sphere B) that differ
-    // from the closest points, for the Bullet profiles' boxes that measureAsBullet did not
-    // measure. Both depend on where the sphere's centre lies against the box shrunk by its margin
-    // (the inner box: GJK runs between it and the centre, the margins added after):
-    // - Outside it by less than 1 mm: GJK stops on its "too close" exit (a separating axis
-    //   shorter than sqrt(REL_ERROR2)) and scales the sphere's point by that short axis over the
-    //   previous, longer one: the manifold point on the sphere lies near its centre. The port of
-    //   that GJK (bullet_gjk.h) gives the point, from the centre rounded to float (within 1 % of
-    //   the radius of Bullet's in 998 of 1000 such cases, the test says); the normal and the gap
-    //   stay the profile's. A short lever arm: friction hardly spins the ball, and a deep bounce
-    //   skids at its friction limit where it would otherwise roll.
-    // - Inside it: EPA answers, with the face of the box nearest the centre and the depth from
-    //   there, not the face the ball came in through. A surface of that box found by the casts
-    //   becomes that face: a ball that went past the middle of a box is pushed out beyond it.
-    void bulletNarrowPhaseCases() {
+    // Where the sphere's centre lies against each gathered box shrunk by its margin (Bullet) or
+    // its rounding (Jolt's convex radius; PhysX's and Godot's boxes are sharp), the engines'
+    // narrow phases answer otherwise than the closest points:
+    // - Inside it: Bullet's EPA and the penetration tests of Jolt, PhysX and GodotPhysics measure
+    //   the overlap along the face nearest the centre (pushOutNearestFace). Box2D (planar) is
+    //   left out: its time of impact stops the ball first.
+    // - Bullet, outside it by less than 1 mm: GJK stops on its "too close" exit (a separating
+    //   axis shorter than sqrt(REL_ERROR2)) and scales the sphere's point by that short axis over
+    //   the previous, longer one: the manifold point on the sphere lies near its centre. The port
+    //   of that GJK (bullet_gjk.h) gives the point, from the centre rounded to float (within 1 %
+    //   of the radius of Bullet's in 998 of 1000 such cases, the test says); the normal and the
+    //   gap stay the profile's. A short lever arm: friction hardly spins the ball, and a deep
+    //   bounce skids at its friction limit where it would otherwise roll.
+    // Boxes measureAsBullet measured keep that.
+    void narrowPhaseInsideBoxes(bool bullet) {
         if (mCount == 0 || mWorld != &mLocal) return;
         for (const OrientedBox& b : mLocal.boxes()) {
-            const detail::BulletBox box = bulletBoxOf(b);
-            const double margin = box.margin;
+            const detail::BulletBox box = bullet ? bulletBoxOf(b) : detail::BulletBox{};
+            const double shrink = bullet ? static_cast<double>(box.margin) : static_cast<double>(b.rounding);
             const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
-            const glm::dquat toLocal = glm::conjugate(q);
-            const DVec3 local = toLocal * (mPosition - DVec3(b.center));
-            DVec3 outside(0.0);  // from the inner box to the centre, in the box's frame
+            const DVec3 local = glm::conjugate(q) * (mPosition - DVec3(b.center));
+            DVec3 outside(0.0);  // from the shrunk box to the centre, in the box's frame
             for (int k = 0; k < 3; ++k) {
-                const double beyond = std::abs(local[k]) - (static_cast<double>(b.halfExtents[k]) - margin);
+                const double beyond = std::abs(local[k]) - (static_cast<double>(b.halfExtents[k]) - shrink);
                 if (beyond > 0.0) outside[k] = local[k] < 0.0 ? -beyond : beyond;
             }
             const double core = glm::length(outside);
-            if (core > 0.0) {
-                if (core >= kBulletTooClose) continue;
-                const DVec3 n = q * (outside / core);
-                for (int i = 0; i < mCount; ++i) {
-                    Surface& s = mSurfaces[i];
-                    if (s.predictive || s.floatContact || glm::dot(s.normal, n) < 0.99 ||
-                        std::abs(s.gap - (core - margin - mRadius)) > 1e-3)
-                        continue;
-                    detail::BulletBox placed = box;
-                    placed.basis =
-                        detail::bulletBasis(b.orientation.x, b.orientation.y, b.orientation.z, b.orientation.w);
-                    placed.origin = detail::BulletVec{static_cast<float>(b.center.x), static_cast<float>(b.center.y),
-                                                      static_cast<float>(b.center.z)};
-                    const detail::BulletVec centre{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
-                                                   static_cast<float>(mPosition.z)};
-                    const auto radius = static_cast<float>(mRadius);
-                    const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
-                        placed, centre, radius, detail::bulletContactDistanceSquared(placed, radius), true);
-                    if (c.handled && c.found) {
-                        s.floatContact = true;
-                        s.floatArm =
-                            DVec3(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z) - DVec3(centre.x, centre.y, centre.z);
-                        s.floatOnSurface = mPosition + s.floatArm - s.normal * s.gap;
-                    }
-                    break;
-                }
-                continue;
-            }
-            pushOutNearestFace(b);
+            if (core == 0.0)
+                pushOutNearestFace(b);
+            else if (bullet && core < kBulletTooClose)
+                shortLeverArm(box, q * (outside / core), core - shrink - mRadius);
         }
     }
 
-    // A sphere whose centre a step left inside box `b` (inside it shrunk by its margin or
-    // rounding): Bullet's EPA and the penetration tests of Jolt, PhysX and GodotPhysics measure
-    // the overlap along the face nearest the centre, so a ball that went past a box's middle is
-    // pushed out of the far side. A surface of that box found by the casts becomes that face.
+    // Bullet's "too close" contact with `box` (narrowPhaseInsideBoxes): the surface of that box
+    // (its normal `n`, its gap `gap`) gets the port's point on the sphere.
+    void shortLeverArm(const detail::BulletBox& box, const DVec3& n, double gap) {
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (s.predictive || s.floatContact || glm::dot(s.normal, n) < 0.99 || std::abs(s.gap - gap) > 1e-3)
+                continue;
+            const detail::BulletVec centre{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
+                                           static_cast<float>(mPosition.z)};
+            const auto radius = static_cast<float>(mRadius);
+            const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
+                box, centre, radius, detail::bulletContactDistanceSquared(box, radius), true);
+            if (c.handled && c.found) {
+                s.floatContact = true;
+                s.floatArm = DVec3(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z) - DVec3(centre.x, centre.y, centre.z);
+                s.floatOnSurface = mPosition + s.floatArm - s.normal * s.gap;
+            }
+            return;
+        }
+    }
+
+    // A sphere whose centre a step left inside box `b` (narrowPhaseInsideBoxes): a surface of that
+    // box found by the casts becomes the face nearest the centre, with the depth from there, so a
+    // ball that went past a box's middle is pushed out of the far side.
     void pushOutNearestFace(const OrientedBox& b) {
         const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
         const glm::dquat toLocal = glm::conjugate(q);
@@ -646,15 +637,18 @@ private:
         }
     }
 
-    // A gathered box as Bullet builds it: Godot 3 sets its boxes' margin after construction (the
-    // box's rounding, 0.04 m); a Bullet box keeps the constructor's (0.04 m, or a tenth of the
-    // smallest half extent) unless its rounding says otherwise.
+    // A gathered box as Bullet builds and places it: Godot 3 sets its boxes' margin after
+    // construction (the box's rounding, 0.04 m); a Bullet box keeps the constructor's (0.04 m, or
+    // a tenth of the smallest half extent) unless its rounding says otherwise.
     detail::BulletBox bulletBoxOf(const OrientedBox& b) const {
         detail::BulletBox box;
         const detail::BulletVec h{b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
         detail::bulletBoxShape(h, -1.0f, box);
         if (mProfile.engine == PhysicsEngine::Godot3Bullet || std::abs(box.margin - b.rounding) > 1e-6f * box.margin)
             detail::bulletBoxShape(h, b.rounding, box);
+        box.basis = detail::bulletBasis(b.orientation.x, b.orientation.y, b.orientation.z, b.orientation.w);
+        box.origin = detail::BulletVec{static_cast<float>(b.center.x), static_cast<float>(b.center.y),
+                                       static_cast<float>(b.center.z)};
         return box;
     }
 
@@ -818,18 +812,7 @@ private:
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
         if (bullet) measureAsBullet();
-        if (bullet) bulletNarrowPhaseCases();
-        // The other engines alike, for a centre inside a box shrunk by its rounding (Jolt's
-        // convex radius; the others' boxes are sharp). Box2D's time of impact keeps its own.
-        if (!bullet && mCount > 0 && mWorld == &mLocal && !mProfile.planar)
-            for (const OrientedBox& b : mLocal.boxes()) {
-                const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
-                const DVec3 local = glm::conjugate(q) * (mPosition - DVec3(b.center));
-                bool inside = true;
-                for (int k = 0; k < 3; ++k)
-                    inside = inside && std::abs(local[k]) < static_cast<double>(b.halfExtents[k] - b.rounding);
-                if (inside) pushOutNearestFace(b);
-            }
+        if (!mProfile.planar) narrowPhaseInsideBoxes(bullet);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
@@ -1375,6 +1358,10 @@ private:
         s.acting = s.pointCount > 0;
     }
 
+    // How deep a contact point's material point on the sphere lies behind its point on the shape,
+    // along its normal, where the body now stands [m]; negative: apart.
+    double overlapOf(const ManifoldPoint& p) const { return glm::dot(p.normal, p.onSurface - (mPosition + p.arm)); }
+
     // GodotPhysics 3 (BodyPairSW): up to four contacts per shape pair, each fixed on the sphere's
     // material (its arm turns with the body) and on the shape. Every step the contacts that
     // separated by more than 0.05 m or slid apart by more than that go; the narrow phase's new
@@ -1382,12 +1369,9 @@ private:
     // within 0.01 m of its own, keeping its impulses, or is added (a fifth: the least deep goes).
     void updateGodotContacts(Surface& s) {
         constexpr double kMaxSeparation = 0.05, kRecycle = 0.01;
-        const auto depthOf = [&](const ManifoldPoint& p) {
-            return glm::dot(p.normal, p.onSurface - (mPosition + p.arm));
-        };
         for (int j = 0; j < s.pointCount; ++j) {
             ManifoldPoint& p = s.points[j];
-            const double depth = depthOf(p);
+            const double depth = overlapOf(p);
             const DVec3 apart = p.onSurface - p.normal * depth - (mPosition + p.arm);
             if (depth < -kMaxSeparation || glm::length(apart) > kMaxSeparation) {
                 s.points[j] = s.points[s.pointCount - 1];
@@ -1414,8 +1398,8 @@ private:
                 // The least deep of the five goes (the first of equal ones; the new one last).
                 int least = 0;
                 for (int j = 1; j < s.pointCount; ++j)
-                    if (depthOf(s.points[j]) < depthOf(s.points[least])) least = j;
-                if (!(depthOf(p) < depthOf(s.points[least]))) s.points[least] = p;
+                    if (overlapOf(s.points[j]) < overlapOf(s.points[least])) least = j;
+                if (!(overlapOf(p) < overlapOf(s.points[least]))) s.points[least] = p;
             } else {
                 s.points[slot] = p;
                 if (slot == s.pointCount) ++s.pointCount;
@@ -1423,7 +1407,7 @@ private:
         }
         s.acting = false;
         for (int j = 0; j < s.pointCount; ++j)
-            if (depthOf(s.points[j]) > 0.0) s.acting = true;
+            if (overlapOf(s.points[j]) > 0.0) s.acting = true;
     }
 
     // GodotPhysics 3's solve (BodyPairSW::setup and solve) over the persistent contacts. Setup:
@@ -1456,7 +1440,7 @@ private:
             Surface& s = mSurfaces[i];
             for (int j = 0; j < s.pointCount; ++j) {
                 ManifoldPoint& p = s.points[j];
-                const double depth = glm::dot(p.normal, p.onSurface - (mPosition + p.arm));
+                const double depth = overlapOf(p);
                 if (!(depth > 0.0)) continue;
                 Row& r = rows[static_cast<std::size_t>(count++)];
                 r = Row{&p, &s, 0.0, 0.0, massAlong(p.arm, p.normal), 0.0, 0.0, true};
