@@ -10,11 +10,11 @@
 // rounds the closest point by micrometres: the contact normal comes out tilted by up to 1e-4 rad
 // and the contact point off the sphere's axis, and both change completely with the last bit of
 // the sphere's position. Only the same operations in the same order give the same contact; this
-// is that computation, step for step, for the case where GJK alone decides (the sphere's centre
-// outside the box shrunk by its margin by more than twice Bullet's penetration tolerance). Checked
-// bit for bit against the linked btGjkPairDetector (3.24) in the Bullet tests. Nearer than 1 mm,
-// where Bullet asks EPA too, it can give GJK's answer, which Bullet keeps in most cases (close
-// to it, not to the bit: the Bullet tests measure how close).
+// is that computation, step for step. Where GJK cannot decide (the sphere's centre inside the box
+// shrunk by its margin, or within Bullet's penetration tolerance of it), Bullet asks its
+// penetration depth solver: EPA on the two shapes with their margins, whose point on the sphere
+// lies off the normal through the centre. With `epa` that is reproduced too. Checked bit for bit
+// against the linked btGjkPairDetector (3.24) in the Bullet tests, in both cases.
 
 #include "internal.h"
 
@@ -67,8 +67,13 @@ struct BulletGjkContact {
 /// penetration tolerance (1 mm) is answered too, with GJK's own result: Bullet hands such a pair
 /// to EPA as well but keeps GJK's result unless EPA's is deeper, which it is only by rounding (in
 /// about one case of ten; the test measures it).
+/// With `epa`, every case is answered as Bullet does: where GJK cannot (the centre inside the box
+/// shrunk by its margin, within the penetration tolerance of it, a simplex that filled up),
+/// btGjkEpaPenetrationDepthSolver's answer (btGjkEpaSolver2: EPA on the shapes with their margins,
+/// or its own GJK without them) as btGjkPairDetector combines it with GJK's. Bit for bit against
+/// the linked Bullet 3.24 in the Bullet tests, these cases included.
 BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& center, float radius,
-                                    float maximumDistanceSquared, bool tooClose = false);
+                                    float maximumDistanceSquared, bool tooClose = false, bool epa = false);
 
 }  // namespace detail
 FORESIGHT_NAMESPACE_END

@@ -542,59 +542,96 @@ private:
         }
     }
 
-    // Where the sphere's centre lies against each gathered box shrunk by its margin (Bullet) or
-    // its rounding (Jolt's convex radius; PhysX's and Godot's boxes are sharp), the engines'
-    // narrow phases answer otherwise than the closest points:
-    // - Inside it: Bullet's EPA and the penetration tests of Jolt, PhysX and GodotPhysics measure
-    //   the overlap along the face nearest the centre (pushOutNearestFace). Box2D (planar) is
-    //   left out: its time of impact stops the ball first.
-    // - Bullet, outside it by less than 1 mm: GJK stops on its "too close" exit (a separating
-    //   axis shorter than sqrt(REL_ERROR2)) and scales the sphere's point by that short axis over
-    //   the previous, longer one: the manifold point on the sphere lies near its centre. The port
-    //   of that GJK (bullet_gjk.h) gives the point, from the centre rounded to float (within 1 %
-    //   of the radius of Bullet's in 998 of 1000 such cases, the test says); the normal and the
-    //   gap stay the profile's. A short lever arm: friction hardly spins the ball, and a deep
-    //   bounce skids at its friction limit where it would otherwise roll.
+    // Where the sphere's centre lies against each gathered box, the engines' narrow phases answer
+    // otherwise than the closest points the casts measure:
+    // - Jolt, PhysX and GodotPhysics, the centre inside the box shrunk by its rounding (Jolt's
+    //   convex radius; PhysX's and Godot's boxes are sharp): their penetration tests measure the
+    //   overlap along the face nearest the centre (pushOutNearestFace). Box2D (planar) is left
+    //   out: its time of impact stops the ball first.
+    // - Bullet: its own narrow phase, ported (bulletPenetration).
     // Boxes measureAsBullet measured keep that.
     void narrowPhaseInsideBoxes(bool bullet) {
         if (mCount == 0 || mWorld != &mLocal) return;
         for (const OrientedBox& b : mLocal.boxes()) {
-            const detail::BulletBox box = bullet ? bulletBoxOf(b) : detail::BulletBox{};
-            const double shrink = bullet ? static_cast<double>(box.margin) : static_cast<double>(b.rounding);
-            const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
-            const DVec3 local = glm::conjugate(q) * (mPosition - DVec3(b.center));
-            DVec3 outside(0.0);  // from the shrunk box to the centre, in the box's frame
-            for (int k = 0; k < 3; ++k) {
-                const double beyond = std::abs(local[k]) - (static_cast<double>(b.halfExtents[k]) - shrink);
-                if (beyond > 0.0) outside[k] = local[k] < 0.0 ? -beyond : beyond;
+            if (bullet) {
+                const detail::BulletBox box = bulletBoxOf(b);
+                bulletPenetration(b, box, !centreNear(b, static_cast<double>(box.margin), kBulletTooClose));
+                continue;
             }
-            const double core = glm::length(outside);
-            if (core == 0.0)
-                pushOutNearestFace(b);
-            else if (bullet && core < kBulletTooClose)
-                shortLeverArm(box, q * (outside / core), core - shrink - mRadius);
+            if (centreNear(b, static_cast<double>(b.rounding), 0.0)) pushOutNearestFace(b);
         }
     }
 
-    // Bullet's "too close" contact with `box` (narrowPhaseInsideBoxes): the surface of that box
-    // (its normal `n`, its gap `gap`) gets the port's point on the sphere.
-    void shortLeverArm(const detail::BulletBox& box, const DVec3& n, double gap) {
-        for (int i = 0; i < mCount; ++i) {
+    // Whether the sphere's centre lies within `reach` [m] of box `b` shrunk by `shrink` [m] (in it
+    // for a reach of 0).
+    bool centreNear(const OrientedBox& b, double shrink, double reach) const {
+        const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
+        const DVec3 local = glm::abs(glm::conjugate(q) * (mPosition - DVec3(b.center)));
+        const DVec3 beyond = glm::max(local - (DVec3(b.halfExtents) - shrink), 0.0);
+        const double outside = glm::length(beyond);
+        return reach > 0.0 ? outside < reach : outside == 0.0;
+    }
+
+    // The gap given to a surface whose box the sphere has passed (bulletPenetration) [m].
+    static constexpr double kPassedThrough = 1.0;
+
+    // Bullet's contact with box `b` (btGjkPairDetector, ported to the bit: bullet_gjk.h with
+    // `epa`), from the centre as Bullet holds it (the float flight while it lasts, else rounded to
+    // float), given to the surface of that box the casts found (none found: nothing to do):
+    // - where GJK hands the pair to its penetration depth solver (the centre inside the box shrunk
+    //   by its margin, or within 1 mm of it, `deep`): always. EPA's point on the sphere's curved
+    //   surface lies off the normal through the centre, by up to a hundredth of the radius, and
+    //   GJK's "too close" exit puts it near the centre: the lever arm of the bounce, which sets the
+    //   spin and so the friction's work;
+    // - elsewhere, while the casts' surface penetrates: where Bullet's normal or depth differ from
+    //   it (a fast ball that a step carried past the middle of a wall, or round its edge onto the
+    //   next face: Bullet takes the face nearest the centre, and may see the ball leaving);
+    // - a ball a step carried through the box: Bullet, which looks only where the step starts,
+    //   has no contact; the surface is dropped (kPassedThrough).
+    void bulletPenetration(const OrientedBox& b, const detail::BulletBox& box, bool onlyWhereTheyDiffer) {
+        const glm::dquat toLocal = glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
+        // The box shrunk by its margin, whose edges and corners the margin rounds.
+        const auto margin = static_cast<double>(box.margin);
+        const DVec3 inner = DVec3(b.halfExtents) - margin;
+        Surface* found = nullptr;
+        for (int i = 0; i < mCount && !found; ++i) {
             Surface& s = mSurfaces[i];
-            if (s.predictive || s.floatContact || glm::dot(s.normal, n) < 0.99 || std::abs(s.gap - gap) > 1e-3)
-                continue;
-            const detail::BulletVec centre{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
-                                           static_cast<float>(mPosition.z)};
-            const auto radius = static_cast<float>(mRadius);
-            const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
-                box, centre, radius, detail::bulletContactDistanceSquared(box, radius), true);
-            if (c.handled && c.found) {
-                s.floatContact = true;
-                s.floatArm = DVec3(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z) - DVec3(centre.x, centre.y, centre.z);
-                s.floatOnSurface = mPosition + s.floatArm - s.normal * s.gap;
-            }
+            if (s.predictive || s.floatContact) continue;
+            // On that box's surface: the point the sphere touches lies a margin off the inner box.
+            const DVec3 local = glm::abs(toLocal * (s.touch - s.normal * mRadius - DVec3(b.center)));
+            const double out = glm::length(glm::max(local - inner, 0.0));
+            const double room = std::min({inner.x - local.x, inner.y - local.y, inner.z - local.z});
+            if (out > 0.0 ? std::abs(out - margin) <= 1e-3 : margin + room <= 1e-3) found = &s;
+        }
+        if (!found || (onlyWhereTheyDiffer && found->gap >= 0.0)) return;
+        const detail::BulletVec centre = mFloatFlight ? mFloatPosition
+                                                      : detail::BulletVec{static_cast<float>(mPosition.x),
+                                                                          static_cast<float>(mPosition.y),
+                                                                          static_cast<float>(mPosition.z)};
+        const auto radius = static_cast<float>(mRadius);
+        const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
+            box, centre, radius, detail::bulletContactDistanceSquared(box, radius), true, true);
+        Surface& s = *found;
+        if (!c.handled) return;
+        if (!c.found) {
+            if (s.gap >= 0.0) return;
+            s.gap = kPassedThrough;
+            s.touch = mPosition - s.normal * s.gap;
             return;
         }
+        const DVec3 normal = -DVec3(c.normalOnB.x, c.normalOnB.y, c.normalOnB.z);
+        if (onlyWhereTheyDiffer && glm::dot(normal, s.normal) >= 0.99 &&
+            std::abs(s.gap - static_cast<double>(c.distance)) <= 1e-3)
+            return;
+        s.normal = normal;
+        s.gap = c.distance;
+        s.touch = mPosition - s.normal * s.gap;
+        s.settled = false;
+        s.floatContact = true;
+        s.floatArm = DVec3(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z) - DVec3(centre.x, centre.y, centre.z);
+        // btManifoldResult's point on the box: the sphere's point moved along the normal by the depth.
+        s.floatOnSurface = DVec3(c.pointOnB.x + c.normalOnB.x * c.distance, c.pointOnB.y + c.normalOnB.y * c.distance,
+                                 c.pointOnB.z + c.normalOnB.z * c.distance);
     }
 
     // A sphere whose centre a step left inside box `b` (narrowPhaseInsideBoxes): a surface of that
