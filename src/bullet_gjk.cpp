@@ -377,7 +377,6 @@ private:
     bool mNeedsUpdate = true;
 };
 
-
 // --- btGjkEpa2 (Bullet's second GJK and its EPA), float build, for box A and sphere B ----------
 // btGjkPairDetector asks btGjkEpaPenetrationDepthSolver where its own GJK cannot answer: the
 // sphere's centre inside the box shrunk by its margin, within the penetration tolerance of it, or
@@ -400,10 +399,12 @@ constexpr unsigned kEpaMaxVertices = 128;
 // btVector3::normalize and operator/ (a product with the reciprocal).
 BulletVec dividedBy(const BulletVec& v, float s) { return v * (1.0f / s); }
 float length(const BulletVec& v) { return std::sqrt(length2(v)); }
-BulletVec rowsTimes(const std::array<BulletVec, 3>& m, const BulletVec& v) { return {dot(m[0], v), dot(m[1], v), dot(m[2], v)}; }
+BulletVec rowsTimes(const std::array<BulletVec, 3>& m, const BulletVec& v) {
+    return {dot(m[0], v), dot(m[1], v), dot(m[2], v)};
+}
 
 struct BoxSphereDifference {  // MinkowskiDiff
-    BulletVec half;            // the box's half extents without margin
+    BulletVec half;           // the box's half extents without margin
     float boxMargin = 0.0f, radius = 0.0f;
     std::array<BulletVec, 3> toSphere{};  // m_toshape1 (the box's rotation: rows)
     std::array<BulletVec, 3> toBox{};     // m_toshape0's basis (its transpose: rows)
@@ -616,8 +617,10 @@ struct EpaGjk {  // gjkepa2_impl::GJK
             float weights[4] = {};
             unsigned mask = 0;
             float sqdist = 0.0f;
-            if (cs.rank == 2) sqdist = projectOrigin(cs.c[0]->w, cs.c[1]->w, weights, mask);
-            else if (cs.rank == 3) sqdist = projectOrigin(cs.c[0]->w, cs.c[1]->w, cs.c[2]->w, weights, mask);
+            if (cs.rank == 2)
+                sqdist = projectOrigin(cs.c[0]->w, cs.c[1]->w, weights, mask);
+            else if (cs.rank == 3)
+                sqdist = projectOrigin(cs.c[0]->w, cs.c[1]->w, cs.c[2]->w, weights, mask);
             else if (cs.rank == 4)
                 sqdist = projectOrigin(cs.c[0]->w, cs.c[1]->w, cs.c[2]->w, cs.c[3]->w, weights, mask);
             if (sqdist >= 0.0f) {
@@ -699,7 +702,18 @@ struct EpaGjk {  // gjkepa2_impl::GJK
     }
 };
 
-enum class EpaStatus { Valid, Touching, Degenerated, NonConvex, InvalidHull, OutOfFaces, OutOfVertices, AccuracyReached, FallBack, Failed };
+enum class EpaStatus {
+    Valid,
+    Touching,
+    Degenerated,
+    NonConvex,
+    InvalidHull,
+    OutOfFaces,
+    OutOfVertices,
+    AccuracyReached,
+    FallBack,
+    Failed
+};
 
 struct EpaFace {  // sFace
     BulletVec n;
@@ -951,15 +965,23 @@ bool penetrationDepth(const BulletBox& box, const BulletVec& originA, const Bull
     shape.toSphere = box.basis;  // I^T R: R itself, to the bit
     for (int i = 0; i < 3; ++i) {
         const auto column = [&](const BulletVec& row) { return i == 0 ? row.x : i == 1 ? row.y : row.z; };
-        shape.toBox[static_cast<std::size_t>(i)] = BulletVec{column(box.basis[0]), column(box.basis[1]), column(box.basis[2])};
+        shape.toBox[static_cast<std::size_t>(i)] =
+            BulletVec{column(box.basis[0]), column(box.basis[1]), column(box.basis[2])};
     }
     shape.sphereInBox = timesBasis(originB - originA, box.basis);
     const auto safeNormalized = [](BulletVec v) {
         const float l2 = length2(v);
         return l2 >= kSimdEpsilon * kSimdEpsilon ? dividedBy(v, std::sqrt(l2)) : BulletVec{1.0f, 0.0f, 0.0f};
     };
-    const BulletVec guesses[] = {safeNormalized(originB - originA), safeNormalized(originA - originB), {0, 0, 1},
-                                 {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {1, 0, 1}};
+    const BulletVec guesses[] = {safeNormalized(originB - originA),
+                                 safeNormalized(originA - originB),
+                                 {0, 0, 1},
+                                 {0, 1, 0},
+                                 {1, 0, 0},
+                                 {1, 1, 0},
+                                 {1, 1, 1},
+                                 {0, 1, 1},
+                                 {1, 0, 1}};
     for (const BulletVec& guess : guesses) {
         {  // Penetration (with margins)
             EpaGjk gjk;

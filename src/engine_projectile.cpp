@@ -589,7 +589,8 @@ private:
     // - a ball a step carried through the box: Bullet, which looks only where the step starts,
     //   has no contact; the surface is dropped (kPassedThrough).
     void bulletPenetration(const OrientedBox& b, const detail::BulletBox& box, bool onlyWhereTheyDiffer) {
-        const glm::dquat toLocal = glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
+        const glm::dquat toLocal =
+            glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
         // The box shrunk by its margin, whose edges and corners the margin rounds.
         const auto margin = static_cast<double>(box.margin);
         const DVec3 inner = DVec3(b.halfExtents) - margin;
@@ -604,10 +605,10 @@ private:
             if (out > 0.0 ? std::abs(out - margin) <= 1e-3 : margin + room <= 1e-3) found = &s;
         }
         if (!found || (onlyWhereTheyDiffer && found->gap >= 0.0)) return;
-        const detail::BulletVec centre = mFloatFlight ? mFloatPosition
-                                                      : detail::BulletVec{static_cast<float>(mPosition.x),
-                                                                          static_cast<float>(mPosition.y),
-                                                                          static_cast<float>(mPosition.z)};
+        const detail::BulletVec centre =
+            mFloatFlight ? mFloatPosition
+                         : detail::BulletVec{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
+                                             static_cast<float>(mPosition.z)};
         const auto radius = static_cast<float>(mRadius);
         const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
             box, centre, radius, detail::bulletContactDistanceSquared(box, radius), true, true);

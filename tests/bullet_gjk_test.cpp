@@ -206,18 +206,22 @@ TEST(BulletGjk, WithEpaEveryContactIsBulletsToTheBit) {
         if (!ours.found) continue;
         ++found;
         if (gjk.m_lastUsedMethod >= 3) ++handedOver;
-        const bool same3 = same(ours.normalOnB, bullet.m_normalOnBInWorld) && same(ours.pointOnB, bullet.m_pointInWorld) &&
-                           bits(ours.distance) == bits(bullet.m_distance);
+        const bool same3 = same(ours.normalOnB, bullet.m_normalOnBInWorld) &&
+                           same(ours.pointOnB, bullet.m_pointInWorld) && bits(ours.distance) == bits(bullet.m_distance);
         if (!same3) {
             ++mismatched;
             if (mismatched < 10)
-                std::printf("case %d method %d: ours n %.7g %.7g %.7g p %.7g %.7g %.7g d %.7g; bullet n %.7g %.7g %.7g p %.7g %.7g %.7g d %.7g\n", i, gjk.m_lastUsedMethod,
-                            ours.normalOnB.x, ours.normalOnB.y, ours.normalOnB.z, ours.pointOnB.x, ours.pointOnB.y, ours.pointOnB.z, ours.distance,
-                            bullet.m_normalOnBInWorld.x(), bullet.m_normalOnBInWorld.y(), bullet.m_normalOnBInWorld.z(),
-                            bullet.m_pointInWorld.x(), bullet.m_pointInWorld.y(), bullet.m_pointInWorld.z(), bullet.m_distance);
+                std::printf(
+                    "case %d method %d: ours n %.7g %.7g %.7g p %.7g %.7g %.7g d %.7g; bullet n %.7g %.7g %.7g p %.7g "
+                    "%.7g %.7g d %.7g\n",
+                    i, gjk.m_lastUsedMethod, ours.normalOnB.x, ours.normalOnB.y, ours.normalOnB.z, ours.pointOnB.x,
+                    ours.pointOnB.y, ours.pointOnB.z, ours.distance, bullet.m_normalOnBInWorld.x(),
+                    bullet.m_normalOnBInWorld.y(), bullet.m_normalOnBInWorld.z(), bullet.m_pointInWorld.x(),
+                    bullet.m_pointInWorld.y(), bullet.m_pointInWorld.z(), bullet.m_distance);
         }
     }
-    std::printf("BulletGjk with EPA: %d cases, %d contacts, %d from Bullet's depth solver, %d differ\n", kCases, found, handedOver, mismatched);
+    std::printf("BulletGjk with EPA: %d cases, %d contacts, %d from Bullet's depth solver, %d differ\n", kCases, found,
+                handedOver, mismatched);
     EXPECT_EQ(mismatched, 0);
 }
 
@@ -499,8 +503,8 @@ TEST(BulletGjk, FastSmallBallsAtATurnedWallBounceAsInBullet) {
         t.restitution = 0.2 + 0.6 * unit(random);
         t.friction = 0.6 * unit(random);
         const double heading = 0.8 * unit(random) - 0.4, speed = 15.0 + 15.0 * unit(random);
-        t.position = btVector3(btScalar(-3 * std::cos(heading)), btScalar(0.4 + unit(random)),
-                               btScalar(-3 * std::sin(heading)));
+        t.position =
+            btVector3(btScalar(-3 * std::cos(heading)), btScalar(0.4 + unit(random)), btScalar(-3 * std::sin(heading)));
         t.velocity = btVector3(btScalar(speed * std::cos(heading)), btScalar(2 * unit(random)),
                                btScalar(speed * std::sin(heading)));
         t.steps = 60;
