@@ -82,6 +82,45 @@ Placement randomSetup(std::mt19937& random) {
     return s;
 }
 
+// btGjkPairDetector's contact for box A (with `margin`, or Bullet's default when negative) and
+// sphere B, as btConvexConvexAlgorithm asks it: `maximum` is its distance of interest squared, with
+// the manifold's contact breaking threshold (btCollisionDispatcher's relative one: the smaller of
+// the two shapes').
+struct BulletAnswer {
+    btPointCollector contact;
+    float maximum = 0.0f;
+    int method = -1;  // btGjkPairDetector::m_lastUsedMethod (3 and up: the depth solver's)
+};
+BulletAnswer bulletContact(const Placement& s, float margin) {
+    static btVoronoiSimplexSolver simplexSolver;
+    static btGjkEpaPenetrationDepthSolver epa;
+    btBoxShape boxShape(s.half);
+    if (margin >= 0.0f) boxShape.setMargin(margin);
+    btSphereShape sphereShape(s.radius);
+    const float threshold = std::min(boxShape.getContactBreakingThreshold(gContactBreakingThreshold),
+                                     sphereShape.getContactBreakingThreshold(gContactBreakingThreshold));
+    BulletAnswer answer;
+    answer.maximum = boxShape.getMargin() + sphereShape.getMargin() + threshold;
+    answer.maximum *= answer.maximum;
+    btGjkPairDetector gjk(&boxShape, &sphereShape, &simplexSolver, &epa);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA = btTransform(s.rotation, s.origin);
+    input.m_transformB = btTransform(btQuaternion::getIdentity(), s.center);
+    input.m_maximumDistanceSquared = answer.maximum;
+    gjk.getClosestPoints(input, answer.contact, nullptr);
+    answer.method = gjk.m_lastUsedMethod;
+    return answer;
+}
+
+// The same box as the port takes it.
+BulletBox portBox(const Placement& s, float margin) {
+    BulletBox box;
+    foresight::detail::bulletBoxShape(BulletVec{s.half.x(), s.half.y(), s.half.z()}, margin, box);
+    box.basis = foresight::detail::bulletBasis(s.rotation.x(), s.rotation.y(), s.rotation.z(), s.rotation.w());
+    box.origin = BulletVec{s.origin.x(), s.origin.y(), s.origin.z()};
+    return box;
+}
+
 TEST(BulletGjk, BoxShapeAndBasisAsBullet) {
     std::mt19937 random(7);
     for (int i = 0; i < 2000; ++i) {
@@ -106,33 +145,14 @@ TEST(BulletGjk, BoxShapeAndBasisAsBullet) {
 // 2 mm of the box shrunk by its margin, or inside it) are the only ones it declines.
 TEST(BulletGjk, ContactsAreBulletsToTheBit) {
     std::mt19937 random(20261128);
-    btVoronoiSimplexSolver simplexSolver;
-    btGjkEpaPenetrationDepthSolver epa;
     int handled = 0, found = 0, tilted = 0;
     constexpr int kCases = 20000;
     for (int i = 0; i < kCases; ++i) {
         const Placement s = randomSetup(random);
-        btBoxShape boxShape(s.half);
-        btSphereShape sphereShape(s.radius);
-        // btConvexConvexAlgorithm's distance of interest, with the manifold's contact breaking
-        // threshold (btCollisionDispatcher's relative one: the smaller of the two shapes').
-        const float threshold = std::min(boxShape.getContactBreakingThreshold(gContactBreakingThreshold),
-                                         sphereShape.getContactBreakingThreshold(gContactBreakingThreshold));
-        float maximum = boxShape.getMargin() + sphereShape.getMargin() + threshold;
-        maximum *= maximum;
-
-        btGjkPairDetector gjk(&boxShape, &sphereShape, &simplexSolver, &epa);
-        btGjkPairDetector::ClosestPointInput input;
-        input.m_transformA = btTransform(s.rotation, s.origin);
-        input.m_transformB = btTransform(btQuaternion::getIdentity(), s.center);
-        input.m_maximumDistanceSquared = maximum;
-        btPointCollector bullet;
-        gjk.getClosestPoints(input, bullet, nullptr);
-
-        BulletBox box;
-        foresight::detail::bulletBoxShape(BulletVec{s.half.x(), s.half.y(), s.half.z()}, -1.0f, box);
-        box.basis = foresight::detail::bulletBasis(s.rotation.x(), s.rotation.y(), s.rotation.z(), s.rotation.w());
-        box.origin = BulletVec{s.origin.x(), s.origin.y(), s.origin.z()};
+        const BulletAnswer answer = bulletContact(s, -1.0f);
+        const btPointCollector& bullet = answer.contact;
+        const float maximum = answer.maximum;
+        const BulletBox box = portBox(s, -1.0f);
         ASSERT_EQ(bits(foresight::detail::bulletContactDistanceSquared(box, s.radius)), bits(maximum)) << "case " << i;
         const auto ours = foresight::detail::bulletBoxSphereGjk(
             box, BulletVec{s.center.x(), s.center.y(), s.center.z()}, s.radius, maximum);
@@ -166,9 +186,7 @@ TEST(BulletGjk, ContactsAreBulletsToTheBit) {
 TEST(BulletGjk, WithEpaEveryContactIsBulletsToTheBit) {
     std::mt19937 random(20261129);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    btVoronoiSimplexSolver simplexSolver;
-    btGjkEpaPenetrationDepthSolver epa;
-    int found = 0, handedOver = 0, mismatched = 0;
+    int found = 0, handedOver = 0;
     constexpr int kCases = 20000;
     for (int i = 0; i < kCases; ++i) {
         Placement s = randomSetup(random);
@@ -178,51 +196,27 @@ TEST(BulletGjk, WithEpaEveryContactIsBulletsToTheBit) {
         btVector3 inward = -local;
         if (inward.length2() > 0) inward.normalize();
         s.center = t(local + inward * (0.3f * unit(random)));
-        btBoxShape boxShape(s.half);
         const int marginKind = static_cast<int>(random() % 3);
         const float margin = marginKind == 0 ? -1.0f : marginKind == 1 ? 0.0f : 0.04f * unit(random);
-        if (margin >= 0.0f) boxShape.setMargin(margin);
-        btSphereShape sphereShape(s.radius);
-        const float threshold = std::min(boxShape.getContactBreakingThreshold(gContactBreakingThreshold),
-                                         sphereShape.getContactBreakingThreshold(gContactBreakingThreshold));
-        float maximum = boxShape.getMargin() + sphereShape.getMargin() + threshold;
-        maximum *= maximum;
-        btGjkPairDetector gjk(&boxShape, &sphereShape, &simplexSolver, &epa);
-        btGjkPairDetector::ClosestPointInput input;
-        input.m_transformA = btTransform(s.rotation, s.origin);
-        input.m_transformB = btTransform(btQuaternion::getIdentity(), s.center);
-        input.m_maximumDistanceSquared = maximum;
-        btPointCollector bullet;
-        gjk.getClosestPoints(input, bullet, nullptr);
-
-        BulletBox box;
-        foresight::detail::bulletBoxShape(BulletVec{s.half.x(), s.half.y(), s.half.z()}, margin, box);
-        box.basis = foresight::detail::bulletBasis(s.rotation.x(), s.rotation.y(), s.rotation.z(), s.rotation.w());
-        box.origin = BulletVec{s.origin.x(), s.origin.y(), s.origin.z()};
+        const BulletAnswer answer = bulletContact(s, margin);
+        const btPointCollector& bullet = answer.contact;
+        const float maximum = answer.maximum;
+        const BulletBox box = portBox(s, margin);
         const BulletVec centre{s.center.x(), s.center.y(), s.center.z()};
         const auto ours = foresight::detail::bulletBoxSphereGjk(box, centre, s.radius, maximum, true, true);
         ASSERT_TRUE(ours.handled) << "case " << i;
         ASSERT_EQ(ours.found, bullet.m_hasResult) << "case " << i;
         if (!ours.found) continue;
         ++found;
-        if (gjk.m_lastUsedMethod >= 3) ++handedOver;
-        const bool same3 = same(ours.normalOnB, bullet.m_normalOnBInWorld) &&
-                           same(ours.pointOnB, bullet.m_pointInWorld) && bits(ours.distance) == bits(bullet.m_distance);
-        if (!same3) {
-            ++mismatched;
-            if (mismatched < 10)
-                std::printf(
-                    "case %d method %d: ours n %.7g %.7g %.7g p %.7g %.7g %.7g d %.7g; bullet n %.7g %.7g %.7g p %.7g "
-                    "%.7g %.7g d %.7g\n",
-                    i, gjk.m_lastUsedMethod, ours.normalOnB.x, ours.normalOnB.y, ours.normalOnB.z, ours.pointOnB.x,
-                    ours.pointOnB.y, ours.pointOnB.z, ours.distance, bullet.m_normalOnBInWorld.x(),
-                    bullet.m_normalOnBInWorld.y(), bullet.m_normalOnBInWorld.z(), bullet.m_pointInWorld.x(),
-                    bullet.m_pointInWorld.y(), bullet.m_pointInWorld.z(), bullet.m_distance);
-        }
+        if (answer.method >= 3) ++handedOver;
+        ASSERT_TRUE(same(ours.normalOnB, bullet.m_normalOnBInWorld)) << "case " << i << ", method " << answer.method;
+        ASSERT_TRUE(same(ours.pointOnB, bullet.m_pointInWorld)) << "case " << i << ", method " << answer.method;
+        ASSERT_EQ(bits(ours.distance), bits(bullet.m_distance)) << "case " << i << ", method " << answer.method;
     }
-    std::printf("BulletGjk with EPA: %d cases, %d contacts, %d from Bullet's depth solver, %d differ\n", kCases, found,
-                handedOver, mismatched);
-    EXPECT_EQ(mismatched, 0);
+    // Many of them deep enough for the depth solver.
+    EXPECT_GT(handedOver, kCases / 4);
+    std::printf("BulletGjk with EPA: %d cases, %d contacts (the same bits), %d from Bullet's depth solver\n", kCases,
+                found, handedOver);
 }
 
 // The contact that parted the prediction from Bullet 3.24 in the engine oracle (seed 26, scene
