@@ -552,10 +552,14 @@ private:
     // Boxes measureAsBullet measured keep that.
     void narrowPhaseInsideBoxes(bool bullet) {
         if (mCount == 0 || mWorld != &mLocal) return;
-        for (const OrientedBox& b : mLocal.boxes()) {
+        const std::span<const OrientedBox> boxes = mLocal.boxes();
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const OrientedBox& b = boxes[i];
             if (bullet) {
                 const detail::BulletBox box = bulletBoxOf(b);
-                bulletPenetration(b, box, !centreNear(b, static_cast<double>(box.margin), kBulletTooClose));
+                const auto margin = static_cast<double>(box.margin);
+                bulletPenetration(b, box, mLocal.boxMaterial(i), !centreNear(b, margin, kBulletTooClose),
+                                  centreNear(b, margin, margin + mRadius));
                 continue;
             }
             if (centreNear(b, static_cast<double>(b.rounding), 0.0)) pushOutNearestFace(b);
@@ -577,18 +581,22 @@ private:
 
     // Bullet's contact with box `b` (btGjkPairDetector, ported to the bit: bullet_gjk.h with
     // `epa`), from the centre as Bullet holds it (the float flight while it lasts, else rounded to
-    // float), given to the surface of that box the casts found (none found: nothing to do):
+    // float), given to the surface of that box the casts found:
     // - where GJK hands the pair to its penetration depth solver (the centre inside the box shrunk
-    //   by its margin, or within 1 mm of it, `deep`): always. EPA's point on the sphere's curved
-    //   surface lies off the normal through the centre, by up to a hundredth of the radius, and
-    //   GJK's "too close" exit puts it near the centre: the lever arm of the bounce, which sets the
-    //   spin and so the friction's work;
+    //   by its margin, or within 1 mm of it: not `onlyWhereTheyDiffer`): always. EPA's point on
+    //   the sphere's curved surface lies off the normal through the centre, by up to a hundredth
+    //   of the radius, and GJK's "too close" exit puts it near the centre: the lever arm of the
+    //   bounce, which sets the spin and so the friction's work;
     // - elsewhere, while the casts' surface penetrates: where Bullet's normal or depth differ from
     //   it (a fast ball that a step carried past the middle of a wall, or round its edge onto the
     //   next face: Bullet takes the face nearest the centre, and may see the ball leaving);
     // - a ball a step carried through the box: Bullet, which looks only where the step starts,
-    //   has no contact; the surface is dropped (kPassedThrough).
-    void bulletPenetration(const OrientedBox& b, const detail::BulletBox& box, bool onlyWhereTheyDiffer) {
+    //   has no contact; the surface is dropped (kPassedThrough);
+    // - a box the ball penetrates (`penetrates`: its centre within the margin and the radius of the
+    //   inner box) whose surface the casts did not find (they stopped at another surface first, a
+    //   floor in front of a wall): Bullet's contact with it is added, with the box's `material`.
+    void bulletPenetration(const OrientedBox& b, const detail::BulletBox& box, const SurfaceMaterial& material,
+                           bool onlyWhereTheyDiffer, bool penetrates) {
         const glm::dquat toLocal =
             glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
         // The box shrunk by its margin, whose edges and corners the margin rounds.
@@ -604,7 +612,8 @@ private:
             const double room = std::min({inner.x - local.x, inner.y - local.y, inner.z - local.z});
             if (out > 0.0 ? std::abs(out - margin) <= 1e-3 : margin + room <= 1e-3) found = &s;
         }
-        if (!found || (onlyWhereTheyDiffer && found->gap >= 0.0)) return;
+        if (!found && (!penetrates || mCount == kMaxSurfaces)) return;
+        if (found && onlyWhereTheyDiffer && found->gap >= 0.0) return;
         const detail::BulletVec centre =
             mFloatFlight ? mFloatPosition
                          : detail::BulletVec{static_cast<float>(mPosition.x), static_cast<float>(mPosition.y),
@@ -612,8 +621,16 @@ private:
         const auto radius = static_cast<float>(mRadius);
         const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
             box, centre, radius, detail::bulletContactDistanceSquared(box, radius), true, true);
-        Surface& s = *found;
         if (!c.handled) return;
+        if (!found) {
+            if (!c.found || !(c.distance < 0.0f)) return;
+            found = &mSurfaces[mCount++];
+            *found = Surface{};
+            found->restitution = material.restitution;
+            found->friction = material.friction;
+            onlyWhereTheyDiffer = false;
+        }
+        Surface& s = *found;
         if (!c.found) {
             if (s.gap >= 0.0) return;
             s.gap = kPassedThrough;

@@ -82,6 +82,8 @@ public:
     std::span<const OrientedBox> boxes() const {
         return mValid ? std::span<const OrientedBox>(mBoxes.data(), mBoxCount) : std::span<const OrientedBox>();
     }
+    /// The material of boxes()[i].
+    const SurfaceMaterial& boxMaterial(std::size_t i) const { return mBoxMaterials[i]; }
 
     // The region queries serve long stretches of flight or rolling, beyond a gathered region:
     // the world answers them.
