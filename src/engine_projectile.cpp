@@ -605,13 +605,14 @@ private:
         Surface* found = nullptr;
         for (int i = 0; i < mCount && !found; ++i) {
             Surface& s = mSurfaces[i];
-            if (s.predictive || s.floatContact) continue;
+            if (s.predictive) continue;
             // On that box's surface: the point the sphere touches lies a margin off the inner box.
             const DVec3 local = glm::abs(toLocal * (s.touch - s.normal * mRadius - DVec3(b.center)));
             const double out = glm::length(glm::max(local - inner, 0.0));
             const double room = std::min({inner.x - local.x, inner.y - local.y, inner.z - local.z});
             if (out > 0.0 ? std::abs(out - margin) <= 1e-3 : margin + room <= 1e-3) found = &s;
         }
+        if (found && found->floatContact) return;  // measureAsBullet gave it Bullet's contact already
         if (!found && (!penetrates || mCount == kMaxSurfaces)) return;
         if (found && onlyWhereTheyDiffer && found->gap >= 0.0) return;
         const detail::BulletVec centre =
