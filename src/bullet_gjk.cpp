@@ -1078,10 +1078,11 @@ BulletGjkContact bulletBoxSphereGjk(const BulletBox& box, const BulletVec& cente
     const float marginA = box.margin, marginB = radius;
     const float margin = marginA + marginB;
 
-    bool inside = false;  // libccd's intersection test (the status 0 that sends the pair to EPA)
     // The sphere's centre inside the box shrunk by its margin (the cores overlap): Bullet's
-    // libccd test then hands the pair to EPA. Not reproduced; near that (within twice the
-    // penetration tolerance of GJK's degenerate exits) neither.
+    // libccd test (status 0) then hands the pair to the penetration depth solver. With `epa` that
+    // is followed (`inside`); without, neither that case nor the centre within twice the
+    // penetration tolerance of it (GJK's degenerate exits) is answered.
+    bool inside = false;
     {
         const BulletVec local = timesBasis(center - box.origin, box.basis);  // inverse rotation
         const float reach = 2.0f * kEpaPenetrationTolerance;
