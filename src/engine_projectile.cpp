@@ -116,6 +116,7 @@ struct Surface {
     // (EngineRun::measureAsBullet), or its point on the sphere only, next to the box shrunk by its
     // margin (EngineRun::narrowPhaseInsideBoxes).
     bool floatContact = false;
+    int floatBox = -1;          // the gathered box (LocalWorld::boxes()) whose contact it is
     DVec3 floatArm{0.0};        // from the centre to the contact point on the sphere [m]
     DVec3 floatOnSurface{0.0};  // the contact point on the box [m]
 };
@@ -516,8 +517,9 @@ private:
         for (int i = 0; i < mCount; ++i) mSurfaces[i].floatContact = false;
         if (!mFloatFlight || mWorld != &mLocal || mCount == 0) return;
         const auto radius = static_cast<float>(mRadius);
-        for (const OrientedBox& b : mLocal.boxes()) {
-            const detail::BulletBox box = bulletBoxOf(b);
+        const std::span<const OrientedBox> boxes = mLocal.boxes();
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+            const detail::BulletBox box = bulletBoxOf(boxes[k]);
             const detail::BulletGjkContact c = detail::bulletBoxSphereGjk(
                 box, mFloatPosition, radius, detail::bulletContactDistanceSquared(box, radius), true);
             if (!c.handled || !c.found) continue;
@@ -535,6 +537,7 @@ private:
                 s.gap = gap;
                 s.touch = mPosition - normal * gap;
                 s.floatContact = true;
+                s.floatBox = static_cast<int>(k);
                 s.floatArm = onSphere - centre;
                 s.floatOnSurface = DVec3(a.x, a.y, a.z);
                 break;
@@ -558,8 +561,8 @@ private:
             if (bullet) {
                 const detail::BulletBox box = bulletBoxOf(b);
                 const auto margin = static_cast<double>(box.margin);
-                bulletPenetration(b, box, mLocal.boxMaterial(i), !centreNear(b, margin, kBulletTooClose),
-                                  centreNear(b, margin, margin + mRadius));
+                bulletPenetration(static_cast<int>(i), b, box, mLocal.boxMaterial(i),
+                                  !centreNear(b, margin, kBulletTooClose), centreNear(b, margin, margin + mRadius));
                 continue;
             }
             if (centreNear(b, static_cast<double>(b.rounding), 0.0)) pushOutNearestFace(b);
@@ -595,8 +598,8 @@ private:
     // - a box the ball penetrates (`penetrates`: its centre within the margin and the radius of the
     //   inner box) whose surface the casts did not find (they stopped at another surface first, a
     //   floor in front of a wall): Bullet's contact with it is added, with the box's `material`.
-    void bulletPenetration(const OrientedBox& b, const detail::BulletBox& box, const SurfaceMaterial& material,
-                           bool onlyWhereTheyDiffer, bool penetrates) {
+    void bulletPenetration(int index, const OrientedBox& b, const detail::BulletBox& box,
+                           const SurfaceMaterial& material, bool onlyWhereTheyDiffer, bool penetrates) {
         const glm::dquat toLocal =
             glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
         // The box shrunk by its margin, whose edges and corners the margin rounds.
@@ -606,13 +609,18 @@ private:
         for (int i = 0; i < mCount && !found; ++i) {
             Surface& s = mSurfaces[i];
             if (s.predictive) continue;
+            // Bullet's contact with this box already (measureAsBullet): nothing to do. With another
+            // box: not this box's, wherever its point lies (boxes that meet or overlap).
+            if (s.floatContact) {
+                if (s.floatBox == index) return;
+                continue;
+            }
             // On that box's surface: the point the sphere touches lies a margin off the inner box.
             const DVec3 local = glm::abs(toLocal * (s.touch - s.normal * mRadius - DVec3(b.center)));
             const double out = glm::length(glm::max(local - inner, 0.0));
             const double room = std::min({inner.x - local.x, inner.y - local.y, inner.z - local.z});
             if (out > 0.0 ? std::abs(out - margin) <= 1e-3 : margin + room <= 1e-3) found = &s;
         }
-        if (found && found->floatContact) return;  // measureAsBullet gave it Bullet's contact already
         if (!found && (!penetrates || mCount == kMaxSurfaces)) return;
         if (found && onlyWhereTheyDiffer && found->gap >= 0.0) return;
         const detail::BulletVec centre =
@@ -647,6 +655,7 @@ private:
         s.touch = mPosition - s.normal * s.gap;
         s.settled = false;
         s.floatContact = true;
+        s.floatBox = index;
         s.floatArm = DVec3(c.pointOnB.x, c.pointOnB.y, c.pointOnB.z) - DVec3(centre.x, centre.y, centre.z);
         // btManifoldResult's point on the box: the sphere's point moved along the normal by the depth.
         s.floatOnSurface = DVec3(c.pointOnB.x + c.normalOnB.x * c.distance, c.pointOnB.y + c.normalOnB.y * c.distance,
