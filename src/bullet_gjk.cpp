@@ -647,47 +647,26 @@ struct EpaGjk {  // gjkepa2_impl::GJK
         return status;
     }
 
+    // GJK::EncloseOrigin: grows the simplex to a tetrahedron around the origin, trying each new
+    // direction one way and then the other.
     bool encloseOrigin() {
+        static constexpr BulletVec kAxes[] = {{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}};
         switch (simplex->rank) {
             case 1:
-                for (unsigned i = 0; i < 3; ++i) {
-                    BulletVec axis{0.0f, 0.0f, 0.0f};
-                    (i == 0 ? axis.x : i == 1 ? axis.y : axis.z) = 1.0f;
-                    appendVertex(*simplex, axis);
-                    if (encloseOrigin()) return true;
-                    removeVertex(*simplex);
-                    appendVertex(*simplex, -axis);
-                    if (encloseOrigin()) return true;
-                    removeVertex(*simplex);
-                }
+                for (const BulletVec& axis : kAxes)
+                    if (encloseAlong(axis)) return true;
                 break;
             case 2: {
                 const BulletVec d = simplex->c[1]->w - simplex->c[0]->w;
-                for (unsigned i = 0; i < 3; ++i) {
-                    BulletVec axis{0.0f, 0.0f, 0.0f};
-                    (i == 0 ? axis.x : i == 1 ? axis.y : axis.z) = 1.0f;
+                for (const BulletVec& axis : kAxes) {
                     const BulletVec p = cross(d, axis);
-                    if (length2(p) > 0.0f) {
-                        appendVertex(*simplex, p);
-                        if (encloseOrigin()) return true;
-                        removeVertex(*simplex);
-                        appendVertex(*simplex, -p);
-                        if (encloseOrigin()) return true;
-                        removeVertex(*simplex);
-                    }
+                    if (length2(p) > 0.0f && encloseAlong(p)) return true;
                 }
                 break;
             }
             case 3: {
                 const BulletVec n = cross(simplex->c[1]->w - simplex->c[0]->w, simplex->c[2]->w - simplex->c[0]->w);
-                if (length2(n) > 0.0f) {
-                    appendVertex(*simplex, n);
-                    if (encloseOrigin()) return true;
-                    removeVertex(*simplex);
-                    appendVertex(*simplex, -n);
-                    if (encloseOrigin()) return true;
-                    removeVertex(*simplex);
-                }
+                if (length2(n) > 0.0f && encloseAlong(n)) return true;
                 break;
             }
             case 4:
@@ -697,6 +676,16 @@ struct EpaGjk {  // gjkepa2_impl::GJK
                 break;
             default:
                 break;
+        }
+        return false;
+    }
+
+    // encloseOrigin with the support along `d` added, then along -d.
+    bool encloseAlong(const BulletVec& d) {
+        for (const BulletVec& v : {d, -d}) {
+            appendVertex(*simplex, v);
+            if (encloseOrigin()) return true;
+            removeVertex(*simplex);
         }
         return false;
     }

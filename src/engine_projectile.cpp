@@ -561,22 +561,20 @@ private:
             if (bullet) {
                 const detail::BulletBox box = bulletBoxOf(b);
                 const auto margin = static_cast<double>(box.margin);
-                bulletPenetration(static_cast<int>(i), b, box, mLocal.boxMaterial(i),
-                                  !centreNear(b, margin, kBulletTooClose), centreNear(b, margin, margin + mRadius));
+                const double outside = centreOutside(b, margin);
+                bulletPenetration(static_cast<int>(i), b, box, mLocal.boxMaterial(i), !(outside < kBulletTooClose),
+                                  outside < margin + mRadius);
                 continue;
             }
-            if (centreNear(b, static_cast<double>(b.rounding), 0.0)) pushOutNearestFace(b);
+            if (centreOutside(b, static_cast<double>(b.rounding)) == 0.0) pushOutNearestFace(b);
         }
     }
 
-    // Whether the sphere's centre lies within `reach` [m] of box `b` shrunk by `shrink` [m] (in it
-    // for a reach of 0).
-    bool centreNear(const OrientedBox& b, double shrink, double reach) const {
+    // How far the sphere's centre lies outside box `b` shrunk by `shrink` [m]; 0 inside it.
+    double centreOutside(const OrientedBox& b, double shrink) const {
         const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
         const DVec3 local = glm::abs(glm::conjugate(q) * (mPosition - DVec3(b.center)));
-        const DVec3 beyond = glm::max(local - (DVec3(b.halfExtents) - shrink), 0.0);
-        const double outside = glm::length(beyond);
-        return reach > 0.0 ? outside < reach : outside == 0.0;
+        return glm::length(glm::max(local - (DVec3(b.halfExtents) - shrink), 0.0));
     }
 
     // The gap given to a surface whose box the sphere has passed (bulletPenetration) [m].
@@ -2716,12 +2714,11 @@ private:
     DVec3 mGravity{0.0};
     double mRadius = 0.0;
     bool mRotates = false;
-    bool mRegionQueries = true;  // whether coast and contactCoast may ask the world's region queries
-    bool mMeshContacts = false;  // Bullet's rules for a triangle mesh (EngineProfile::triangleMesh)
-    bool mManifold = false;      // Bullet 2.83's multi-point manifolds (updateManifold)
-    bool mGodotContacts = false;
-    DVec3 mBiasedSpin{
-        0.0};  // GodotPhysics: the bias rows' spin of this step [rad/s]  // GodotPhysics' persistent contacts (updateGodotContacts)
+    bool mRegionQueries = true;   // whether coast and contactCoast may ask the world's region queries
+    bool mMeshContacts = false;   // Bullet's rules for a triangle mesh (EngineProfile::triangleMesh)
+    bool mManifold = false;       // Bullet 2.83's multi-point manifolds (updateManifold)
+    bool mGodotContacts = false;  // GodotPhysics' persistent contacts (updateGodotContacts)
+    DVec3 mBiasedSpin{0.0};       // GodotPhysics: the bias rows' spin of this step [rad/s]
     double mAngularFactor = 1.0;
     DVec3 mPosition{0.0}, mVelocity{0.0}, mAngular{0.0};
     std::array<Surface, kMaxSurfaces> mSurfaces{};

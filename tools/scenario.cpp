@@ -395,22 +395,15 @@ void readEngine(Fields& parent, foresight::ProjectileSettings& settings) {
     readEnumName(f, "contact", contacts, profile.contact);
     f.positive("contact_distance", false, false, profile.contactDistance);
     f.positive("penetration_slop", false, false, profile.penetrationSlop);
-    if (f.positive("position_correction", false, false, profile.positionCorrection) &&
-        profile.positionCorrection > 1.0f) {
-        f.diagnostics().error(f.at("position_correction"),
-                              "must be in [0, 1] (got " + shortNumber(profile.positionCorrection) + ")");
-    }
+    // A fraction: from 0 to 1.
+    const auto fraction = [&f](const char* field, float& value) {
+        if (f.positive(field, false, false, value) && value > 1.0f)
+            f.diagnostics().error(f.at(field), "must be in [0, 1] (got " + shortNumber(value) + ")");
+    };
+    fraction("position_correction", profile.positionCorrection);
     f.boolean("correction_is_velocity", false, profile.correctionIsVelocity);
-    if (f.positive("split_impulse_correction", false, false, profile.splitImpulseCorrection) &&
-        profile.splitImpulseCorrection > 1.0f) {
-        f.diagnostics().error(f.at("split_impulse_correction"),
-                              "must be in [0, 1] (got " + shortNumber(profile.splitImpulseCorrection) + ")");
-    }
-    if (f.positive("friction_warm_start", false, false, profile.frictionWarmStart) &&
-        profile.frictionWarmStart > 1.0f) {
-        f.diagnostics().error(f.at("friction_warm_start"),
-                              "must be in [0, 1] (got " + shortNumber(profile.frictionWarmStart) + ")");
-    }
+    fraction("split_impulse_correction", profile.splitImpulseCorrection);
+    fraction("friction_warm_start", profile.frictionWarmStart);
     f.positive("max_linear_speed", false, true, profile.maxLinearSpeed);
     f.positive("max_step_distance", false, true, profile.maxStepDistance);
     f.boolean("planar", false, profile.planar);
