@@ -91,6 +91,9 @@ public:
     bool firstTouch(const SegmentCast& capsule, float& fraction) const override {
         return mWorld->firstTouch(capsule, fraction);
     }
+    bool firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front, float& fraction) const override {
+        return mWorld->firstTouchInFront(capsule, front, fraction);
+    }
     bool isOnlyPlane(const PlaneRegion& region) const override { return mWorld->isOnlyPlane(region); }
     float regionQueryCost(float radius) const override { return mWorld->regionQueryCost(radius); }
     bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const override {

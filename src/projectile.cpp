@@ -303,28 +303,79 @@ private:
     // doubles after a clear capsule and halves after a touched one; after a query that cleared
     // nothing (a surface near, or a world that cannot answer: CollisionWorld::firstTouch's
     // default), the chords are cast one by one for a while, longer each time.
+    // After an impact, the stretch ends before the body comes back within liftDistance() of the
+    // plane it touched there (the hop over a floor), and the query leaves out the surfaces wholly
+    // behind that plane (CollisionWorld::firstTouchInFront): the floor it left and the floor
+    // beside, which the chords of the stretch, all that far in front, cannot meet. Without it
+    // the floor, within the capsule's radius at the start, would clear nothing.
     bool clearAhead(const DVec3& p0, const DVec3& v0) {
         if (!mRegionQueries) return false;
         if (mClearWait > 0) {
             --mClearWait;
             return false;
         }
-        const std::uint64_t n = mClearSteps;
-        std::size_t points = 1;  // size_t: indexes mClearPath (32 bits on wasm32)
-        mClearPath[0] = p0;
-        double duration = 0.0;  // of the stretch [Units: s]
-        for (std::uint64_t j = 1; j <= n; ++j) {
-            // run()'s grid points (the end time last).
-            const double t = std::min(static_cast<double>(mGridIndex + j) * mStep, mEndTime);
-            duration = t - mTime;
-            mClearPath[points++] = p0 + v0 * duration + 0.5 * mGravity * duration * duration;
-            if (t >= mEndTime) break;
+        // The stretch's points are run()'s grid points after mTime, j = 1 .. last (the end time
+        // the last of them), computed when needed rather than stored.
+        const auto timeOf = [&](std::uint64_t j) {
+            return std::min(static_cast<double>(mGridIndex + j) * mStep, mEndTime) - mTime;
+        };
+        const auto pointAt = [&](std::uint64_t j) {
+            const double s = timeOf(j);
+            return p0 + v0 * s + 0.5 * mGravity * s * s;
+        };
+        std::uint64_t last = mClearSteps;
+        // The first grid point at or past the end time ends the stretch.
+        const double endIndex = std::ceil(mEndTime / mStep) - static_cast<double>(mGridIndex);
+        if (endIndex < static_cast<double>(last)) {
+            std::uint64_t j = endIndex > 1.0 ? static_cast<std::uint64_t>(endIndex) - 1 : 1;
+            while (j > 1 && static_cast<double>(mGridIndex + j - 1) * mStep >= mEndTime) --j;
+            while (j < last && static_cast<double>(mGridIndex + j) * mStep < mEndTime) ++j;
+            last = j;
         }
-        if (points < 2) return false;
-        const std::span<const DVec3> path(mClearPath.data(), points);
-        const SegmentCast capsule = pathCapsule(path, mSettings.radius, parabolaBend(mGravity, duration));
+        const DVec3& left = mLastSurfaceNormal;
+        const double lift = liftDistance();
+        // Heights over the plane of the last impact: a parabola, concave (or straight) when
+        // gravity does not pull away from the plane, so those of the points at least `lift` high
+        // are the first ones; the last of them is found by bisection.
+        const bool inFront =
+            mImpactPlane && glm::dot(left, mGravity) <= 0.0 && glm::dot(left, p0 - mLastSurfacePoint) >= lift;
+        if (inFront) {
+            const auto high = [&](std::uint64_t j) { return glm::dot(left, pointAt(j) - mLastSurfacePoint) >= lift; };
+            if (!high(last)) {
+                std::uint64_t lo = 0, hi = last;  // high(lo) (p0 for 0), !high(hi)
+                while (hi - lo > 1) {
+                    const std::uint64_t mid = lo + (hi - lo) / 2;
+                    (high(mid) ? lo : hi) = mid;
+                }
+                last = lo;
+            }
+        }
+        if (last < 1) return false;
+        const DVec3 end = pointAt(last);
+        const std::array<DVec3, 2> ends{p0, end};
+        const SegmentCast capsule = pathCapsule(ends, mSettings.radius, parabolaBend(mGravity, timeOf(last)));
         float fraction = 1.0f;
-        const std::size_t clear = mWorld.firstTouch(capsule, fraction) ? clearChords(path, fraction) : points - 1;
+        bool touched = false;
+        if (inFront) {
+            InFrontOf front;
+            front.point = toR(mLastSurfacePoint - left * static_cast<double>(mSettings.radius));
+            front.normal = toF(left);
+            front.tolerance = kInFrontTolerance;
+            touched = mWorld.firstTouchInFront(capsule, front, fraction);
+        } else {
+            touched = mWorld.firstTouch(capsule, fraction);
+        }
+        // clearChords (path_capsule.h) over the points, computed one by one up to the touch.
+        std::uint64_t clear = last;
+        if (touched) {
+            const DVec3 chord = end - p0;
+            const double length = glm::length(chord);
+            const double limit = static_cast<double>(fraction) * length - pathMargin(ends);
+            clear = 0;
+            if (length > 0.0 && limit > 0.0)
+                while (clear < last && glm::dot(pointAt(clear + 1) - p0, chord) / length < limit) ++clear;
+        }
+        const std::uint64_t points = last + 1;
         if (clear + 1 == points) {
             mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, kMaxClearSteps);
             mClearBackoff = 2;
@@ -516,7 +567,8 @@ private:
             // skin in front before: not behind it (a skin more each time would ratchet the body
             // off a floor it slides on).
             const auto push = [&](const DVec3& normal, const DVec3& point, double skin) {
-                if (glm::length(p - point) > kRecentReach) return;
+                const DVec3 offset = p - point;  // farther than kRecentReach: left alone
+                if (glm::dot(offset, offset) > kRecentReach * kRecentReach) return;
                 const double height = glm::dot(normal, p - point);
                 if (height >= skin || height < -1e-4) return;
                 p += normal * (skin - height);
@@ -790,6 +842,7 @@ private:
         mHasLastSurface = !mInContact;
         rememberSurface(n, mBody.position);
         mHadImpact = true;
+        mImpactPlane = true;
         mLastSurfaceNormal = n;
         mLastSurfacePoint = mBody.position;
         mRecorder.add(mTime, TrajectoryEvent::Bounce, mBody.position, v, n);
@@ -808,9 +861,13 @@ private:
     DVec3 mLastSurfaceNormal{0.0};
     DVec3 mLastSurfacePoint{0.0};
     DVec3 mContactNormal{0.0};
-    DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
-    bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
-    DVec3 mCastOffset{0.0};    // added to the chord casts of castPath (a slide lifted off an obstacle)
+    DVec3 mContactPoint{0.0};   // a point of the contact surface (the last probe's hit)
+    bool mHadImpact = false;    // mLastSurfaceNormal and mLastSurfacePoint are set
+    bool mImpactPlane = false;  // there was an impact: its normal and point stay set (clearAhead)
+    // InFrontOf::tolerance of clearAhead's queries [m]: well inside liftDistance(), the least
+    // height of its chords over the plane, with the plane point's rounding to Real (half an ulp).
+    static constexpr float kInFrontTolerance = 1e-5f;
+    DVec3 mCastOffset{0.0};  // added to the chord casts of castPath (a slide lifted off an obstacle)
     // The surfaces of the last impacts (keepInFront), and how far from where it touched one the
     // body still heeds it [m].
     static constexpr int kRecentSurfaces = 4;
@@ -830,7 +887,6 @@ private:
     static constexpr std::uint64_t kMaxClearSteps = 64;
     std::uint64_t mClearedGrid = 0;  // the chords of this free flight up to this grid point hit nothing
     std::uint64_t mClearSteps = 8, mClearWait = 0, mClearBackoff = 2;
-    std::array<DVec3, kMaxClearSteps + 1> mClearPath{};
     // What slideAhead keeps: the last probe's hit, and the plane world of a cleared stretch.
     CastHit mSupport{};
     bool mHasSupport = false;

@@ -698,6 +698,54 @@ bool firstTouch(const SegmentCast& capsule, const Triangle& triangle, float& fra
     return touchTriangle(c, triangle, fraction);
 }
 
+BehindTester::BehindTester(const InFrontOf& front) {
+    const DVec3 n(front.normal), point = toD(front.point);
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length) || !detail::isFinite(point) || !std::isfinite(front.tolerance))
+        return;
+    mNormal = n / length;
+    mFloatNormal = front.normal;
+    mLevel = glm::dot(mNormal, point) + std::max(0.0, static_cast<double>(front.tolerance));
+    mValid = std::isfinite(mLevel);
+}
+
+bool BehindTester::behind(const Plane& plane) const {
+    // Parallel in float (StaticWorld keeps normalised normals): the whole plane is one height.
+    const Vec3 m = plane.normal;
+    double height = 0.0;
+    if (m == mFloatNormal)
+        height = static_cast<double>(plane.distance);
+    else if (m == -mFloatNormal)
+        height = -static_cast<double>(plane.distance);
+    else
+        return false;
+    return mValid && height / glm::length(DVec3(m)) <= mLevel;
+}
+
+bool BehindTester::behind(const Sphere& sphere) const {
+    return mValid && glm::dot(mNormal, toD(sphere.center)) + static_cast<double>(sphere.radius) <= mLevel;
+}
+
+bool BehindTester::behind(const OrientedBox& box) const {
+    if (!mValid) return false;
+    const glm::dmat3 axes = glm::mat3_cast(glm::dquat(box.orientation));
+    const DVec3 half(box.halfExtents);
+    double reach = 0.0;
+    for (int i = 0; i < 3; ++i) reach += std::abs(glm::dot(mNormal, axes[i])) * half[i];
+    return glm::dot(mNormal, toD(box.center)) + reach <= mLevel;
+}
+
+bool BehindTester::behind(const Triangle& triangle) const {
+    return mValid && glm::dot(mNormal, toD(triangle.a)) <= mLevel && glm::dot(mNormal, toD(triangle.b)) <= mLevel &&
+           glm::dot(mNormal, toD(triangle.c)) <= mLevel;
+}
+
+bool BehindTester::behind(const glm::dvec3& lo, const glm::dvec3& hi) const {
+    if (!mValid) return false;
+    const DVec3 corner(mNormal.x > 0.0 ? hi.x : lo.x, mNormal.y > 0.0 ? hi.y : lo.y, mNormal.z > 0.0 ? hi.z : lo.z);
+    return glm::dot(mNormal, corner) <= mLevel;
+}
+
 CapsuleTester::CapsuleTester(const SegmentCast& capsule) : mCapsule(prepareCapsule(capsule)) {}
 
 bool CapsuleTester::mayTouch(const Triangle& triangle) const {
@@ -1010,28 +1058,48 @@ FORESIGHT_FLATTEN bool StaticWorld::mayTouch(const SegmentCast& capsule) const {
     return false;
 }
 
-FORESIGHT_FLATTEN bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+namespace {
+
+// StaticWorld::firstTouch, leaving out the shapes `behind` finds behind its plane (none when it
+// is null).
+bool firstTouchOf(std::span<const Plane> planes, std::span<const Sphere> spheres, std::span<const OrientedBox> boxes,
+                  std::span<const Triangle> triangles, const SegmentCast& capsule, const BehindTester* behind,
+                  float& fraction) {
     fraction = 1.0f;
     bool touched = false;
     const auto offer = [&](const auto& shape) {
         float f = 1.0f;
+        if (behind && behind->behind(shape)) return;
         if (!foresight::firstTouch(capsule, shape, f)) return;
         touched = true;
         fraction = std::min(fraction, f);
     };
-    for (const Plane& p : mPlanes) offer(p);
-    for (const Sphere& s : mSpheres) offer(s);
-    for (const OrientedBox& b : mBoxes) offer(b);
+    for (const Plane& p : planes) offer(p);
+    for (const Sphere& s : spheres) offer(s);
+    for (const OrientedBox& b : boxes) offer(b);
     // The triangles with the capsule prepared once (each would prepare it again).
     const Capsule c = prepareCapsule(capsule);
-    for (const Triangle& t : mTriangles) {
+    for (const Triangle& t : triangles) {
         float f = 0.0f;  // an invalid capsule touches at once (as firstTouch(capsule, t, f) says)
         if (c.valid && !touchTriangle(c, t, f)) continue;
+        if (behind && behind->behind(t)) continue;
         touched = true;
         fraction = std::min(fraction, f);
     }
     if (!touched) fraction = 0.0f;
     return touched;
+}
+
+}  // namespace
+
+FORESIGHT_FLATTEN bool StaticWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
+    return firstTouchOf(mPlanes, mSpheres, mBoxes, mTriangles, capsule, nullptr, fraction);
+}
+
+FORESIGHT_FLATTEN bool StaticWorld::firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front,
+                                                      float& fraction) const {
+    const BehindTester behind(front);
+    return firstTouchOf(mPlanes, mSpheres, mBoxes, mTriangles, capsule, behind.valid() ? &behind : nullptr, fraction);
 }
 
 FORESIGHT_FLATTEN bool StaticWorld::castSegment(const SegmentCast& cast, CastHit& hit) const {

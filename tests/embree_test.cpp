@@ -1147,6 +1147,102 @@ TEST(embree_mesh, FirstTouchAnswersAsStaticWorldAndKeepsItsPromise) {
     EXPECT_GT(clear, 100);
 }
 
+// firstTouchInFront may leave out the shapes wholly behind a plane (none of their points more than
+// the tolerance in front): its answer is firstTouch's in a world without them. That world is
+// built here from the shapes' own points (a triangle's vertices, a box's eight corners, a
+// sphere's top along the normal, an infinite plane only when parallel), and EmbreeWorld (whose
+// tree skips boxes wholly behind) and StaticWorld must answer as it does, bit for bit. Planes
+// level with the floor, the boxes' tops and the primitives, and tilted ones; capsules skimming
+// the floor (which plain firstTouch meets at once) and anywhere.
+TEST(embree_mesh, FirstTouchInFrontAnswersAsAWorldWithoutTheShapesBehind) {
+    Worlds w;
+    buildWorlds(w);
+    std::mt19937 rng(4141);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double levels[] = {0.0, 1.0, 2.0, 4.0, -1.0, 0.5};
+    int leftOut = 0, unlike = 0;
+    for (int i = 0; i < 3000; ++i) {
+        foresight::InFrontOf front;
+        DVec3 n(0, 1, 0);
+        if (i % 4 == 3) n = glm::normalize(DVec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+        front.normal = Vec3(n);
+        const double level = levels[i % 6] + (i % 5 == 0 ? 5e-6 : 0.0);
+        front.point = r3(4 * u(rng) - 2, level, 4 * u(rng) - 2);
+        front.tolerance = i % 7 == 0 ? 0.0f : 1e-5f;
+        // The world without the shapes wholly behind, from their own points.
+        const DVec3 unit = glm::normalize(DVec3(front.normal));
+        const double top = glm::dot(unit, DVec3(front.point)) + static_cast<double>(front.tolerance);
+        const auto behind = [&](std::initializer_list<DVec3> points) {
+            for (const DVec3& p : points)
+                if (glm::dot(unit, p) > top) return false;
+            return true;
+        };
+        StaticWorld kept;
+        std::size_t left = 0;
+        const StaticWorld& all = w.reference;
+        for (const foresight::Plane& plane : all.planes()) {
+            const bool parallel = plane.normal == front.normal || plane.normal == -front.normal;
+            const double height = (plane.normal == front.normal ? 1.0 : -1.0) * static_cast<double>(plane.distance) /
+                                  glm::length(DVec3(plane.normal));
+            if (parallel && height <= top)
+                ++left;
+            else
+                ASSERT_EQ(kept.add(plane), Status::Ok);
+        }
+        for (const foresight::Sphere& sphere : all.spheres()) {
+            if (behind({DVec3(sphere.center) + unit * static_cast<double>(sphere.radius)}))
+                ++left;
+            else
+                ASSERT_EQ(kept.add(sphere), Status::Ok);
+        }
+        for (const foresight::OrientedBox& box : all.boxes()) {
+            const glm::dmat3 axes = glm::mat3_cast(glm::dquat(box.orientation));
+            bool allBehind = true;
+            for (int c = 0; c < 8; ++c) {
+                const DVec3 corner(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+                allBehind = allBehind && behind({DVec3(box.center) + axes * (corner * DVec3(box.halfExtents))});
+            }
+            if (allBehind)
+                ++left;
+            else
+                ASSERT_EQ(kept.add(box), Status::Ok);
+        }
+        for (const Triangle& t : all.triangles()) {
+            if (behind({DVec3(t.a), DVec3(t.b), DVec3(t.c)}))
+                ++left;
+            else
+                ASSERT_EQ(kept.add(t), Status::Ok);
+        }
+        SegmentCast capsule;
+        if (i % 2 == 0) {
+            // Skimming the plane: from just above the level to anywhere.
+            capsule.radius = static_cast<float>(0.4 * u(rng));
+            const DVec3 start = DVec3(front.point) + unit * (static_cast<double>(capsule.radius) + 1e-3 * u(rng));
+            capsule.origin = r3(start.x, start.y, start.z);
+        } else {
+            capsule.radius = static_cast<float>(i % 3 == 0 ? 0.0 : 0.6 * u(rng));
+            capsule.origin = r3(-7 + 14 * u(rng), -2 + 8 * u(rng), -6 + 12 * u(rng));
+        }
+        const DVec3 direction = glm::normalize(DVec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+        capsule.displacement = Vec3(direction * (8 * u(rng)));
+        float expected = -1.0f, embree = -1.0f, reference = -1.0f, plain = -1.0f;
+        const bool touches = kept.firstTouch(capsule, expected);
+        ASSERT_EQ(w.embree.firstTouchInFront(capsule, front, embree), touches) << i;
+        ASSERT_EQ(w.reference.firstTouchInFront(capsule, front, reference), touches) << i;
+        if (touches) {
+            ASSERT_EQ(embree, expected) << i;
+            ASSERT_EQ(reference, expected) << i;
+        }
+        const bool plainTouches = w.reference.firstTouch(capsule, plain);
+        leftOut += left > 0 ? 1 : 0;
+        unlike += plainTouches != touches || (touches && plain != expected) ? 1 : 0;
+    }
+    // Both sides are exercised: queries with shapes left out, and answers that leaving them out
+    // changed.
+    EXPECT_GT(leftOut, 2000);
+    EXPECT_GT(unlike, 500);
+}
+
 // findNear walks Embree's BVH for the mesh's triangles; StaticWorld tests every triangle. Both
 // use NearTester on the same triangles, so the lists are the same (as sets, bit for bit), before
 // and after commit.

@@ -310,8 +310,10 @@ private:
 /// (false), so it casts every step in contact.
 class CountingWorld final : public foresight::CollisionWorld {
 public:
-    CountingWorld(const foresight::CollisionWorld& world, bool answerTouch, bool answerPlane = false)
-        : mWorld(world), mAnswerTouch(answerTouch), mAnswerPlane(answerPlane) {}
+    /// `answerInFront`: firstTouchInFront asks the world's own (else the default: firstTouch).
+    CountingWorld(const foresight::CollisionWorld& world, bool answerTouch, bool answerPlane = false,
+                  bool answerInFront = false)
+        : mWorld(world), mAnswerTouch(answerTouch), mAnswerPlane(answerPlane), mAnswerInFront(answerInFront) {}
     bool castSegment(const foresight::SegmentCast& cast, foresight::CastHit& hit) const override {
         ++casts;
         return mWorld.castSegment(cast, hit);
@@ -325,6 +327,14 @@ public:
         fraction = 0.0f;
         return mAnswerTouch ? mWorld.firstTouch(capsule, fraction) : true;
     }
+    bool firstTouchInFront(const foresight::SegmentCast& capsule, const foresight::InFrontOf& front,
+                           float& fraction) const override {
+        if (!mAnswerInFront) return firstTouch(capsule, fraction);
+        ++touches;
+        ++inFrontQueries;
+        fraction = 0.0f;
+        return mAnswerTouch ? mWorld.firstTouchInFront(capsule, front, fraction) : true;
+    }
     bool isOnlyPlane(const foresight::PlaneRegion& region) const override {
         if (!mAnswerPlane) return false;
         ++planeQueries;
@@ -333,12 +343,12 @@ public:
         return only;
     }
     float regionQueryCost(float) const override { return queryCost; }
-    mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0;
+    mutable std::size_t casts = 0, touches = 0, planeQueries = 0, planePromises = 0, inFrontQueries = 0;
     float queryCost = 1.0f;  ///< what regionQueryCost answers (the default world's 1)
 
 private:
     const foresight::CollisionWorld& mWorld;
-    bool mAnswerTouch, mAnswerPlane;
+    bool mAnswerTouch, mAnswerPlane, mAnswerInFront;
 };
 
 /// A floor plane (y = 0, normal +Y), three box walls 3 to 9 m around the origin, a sphere and a

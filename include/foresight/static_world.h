@@ -201,6 +201,36 @@ private:
     detail::PreparedCapsule mCapsule;
 };
 
+/// Which shapes lie wholly behind the plane of an InFrontOf: those CollisionWorld::firstTouchInFront
+/// may leave out (no point of them more than `front.tolerance` in front of the plane). An
+/// infinite plane is behind only when it is parallel (its normal equal to the front's, or its
+/// opposite, in float). No allocation.
+class BehindTester {
+public:
+    /// Prepares `front` in double precision (its normal normalised).
+    explicit BehindTester(const InFrontOf& front);
+
+    /// False when `front` is not finite or its normal is zero: then no shape is behind.
+    bool valid() const { return mValid; }
+
+    /// Whether the shape lies wholly behind the plane.
+    bool behind(const Plane& plane) const;
+    /// See behind(const Plane&).
+    bool behind(const Sphere& sphere) const;
+    /// See behind(const Plane&).
+    bool behind(const OrientedBox& box) const;
+    /// See behind(const Plane&).
+    bool behind(const Triangle& triangle) const;
+    /// Whether the axis-aligned box [lo, hi] lies wholly behind the plane (for a tree of bounds).
+    bool behind(const glm::dvec3& lo, const glm::dvec3& hi) const;
+
+private:
+    glm::dvec3 mNormal{0.0};
+    Vec3 mFloatNormal{0.0f};
+    double mLevel = 0.0;  // dot(normal, point) + tolerance
+    bool mValid = false;
+};
+
 /// The test behind CollisionWorld::isOnlyPlane, offered one shape at a time, for worlds that find
 /// their candidate shapes themselves (as ClosestHitCaster is for casts). A shape that reaches
 /// into the region must lie in the plane with the region's material: an infinite plane covers
@@ -363,6 +393,9 @@ public:
 
     /// Every shape through the conservative firstTouch tests above (a linear scan): the earliest.
     bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
+
+    /// firstTouch, leaving out the shapes that BehindTester finds behind `front`.
+    bool firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front, float& fraction) const override;
 
     /// Every shape through PlaneRegionTester (a linear scan). False unless the world has the
     /// default surface tolerance (the promise is about a plane with that tolerance).

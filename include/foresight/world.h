@@ -44,6 +44,15 @@ struct PlaneRegion {
     float friction = -1.0f;     ///< see restitution.
 };
 
+/// The side of a plane that CollisionWorld::firstTouchInFront looks at: the surfaces that lie
+/// wholly behind the plane through `point` with unit normal `normal` (none of their points more
+/// than `tolerance` in front of it) may be left out of the query.
+struct InFrontOf {
+    RVec3 point{0};           ///< a point of the plane [Units: m].
+    Vec3 normal{0, 1, 0};     ///< the plane's unit normal, towards the side looked at [Limit: unit length].
+    float tolerance = 1e-5f;  ///< how far in front a surface left out may reach [Units: m] [Limit: >= 0].
+};
+
 /// A sphere for CollisionWorld::findNear: the surfaces within `radius` of `center`.
 struct NearQuery {
     RVec3 center{0};      ///< the sphere's centre [Units: m].
@@ -136,6 +145,19 @@ public:
     virtual bool firstTouch(const SegmentCast& capsule, float& fraction) const {
         fraction = 0.0f;
         return mayTouch(capsule);
+    }
+
+    /// firstTouch's question about the surfaces in front of a plane: the same answer and the same
+    /// promise, except that the surfaces wholly behind `front` (see InFrontOf) need not count. A
+    /// caller whose swept sphere stays more than its radius plus `front.tolerance` in front of
+    /// that plane cannot meet those surfaces anyway. ProjectileMethod::Exact asks it after a bounce,
+    /// with the plane of the surface the body left: the hop over a floor is then cleared by one
+    /// query, where firstTouch would find the floor at once and clear nothing. The default
+    /// leaves nothing out (firstTouch), which is always correct; StaticWorld and EmbreeWorld
+    /// leave out the shapes (and EmbreeWorld the boxes of its tree) wholly behind the plane.
+    virtual bool firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front, float& fraction) const {
+        (void)front;
+        return firstTouch(capsule, fraction);
     }
 
     /// Whether, inside `region.capsule`, the world is the plane of `region` and nothing else: every

@@ -1132,8 +1132,10 @@ unsigned enterChildren(const RegionNode& node, const RegionCapsule& c, float (&e
 // `skip(entry)` whether a node entered at `entry` may be skipped. An invalid capsule enters
 // every box. False when the walk ran out of stack (a tree deeper than the builder was allowed to
 // make it): the caller answers "maybe".
+// With `behind`, the children whose boxes lie wholly behind its plane are left out too.
 template <class Skip, class Leaf>
-bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Leaf&& leaf) {
+bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Leaf&& leaf,
+                const BehindTester* behind = nullptr) {
     struct Entry {
         const void* node;
         float entry;
@@ -1150,7 +1152,12 @@ bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Lea
         }
         const auto& node = *static_cast<const RegionNode*>(e.node);
         float entry[kRegionWidth];
-        const unsigned mask = capsule.valid ? enterChildren(node, capsule, entry) : (1u << node.childCount) - 1u;
+        unsigned mask = capsule.valid ? enterChildren(node, capsule, entry) : (1u << node.childCount) - 1u;
+        if (behind)
+            for (unsigned k = 0; k < kRegionWidth; ++k)
+                if ((mask & (1u << k)) && behind->behind(glm::dvec3(node.lo[0][k], node.lo[1][k], node.lo[2][k]),
+                                                         glm::dvec3(node.hi[0][k], node.hi[1][k], node.hi[2][k])))
+                    mask &= ~(1u << k);
         if (!capsule.valid) std::fill(std::begin(entry), std::end(entry), 0.0f);
         if (size + kRegionWidth > stack.size()) return false;
         // The entered children, the farthest pushed first (insertion by entry): the nearest on top.
@@ -1194,14 +1201,29 @@ bool EmbreeWorld::mayTouch(const SegmentCast& capsule) const {
 }
 
 bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const {
-    bool touched = mPrimitives.firstTouch(capsule, fraction);
+    return touchFirst(capsule, nullptr, nullptr, fraction);
+}
+
+bool EmbreeWorld::firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front, float& fraction) const {
+    const BehindTester behind(front);
+    return behind.valid() ? touchFirst(capsule, &front, &behind, fraction)
+                          : touchFirst(capsule, nullptr, nullptr, fraction);
+}
+
+bool EmbreeWorld::touchFirst(const SegmentCast& capsule, const InFrontOf* front, const BehindTester* behind,
+                             float& fraction) const {
+    fraction = 0.0f;
+    bool touched = false;
+    if (mPrimitives.shapeCount() > 0)
+        touched = front ? mPrimitives.firstTouchInFront(capsule, *front, fraction)
+                        : mPrimitives.firstTouch(capsule, fraction);
     const Impl* impl = mImpl.get();
     if (impl && !impl->triangles.empty() && !(touched && fraction == 0.0f)) {
         const CapsuleTester tester(capsule);
         const Triangle* triangles = impl->triangles.data();
         const auto offer = [&](const Triangle& t) {
             float f = 0.0f;
-            if (!tester.firstTouch(t, f)) return false;
+            if (!tester.firstTouch(t, f) || (behind && behind->behind(t))) return false;
             fraction = touched ? std::min(fraction, f) : f;
             touched = true;
             return fraction == 0.0f;  // touching at the start: nothing can come earlier
@@ -1219,7 +1241,8 @@ bool EmbreeWorld::firstTouch(const SegmentCast& capsule, float& fraction) const 
                            for (std::uint32_t i = 0; i < leaf.leafCount; ++i)
                                if (offer(triangles[leaf.triangles[i]])) return true;
                            return false;
-                       })) {
+                       },
+                       behind)) {
             touched = true;  // the walk ran out of stack: "maybe, at once"
             fraction = 0.0f;
         }

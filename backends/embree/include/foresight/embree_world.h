@@ -201,6 +201,10 @@ public:
     /// for bit. regionQueryCost keeps its default (1): on the demo level the exact method asks
     /// it rather than casting every chord, and is faster for it (docs/results.md, Speed).
     bool firstTouch(const SegmentCast& capsule, float& fraction) const override;
+
+    /// firstTouch, leaving out the shapes and the tree's boxes that BehindTester finds behind
+    /// `front` (static_world.h).
+    bool firstTouchInFront(const SegmentCast& capsule, const InFrontOf& front, float& fraction) const override;
     /// The primitives, then the mesh triangles of the region tree's boxes that the region's
     /// capsule enters, through PlaneRegionTester; it stops at the first that rules the region out.
     bool isOnlyPlane(const PlaneRegion& region) const override;
@@ -215,6 +219,9 @@ public:
     bool gatherShapes(const SegmentCast& region, ShapeCollector& collector) const override;
 
 private:
+    // firstTouch and firstTouchInFront (front and behind, its tester, null: nothing left out).
+    bool touchFirst(const SegmentCast& capsule, const InFrontOf* front, const BehindTester* behind,
+                    float& fraction) const;
     /// castSegment without its radius-0 fast path (swept spheres, casts in doubt, before commit()).
     bool castSlow(const SegmentCast& cast, CastHit& hit) const;
 
