@@ -199,6 +199,16 @@ public:
                 continue;
             }
             const double h = gridTime - mTime;
+            if (!mInContact && mGridIndex < mClearedGrid && !mHasLastSurface && !mHadImpact && !mHadContact) {
+                // A step of free flight that clearAhead cleared: advanceBallistic's arithmetic
+                // without its questions (no surface is near, no chord is cast).
+                const DVec3 p0 = mBody.position, v0 = mBody.velocity;
+                mBody = {p0 + v0 * h + 0.5 * mGravity * h * h, v0 + mGravity * h};
+                mTime = gridTime;
+                ++gridIndex;
+                recordStep(gridTime, endTime);
+                continue;
+            }
             const bool reached = mInContact ? advanceInContact(h) : advanceBallistic(h);
             if (mEvents > mSettings.maxEvents) return Status::TooManyEvents;
             if (mAtRest) {
