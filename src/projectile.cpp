@@ -726,8 +726,8 @@ private:
         // On the plane alone (a stretch slideAhead cleared), a chord that comes no nearer to the
         // plane than half a lift distance is not blocked: castPath's first cast reports the plane
         // at once or not at all, and its cast lifted off the plane misses it.
-        const bool planeAlone = mGridIndex < mSlidGrid && mCastOffset == DVec3(0.0) &&
-                                glm::dot(mPlaneNormal, p1 - p0) > -0.5 * lift;
+        const bool planeAlone =
+            mGridIndex < mSlidGrid && mCastOffset == DVec3(0.0) && glm::dot(mPlaneNormal, p1 - p0) > -0.5 * lift;
         const bool blocked = !planeAlone && castPath(p0, p1, true, n, hit);
         Impact found{};
         if (blocked) found = locateImpact(p0, v0, a, duration, hit, true, n);
@@ -907,7 +907,7 @@ private:
     CastHit mSupport{};
     bool mHasSupport = false;
     PlaneWorld mPlaneWorld;
-    DVec3 mPlaneNormal{0.0};  // mPlaneWorld's plane's normal
+    DVec3 mPlaneNormal{0.0};      // mPlaneWorld's plane's normal
     std::uint64_t mSlidGrid = 0;  // the steps in contact up to this grid point ask mPlaneWorld
     std::uint64_t mSlideSteps = 8, mSlideWait = 0, mSlideBackoff = 2;
     bool mAtRest = false;
