@@ -1470,6 +1470,34 @@ TEST(Projectile, TrajectoryCapacityIsEnough) {
 
 }  // namespace
 
+// A random exact-method throw from above the origin, drawn in a fixed order: one in `pointOdds`
+// is a point, the others a sphere of radius in `radius`; then restitution, friction, step, the
+// start, the heading, the horizontal speed and the upward speed, each in its range.
+struct ThrowRanges {
+    unsigned pointOdds;
+    double radius[2], restitution[2], friction[2], step[2], speed[2], up[2];
+};
+struct RandomThrow {
+    ProjectileSettings settings;
+    RVec3 start;
+    Vec3 velocity;
+};
+RandomThrow randomExactThrow(ftest::Random& random, const ThrowRanges& r) {
+    RandomThrow t;
+    t.settings.method = ProjectileMethod::Exact;
+    t.settings.radius =
+        random.below(r.pointOdds) == 0 ? 0.0f : static_cast<float>(random.uniform(r.radius[0], r.radius[1]));
+    t.settings.restitution = static_cast<float>(random.uniform(r.restitution[0], r.restitution[1]));
+    t.settings.friction = static_cast<float>(random.uniform(r.friction[0], r.friction[1]));
+    t.settings.step = static_cast<float>(random.uniform(r.step[0], r.step[1]));
+    t.start = RVec3(random.uniform(-2, 2), random.uniform(0.5, 3), random.uniform(-2, 2));
+    const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(r.speed[0], r.speed[1]);
+    t.velocity =
+        Vec3(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(r.up[0], r.up[1])),
+             static_cast<float>(speed * std::sin(heading)));
+    return t;
+}
+
 // Free flight cleared ahead (one CollisionWorld::firstTouch query for many chords) must give
 // exactly the trajectory of casting every chord: only casts that would have hit nothing are
 // skipped. Random scenes with walls, a ball, a roof and a floor; points and spheres, random
@@ -1479,16 +1507,8 @@ TEST(ProjectileExact, ClearingFreeFlightGivesTheTrajectoryOfCastingEveryChord) {
     std::size_t castsEveryChord = 0, queriesClearing = 0;
     for (int round = 0; round < 200; ++round) {
         const StaticWorld world = ftest::randomScene(random);
-        ProjectileSettings settings;
-        settings.method = ProjectileMethod::Exact;
-        settings.radius = random.below(2) == 0 ? 0.0f : static_cast<float>(random.uniform(0.05, 0.3));
-        settings.restitution = static_cast<float>(random.uniform(0.1, 0.9));
-        settings.friction = static_cast<float>(random.uniform(0, 0.6));
-        settings.step = static_cast<float>(random.uniform(0.005, 0.05));
-        const RVec3 start(random.uniform(-2, 2), random.uniform(0.5, 3), random.uniform(-2, 2));
-        const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(2, 20);
-        const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(-3, 12)),
-                            static_cast<float>(speed * std::sin(heading)));
+        const auto [settings, start, velocity] =
+            randomExactThrow(random, {2, {0.05, 0.3}, {0.1, 0.9}, {0, 0.6}, {0.005, 0.05}, {2, 20}, {-3, 12}});
         const float time = 4.0f;
         ftest::CountingWorld plain(world, false), clearing(world, true);
         std::vector<TrajectoryPoint> a(4096), b(4096);
@@ -1544,16 +1564,8 @@ TEST(ProjectileExact, ClearingHopsInFrontOfTheFloorGivesTheTrajectoryOfCastingEv
                     ASSERT_EQ(world.add(foresight::Triangle{at(i, j), at(i + 1, j + 1), at(i + 1, j)}), Status::Ok);
                 }
         }
-        ProjectileSettings settings;
-        settings.method = ProjectileMethod::Exact;
-        settings.radius = random.below(3) == 0 ? 0.0f : static_cast<float>(random.uniform(0.02, 0.3));
-        settings.restitution = static_cast<float>(random.uniform(0.4, 0.9));
-        settings.friction = static_cast<float>(random.uniform(0, 0.4));
-        settings.step = static_cast<float>(random.uniform(0.01, 0.04));
-        const RVec3 start(random.uniform(-2, 2), random.uniform(0.5, 3), random.uniform(-2, 2));
-        const double heading = random.uniform(0, 2 * M_PI), speed = random.uniform(1, 10);
-        const Vec3 velocity(static_cast<float>(speed * std::cos(heading)), static_cast<float>(random.uniform(-3, 8)),
-                            static_cast<float>(speed * std::sin(heading)));
+        const auto [settings, start, velocity] =
+            randomExactThrow(random, {3, {0.02, 0.3}, {0.4, 0.9}, {0, 0.4}, {0.01, 0.04}, {1, 10}, {-3, 8}});
         ftest::CountingWorld plain(world, false), touch(world, true, true), inFront(world, true, true, true);
         std::vector<TrajectoryPoint> a(4096), b(4096), c(4096);
         ProjectileResult ra, rb, rc;
