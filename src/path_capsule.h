@@ -102,6 +102,9 @@ public:
         return true;
     }
 
+    /// The plane.
+    const Plane& plane() const { return mPlane; }
+
 private:
     Plane mPlane;
     SurfaceMaterial mMaterial;

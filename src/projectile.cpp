@@ -333,32 +333,17 @@ private:
             const double s = timeOf(j);
             return p0 + v0 * s + 0.5 * mGravity * s * s;
         };
-        std::uint64_t last = mClearSteps;
-        // The first grid point at or past the end time ends the stretch.
-        const double endIndex = std::ceil(mEndTime / mStep) - static_cast<double>(mGridIndex);
-        if (endIndex < static_cast<double>(last)) {
-            std::uint64_t j = endIndex > 1.0 ? static_cast<std::uint64_t>(endIndex) - 1 : 1;
-            while (j > 1 && static_cast<double>(mGridIndex + j - 1) * mStep >= mEndTime) --j;
-            while (j < last && static_cast<double>(mGridIndex + j) * mStep < mEndTime) ++j;
-            last = j;
-        }
-        const DVec3& left = mLastSurfaceNormal;
+        // The last point of the stretch: mClearSteps on, or the first at or past the end time, or
+        // (after an impact) the last before the body comes back within `lift` of that plane.
+        const DVec3& left = mLastSurfaceNormal;  // zero before the first impact: never in front
         const double lift = liftDistance();
-        // Heights over the plane of the last impact: a parabola, concave (or straight) when
-        // gravity does not pull away from the plane, so those of the points at least `lift` high
-        // are the first ones; the last of them is found by bisection.
-        const bool inFront =
-            mImpactPlane && glm::dot(left, mGravity) <= 0.0 && glm::dot(left, p0 - mLastSurfacePoint) >= lift;
-        if (inFront) {
-            const auto high = [&](std::uint64_t j) { return glm::dot(left, pointAt(j) - mLastSurfacePoint) >= lift; };
-            if (!high(last)) {
-                std::uint64_t lo = 0, hi = last;  // high(lo) (p0 for 0), !high(hi)
-                while (hi - lo > 1) {
-                    const std::uint64_t mid = lo + (hi - lo) / 2;
-                    (high(mid) ? lo : hi) = mid;
-                }
-                last = lo;
-            }
+        const bool inFront = glm::dot(left, p0 - mLastSurfacePoint) >= lift;
+        std::uint64_t last = 0;
+        while (last < mClearSteps) {
+            const std::uint64_t j = last + 1;
+            if (inFront && glm::dot(left, pointAt(j) - mLastSurfacePoint) < lift) break;
+            last = j;
+            if (static_cast<double>(mGridIndex + j) * mStep >= mEndTime) break;
         }
         if (last < 1) return false;
         const DVec3 end = pointAt(last);
@@ -659,7 +644,6 @@ private:
         plane.normal = mSupport.normal;
         plane.distance = static_cast<Real>(glm::dot(toD(plane.normal), surface));
         mPlaneWorld = PlaneWorld(plane, SurfaceMaterial{mSupport.restitution, mSupport.friction});
-        mPlaneNormal = toD(plane.normal);
         mSlidGrid = mGridIndex + steps;
         mSlideSteps = std::min<std::uint64_t>(mSlideSteps * 2, kMaxSlideSteps);
         mSlideBackoff = 2;
@@ -726,8 +710,8 @@ private:
         // On the plane alone (a stretch slideAhead cleared), a chord that comes no nearer to the
         // plane than half a lift distance is not blocked: castPath's first cast reports the plane
         // at once or not at all, and its cast lifted off the plane misses it.
-        const bool planeAlone =
-            mGridIndex < mSlidGrid && mCastOffset == DVec3(0.0) && glm::dot(mPlaneNormal, p1 - p0) > -0.5 * lift;
+        const bool planeAlone = mGridIndex < mSlidGrid && mCastOffset == DVec3(0.0) &&
+                                glm::dot(toD(mPlaneWorld.plane().normal), p1 - p0) > -0.5 * lift;
         const bool blocked = !planeAlone && castPath(p0, p1, true, n, hit);
         Impact found{};
         if (blocked) found = locateImpact(p0, v0, a, duration, hit, true, n);
@@ -858,7 +842,6 @@ private:
         mHasLastSurface = !mInContact;
         rememberSurface(n, mBody.position);
         mHadImpact = true;
-        mImpactPlane = true;
         mLastSurfaceNormal = n;
         mLastSurfacePoint = mBody.position;
         mRecorder.add(mTime, TrajectoryEvent::Bounce, mBody.position, v, n);
@@ -877,9 +860,8 @@ private:
     DVec3 mLastSurfaceNormal{0.0};
     DVec3 mLastSurfacePoint{0.0};
     DVec3 mContactNormal{0.0};
-    DVec3 mContactPoint{0.0};   // a point of the contact surface (the last probe's hit)
-    bool mHadImpact = false;    // mLastSurfaceNormal and mLastSurfacePoint are set
-    bool mImpactPlane = false;  // there was an impact: its normal and point stay set (clearAhead)
+    DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
+    bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
     // InFrontOf::tolerance of clearAhead's queries [m]: well inside liftDistance(), the least
     // height of its chords over the plane, with the plane point's rounding to Real (half an ulp).
     static constexpr float kInFrontTolerance = 1e-5f;
@@ -912,7 +894,6 @@ private:
     CastHit mSupport{};
     bool mHasSupport = false;
     PlaneWorld mPlaneWorld;
-    DVec3 mPlaneNormal{0.0};      // mPlaneWorld's plane's normal
     std::uint64_t mSlidGrid = 0;  // the steps in contact up to this grid point ask mPlaneWorld
     std::uint64_t mSlideSteps = 8, mSlideWait = 0, mSlideBackoff = 2;
     bool mAtRest = false;
