@@ -869,7 +869,9 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
     }
 }
 
-void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) {
+void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) { test(triangle, material, 0); }
+
+void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material, std::uint8_t sharedEdges) {
     // mayTouch(region.capsule, triangle) with the capsule prepared once (in the constructor).
     if (mFailed || !mayTouchTriangle(mPrepared, triangle)) return;
     const DVec3 a = toD(triangle.a), b = toD(triangle.b), c = toD(triangle.c);
@@ -889,9 +891,9 @@ void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& ma
         mFailed = true;
         return;
     }
-    addEdge(a, b, c);
-    addEdge(b, c, a);
-    addEdge(c, a, b);
+    if ((sharedEdges & 1u) == 0) addEdge(a, b, c);
+    if ((sharedEdges & 2u) == 0) addEdge(b, c, a);
+    if ((sharedEdges & 4u) == 0) addEdge(c, a, b);
     if (!mAnchored) {
         // The anchor inside the triangle (edges included), in the plane's own terms.
         const double ab = glm::dot(mNormal, glm::cross(b - a, mAnchor - a));

@@ -25,6 +25,7 @@ namespace {
 
 using foresight::CastHit;
 using foresight::EmbreeWorld;
+using foresight::PlaneRegion;
 using foresight::RVec3;
 using foresight::SegmentCast;
 using foresight::StaticWorld;
@@ -1246,6 +1247,170 @@ TEST(embree_mesh, FirstTouchInFrontAnswersAsAWorldWithoutTheShapesBehind) {
 // findNear walks Embree's BVH for the mesh's triangles; StaticWorld tests every triangle. Both
 // use NearTester on the same triangles, so the lists are the same (as sets, bit for bit), before
 // and after commit.
+// isOnlyPlane through EmbreeWorld leaves out the mesh edges that commit() found shared by
+// exactly two triangles, one on either side (EmbreeWorldSettings::meshAdjacency,
+// PlaneRegionTester's sharedEdges): it must answer as the same world without that, which pairs
+// every edge itself (the settings' two exceptions, too many edges or an edge's two copies
+// rounded apart, could only give the plane where that refused it; neither occurs here); both
+// must give the plane wherever StaticWorld does (EmbreeWorld's tree leaves out
+// triangles that StaticWorld's conservative test may still offer), and where they give it, casts
+// inside the region must meet what the plane alone meets. A floor of 1 m tiles over shared
+// vertices (diagonals alternating) with a hole, a tile cut in three by a vertex on its
+// neighbour's edge (a T-junction), a coincident duplicate of a tile over vertices of its own, a
+// tile repeated over the same vertices, a triangle over a border edge on its tile's side, a sliver, a ridge folded up from the floor along a row
+// of shared vertices, a wall standing on shared floor vertices, and a tilted patch of tiles;
+// random capsules lying along the floor's plane and the tilted one, some narrow, some long.
+TEST(embree_mesh, IsOnlyPlaneAnswersWithTheMeshAdjacencyAsWithoutIt) {
+    Mesh mesh;
+    constexpr int kTiles = 12;  // x and z from -6 to 6
+    const auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (kTiles + 1) + j); };
+    for (int i = 0; i <= kTiles; ++i)
+        for (int j = 0; j <= kTiles; ++j) mesh.vertices.push_back(r3(i - 6.0, 0.0, j - 6.0));
+    const auto tri = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        for (const std::uint32_t k : {a, b, c}) mesh.indices.push_back(k);
+    };
+    const auto extra = [&](double x, double y, double z) {
+        mesh.vertices.push_back(r3(x, y, z));
+        return static_cast<std::uint32_t>(mesh.vertices.size() - 1);
+    };
+    for (int i = 0; i < kTiles; ++i) {
+        for (int j = 0; j < kTiles; ++j) {
+            const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            if (i == 3 && j == 3) continue;  // a hole
+            if (i == 7 && j == 2) {
+                // Cut in three by a vertex on the edge it shares with tile (8, 2): a T-junction.
+                const std::uint32_t m = extra(i - 6.0 + 1.0, 0.0, j - 6.0 + 0.5);
+                tri(a, b, m);
+                tri(a, m, d);
+                tri(d, m, c);
+                continue;
+            }
+            if ((i + j) % 2 == 0) {
+                tri(a, d, c);
+                tri(a, c, b);
+            } else {
+                tri(a, d, b);
+                tri(b, d, c);
+            }
+            if (i == 5 && j == 8) {
+                // A coincident duplicate over vertices of its own.
+                const std::uint32_t e = extra(i - 6.0, 0.0, j - 6.0), f = extra(i - 5.0, 0.0, j - 5.0),
+                                    g = extra(i - 5.0, 0.0, j - 6.0);
+                tri(e, f, g);
+            }
+            if (i == 9 && j == 9) tri(a, d, b);  // the same triangle twice, over the same vertices
+        }
+    }
+    // On the floor's border z = -6, a second triangle over a border edge, on the same side as
+    // the tile's (the edge has two triangles, and nothing beyond it).
+    tri(at(2, 0), at(3, 0), extra(-3.5, 0.0, -5.5));
+    // A sliver on the floor beyond x = 6 (its own vertices and one of the floor's border).
+    tri(at(kTiles, 4), extra(6.0 + 1e-4, 0.0, -1.0), at(kTiles, 5));
+    // A ridge folded up from the floor's row z = 6 (x from -6 to 0), and a wall standing on the
+    // floor's row x = -6 (z from 0 to 6), both over the floor's vertices.
+    for (int i = 0; i < 6; ++i) {
+        const std::uint32_t p = extra(i - 6.0, 0.3, 6.6), q = extra(i - 5.0, 0.3, 6.6);
+        tri(at(i, kTiles), p, q);
+        tri(at(i, kTiles), q, at(i + 1, kTiles));
+    }
+    for (int j = 6; j < kTiles; ++j) {
+        const std::uint32_t p = extra(-6.0, 1.0, j - 6.0), q = extra(-6.0, 1.0, j - 5.0);
+        tri(at(0, j), at(0, j + 1), q);
+        tri(at(0, j), q, p);
+    }
+    // A tilted patch (slope 0.25 along x) of 4 x 4 tiles beside, x from 7 to 11.
+    const std::uint32_t tilted = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j <= 4; ++j) mesh.vertices.push_back(r3(7.0 + i, 0.25 * i, j - 2.0));
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const std::uint32_t a = tilted + static_cast<std::uint32_t>(i * 5 + j), b = a + 5, c = a + 6, d = a + 1;
+            tri(a, d, c);
+            tri(a, c, b);
+        }
+
+    StaticWorld reference;
+    EmbreeWorld embree, unpaired(foresight::EmbreeWorldSettings{.meshAdjacency = false});
+    for (EmbreeWorld* world : {&embree, &unpaired}) {
+        foresight::MeshReport report;
+        ASSERT_EQ(world->addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
+        std::string error;
+        ASSERT_TRUE(world->commit(&error)) << error;
+    }
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        ASSERT_EQ(reference.add(Triangle{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                                         mesh.vertices[mesh.indices[t + 2]]}),
+                  Status::Ok);
+
+    std::mt19937 rng(2611);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const DVec3 slope = glm::normalize(DVec3(-0.25, 1.0, 0.0));
+    int plane = 0, notPlane = 0, staticPlane = 0, gained = 0, checkedCasts = 0;
+    for (int i = 0; i < 20000; ++i) {
+        PlaneRegion region;
+        const bool onTilt = i % 5 == 4;
+        DVec3 start, normal;
+        if (onTilt) {
+            normal = slope;
+            const double x = 7.0 + 4.0 * u(rng);
+            start = DVec3(x, 0.25 * (x - 7.0), -2.0 + 4.0 * u(rng));
+        } else {
+            normal = DVec3(0, 1, 0);
+            start = DVec3(-6.5 + 14.0 * u(rng), 0.0, -6.5 + 14.0 * u(rng));
+        }
+        const double radius = i % 3 == 0 ? 0.05 + 0.1 * u(rng) : 0.05 + 0.8 * u(rng);
+        // Along the plane, starting a little off it (within the radius).
+        const DVec3 along = glm::normalize(glm::cross(normal, DVec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5)));
+        const double length = i % 4 == 0 ? 0.0 : 6.0 * u(rng) * u(rng);
+        region.point = r3(start.x, start.y, start.z);
+        region.normal = Vec3(normal);
+        const DVec3 lifted = start + normal * (0.5 * radius * u(rng));
+        region.capsule.origin = r3(lifted.x, lifted.y, lifted.z);
+        region.capsule.displacement = Vec3(along * length);
+        region.capsule.radius = static_cast<float>(radius);
+        const bool only = embree.isOnlyPlane(region), before = unpaired.isOnlyPlane(region);
+        const bool staticOnly = reference.isOnlyPlane(region);
+        ASSERT_TRUE(only || !before) << "adjacency refused a region the pairing accepted, " << i;
+        ASSERT_TRUE(before || !staticOnly) << "StaticWorld accepted a region EmbreeWorld refused, " << i;
+        gained += only != before ? 1 : 0;
+        staticPlane += staticOnly ? 1 : 0;
+        (only ? plane : notPlane) += 1;
+        if (!only) continue;
+        // The promise: casts inside the capsule, starting clear of the plane, meet what the
+        // plane alone meets (the tiles lie in it up to their vertices' rounding: 1e-5 m).
+        const DVec3 point = d3(region.point);
+        StaticWorld alone;
+        ASSERT_EQ(alone.add(foresight::Plane{region.normal, static_cast<float>(glm::dot(normal, point))}), Status::Ok);
+        const DVec3 a = d3(region.capsule.origin), d(region.capsule.displacement);
+        for (int k = 0; k < 3; ++k) {
+            const double r = 0.3 * radius * u(rng);
+            const DVec3 side = glm::normalize(glm::cross(normal, DVec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5))) *
+                               (0.5 * (radius - r) * u(rng));
+            DVec3 from = a + d * u(rng) + side, to = a + d * u(rng) + side;
+            // From above the plane by more than r (within the capsule) to below it.
+            from += normal * (r + 0.2 * (radius - r) - glm::dot(normal, from - point));
+            to -= normal * (0.3 * (radius - r) + glm::dot(normal, to - point));
+            const SegmentCast cast{r3(from.x, from.y, from.z), Vec3(to - from), static_cast<float>(r)};
+            CastHit hit, expected;
+            const bool found = embree.castSegment(cast, hit), planeFound = alone.castSegment(cast, expected);
+            ASSERT_EQ(found, planeFound) << "region " << i << " cast " << k;
+            if (found) {
+                EXPECT_NEAR(hit.fraction, expected.fraction, 1e-5) << "region " << i << " cast " << k;
+                EXPECT_GT(glm::dot(d3(hit.normal), normal), 0.999999) << "region " << i << " cast " << k;
+            }
+            ++checkedCasts;
+        }
+    }
+    std::printf(
+        "[ isOnlyPlane ] the plane alone in %d of %d regions (%d only with the adjacency; StaticWorld: "
+        "%d), %d casts inside them as against the plane\n",
+        plane, plane + notPlane, gained, staticPlane, checkedCasts);
+    EXPECT_GT(plane, 4000);
+    EXPECT_GT(notPlane, 4000);
+    // Neither exception occurs on this mesh: the adjacency changes no answer.
+    EXPECT_EQ(gained, 0);
+}
+
 TEST(embree_mesh, FindNearReportsWhatStaticWorldReports) {
     struct NearList final : foresight::NearCollector {
         std::vector<std::array<double, 5>> found;

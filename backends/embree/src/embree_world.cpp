@@ -128,6 +128,9 @@ struct EmbreeWorld::Impl {
     // t is triangles[t]).
     std::vector<float> floatVertices;
     std::vector<unsigned> vertexIndices;
+    // Per triangle, its edges shared with exactly one other triangle on the edge's other side
+    // (PlaneRegionTester's sharedEdges), built by commit(); empty before.
+    std::vector<std::uint8_t> sharedEdges;
     double largest = 0.0;  // largest coordinate magnitude of the mesh [Units: m]
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
@@ -142,6 +145,7 @@ struct EmbreeWorld::Impl {
     ~Impl() { release(); }
     void release() {
         confirmations.release();
+        sharedEdges.clear();
         if (regionBvh) rtcReleaseBVH(regionBvh);
         regionBvh = nullptr;
         regionRoot = nullptr;
@@ -596,6 +600,64 @@ unsigned closestPrimitive(const RTCRayHit& rayhit) {
     return rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? RTC_INVALID_GEOMETRY_ID : rayhit.hit.primID;
 }
 
+// PlaneRegionTester's sharedEdges for every triangle (3 vertex indices each, into `vertexCount`
+// vertices): bit k is set when exactly one other triangle has edge k over the same two vertices
+// and, seen along this triangle's normal, its third vertex lies on the edge's other side (the
+// cosine of the fold at the edge above 1e-3: folded back over the edge, or near a right angle,
+// the edge stays unmarked). Whether the two lie in a region's plane is each one's own test when
+// it is offered; when both do, the region's normal (within 4.5e-7 rad of theirs) sees the same
+// sides, so result() would have paired the edge. Found through each vertex's triangles (linear
+// in the mesh). Empty when out of memory: isOnlyPlane then keeps every edge, as without it.
+std::vector<std::uint8_t> sharedEdgeMasks(const std::vector<Triangle>& triangles, const std::vector<unsigned>& indices,
+                                          std::size_t vertexCount) {
+    std::vector<std::uint8_t> masks;
+    try {
+        const std::size_t count = triangles.size();
+        masks.assign(count, 0);
+        // The triangles around each vertex (compressed rows).
+        std::vector<unsigned> start(vertexCount + 1, 0), around(3 * count);
+        for (const unsigned v : indices) ++start[v + 1];
+        for (std::size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
+        std::vector<unsigned> next(start.begin(), start.end() - 1);
+        for (std::size_t t = 0; t < count; ++t)
+            for (int k = 0; k < 3; ++k) around[next[indices[3 * t + k]]++] = static_cast<unsigned>(t);
+        const auto corner = [&](std::size_t t, int k) {
+            const Triangle& tri = triangles[t];
+            return toD(k == 0 ? tri.a : k == 1 ? tri.b : tri.c);
+        };
+        for (std::size_t t = 0; t < count; ++t) {
+            for (int k = 0; k < 3; ++k) {
+                const unsigned u = indices[3 * t + k], v = indices[3 * t + (k + 1) % 3];
+                // Every other triangle over both u and v.
+                unsigned partner = 0, partners = 0;
+                for (unsigned i = start[u]; i < start[u + 1]; ++i) {
+                    const unsigned o = around[i];
+                    if (o == t) continue;
+                    const unsigned* oi = &indices[3 * static_cast<std::size_t>(o)];
+                    if ((oi[0] == v || oi[1] == v || oi[2] == v) && (oi[0] == u || oi[1] == u || oi[2] == u)) {
+                        partner = o;
+                        ++partners;
+                    }
+                }
+                if (partners != 1) continue;
+                const unsigned* oi = &indices[3 * static_cast<std::size_t>(partner)];
+                const int third = oi[0] != u && oi[0] != v ? 0 : oi[1] != u && oi[1] != v ? 1 : 2;
+                const DVec3 a = corner(t, k), b = corner(t, (k + 1) % 3), w = corner(t, (k + 2) % 3);
+                const DVec3 wo = corner(partner, third);
+                const DVec3 n = glm::cross(b - a, w - a);
+                const DVec3 across = glm::cross(b - a, wo - a);
+                // Opposite sides: the partner's normal along n points the other way; clearly so.
+                const double side = glm::dot(n, across);
+                if (side < 0.0 && -side > 1e-3 * glm::length(n) * glm::length(across))
+                    masks[t] |= std::uint8_t(1u << k);
+            }
+        }
+    } catch (const std::bad_alloc&) {
+        masks.clear();
+    }
+    return masks;
+}
+
 // Radius 0, the slow path: the ray traced again with the filter (every float hit tested
 // exactly, doubtful ones checked locally), and the exhaustive exact search if its fixed-size
 // lists overflow.
@@ -863,6 +925,7 @@ bool EmbreeWorld::commit(std::string* error) {
         ::new (static_cast<void*>(impl.confirmations.data() + t))
             Confirmation{triangle, glm::normalize(glm::cross(b - a, c - a))};
     }
+    if (mSettings.meshAdjacency) impl.sharedEdges = sharedEdgeMasks(impl.triangles, impl.vertexIndices, vertexCount);
     impl.committed = true;
     return true;
 }
@@ -1306,13 +1369,17 @@ bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
         return tester.result();
     }
     // The triangles of the boxes the capsule enters: those of the others are certainly out of
-    // its reach (they neither reach into the region nor have an edge crossing it).
+    // its reach (they neither reach into the region nor have an edge crossing it). Their edges
+    // shared by two triangles on either side (sharedEdgeMasks) are not kept: the partner is in
+    // a box the capsule enters too.
     const Triangle* triangles = impl->triangles.data();
+    const std::uint8_t* shared =
+        impl->sharedEdges.size() == impl->triangles.size() ? impl->sharedEdges.data() : nullptr;
     const bool walked = walkRegion(
         impl->regionRoot, regionCapsule(region.capsule), [](float) { return false; },
         [&](const RegionLeaf& leaf) {
             for (std::uint32_t i = 0; i < leaf.leafCount && !tester.failed(); ++i)
-                tester.test(triangles[leaf.triangles[i]]);
+                tester.test(triangles[leaf.triangles[i]], {}, shared ? shared[leaf.triangles[i]] : 0);
             return tester.failed();
         });
     return walked && tester.result();
