@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -189,6 +190,13 @@ public:
         mRecorder.add(0.0, TrajectoryEvent::Start, mBody.position, mBody.velocity);
         const double step = decimalValue(mSettings.step);
         mStep = step;
+        // At least one step, at most 64 (clearAhead's loop over the stretch's points).
+        const auto stepsIn = [step](double time) {
+            return std::clamp<std::uint64_t>(static_cast<std::uint64_t>(std::llround(time / step)), 1, 64);
+        };
+        mMaxClearSteps = stepsIn(kMaxClearTime);
+        mMinClearSteps = std::min(stepsIn(kMinClearTime), mMaxClearSteps);
+        mClearSteps = std::clamp(stepsIn(kStartClearTime), mMinClearSteps, mMaxClearSteps);
         mEndTime = endTime;
         std::uint64_t& gridIndex = mGridIndex;  // step points recorded so far
         while (mTime < endTime && !mStopped) {
@@ -372,14 +380,14 @@ private:
         }
         const std::uint64_t points = last + 1;
         if (clear + 1 == points) {
-            mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, kMaxClearSteps);
+            mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, mMaxClearSteps);
             mClearBackoff = 2;
         } else {
-            mClearSteps = std::max<std::uint64_t>(mClearSteps / 2, 4);
+            mClearSteps = std::max<std::uint64_t>(mClearSteps / 2, mMinClearSteps);
         }
         if (clear == 0) {
             mClearWait = mClearBackoff;
-            mClearBackoff = std::min<std::uint64_t>(mClearBackoff * 2, kMaxClearSteps);
+            mClearBackoff = std::min<std::uint64_t>(mClearBackoff * 2, mMaxClearSteps);
             return false;
         }
         mClearedGrid = mGridIndex + clear;
@@ -882,14 +890,17 @@ private:
     // The step grid of run(), and what clearAhead keeps.
     double mStep = 0.0, mEndTime = 0.0;
     std::uint64_t mGridIndex = 0;
-    // The longest stretches clearAhead and slideAhead ask about [steps]. A free-flight capsule's
-    // radius grows with its bend, |g| T^2 / 8: 0.13 m over 16 steps at 50 Hz, 2 m over 64, which
-    // touched a wall or a pillar early and cleared less (the demo level's throws: 8 % faster at
-    // 16, and the same between 8 and 24). A slide's capsule does not grow so.
-    static constexpr std::uint64_t kMaxClearSteps = 16;
+    // The longest stretches clearAhead and slideAhead ask about. A free-flight capsule's radius
+    // grows with its bend, |g| T^2 / 8: 0.13 m over 0.32 s (16 steps at 50 Hz), 2 m over 1.28 s,
+    // which touched a wall or a pillar early and cleared less (the demo level's throws: 8 %
+    // faster at 16 steps than at 64, and the same between 8 and 24), so its stretch is bounded in
+    // time (kMaxClearTime; the throw planner's coarse 0.1 s grid: 3 steps), from 0.16 s at the
+    // start and at least 0.08 s after a touch. A slide's capsule does not grow so: 64 steps.
+    static constexpr double kMaxClearTime = 0.32, kStartClearTime = 0.16, kMinClearTime = 0.08;  // [s]
     static constexpr std::uint64_t kMaxSlideSteps = 64;
     std::uint64_t mClearedGrid = 0;  // the chords of this free flight up to this grid point hit nothing
     std::uint64_t mClearSteps = 8, mClearWait = 0, mClearBackoff = 2;
+    std::uint64_t mMaxClearSteps = 16, mMinClearSteps = 4;  // the times above in steps (run())
     // What slideAhead keeps: the last probe's hit, and the plane world of a cleared stretch.
     CastHit mSupport{};
     bool mHasSupport = false;
