@@ -192,7 +192,7 @@ public:
         mStep = step;
         // At least one step, at most 64 (clearAhead's loop over the stretch's points).
         const auto stepsIn = [step](double time) {
-            return std::clamp<std::uint64_t>(static_cast<std::uint64_t>(std::llround(time / step)), 1, 64);
+            return static_cast<std::uint64_t>(std::clamp(std::round(time / step), 1.0, 64.0));
         };
         mMaxClearSteps = stepsIn(kMaxClearTime);
         mMinClearSteps = std::min(stepsIn(kMinClearTime), mMaxClearSteps);
