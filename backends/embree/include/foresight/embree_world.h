@@ -105,12 +105,12 @@ struct EmbreeWorldSettings {
     /// As StaticWorldSettings::surfaceTolerance [Units: m] [Limit: >= 0].
     float surfaceTolerance = 1e-5f;
     /// Whether commit() finds the mesh edges shared by exactly two triangles, one on either side
-    /// (1 byte per triangle; linear in the mesh, single-threaded: about 0.12 s more per million
-    /// triangles, 0.55 s instead of 0.43 s for a 1M-triangle terrain here), so that isOnlyPlane
-    /// need not pair them again on every call (13% of an exact projectile's time on the demo
-    /// level's tiled floor). It changes no answer, except that a region refused only because it
-    /// holds more edges than PlaneRegionTester keeps, or because the distances of an edge's two
-    /// copies rounded to either side of the radius, may get the plane.
+    /// (1 byte per triangle; linear in the mesh, single-threaded: 0.05 s for a 1M-triangle
+    /// terrain here, beside Embree's 0.4 to 0.6 s), so that isOnlyPlane need not pair them
+    /// again on every call (13% of an exact projectile's time on the demo level's tiled floor).
+    /// It changes no answer, except that a region refused only because it holds more edges than
+    /// PlaneRegionTester keeps, or because the distances of an edge's two copies rounded to
+    /// either side of the radius, may get the plane.
     bool meshAdjacency = true;
 };
 
