@@ -869,8 +869,6 @@ void PlaneRegionTester::test(const OrientedBox& box, const SurfaceMaterial& mate
     }
 }
 
-void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material) { test(triangle, material, 0); }
-
 void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& material, std::uint8_t sharedEdges) {
     // mayTouch(region.capsule, triangle) with the capsule prepared once (in the constructor).
     if (mFailed || !mayTouchTriangle(mPrepared, triangle)) return;
@@ -1082,9 +1080,9 @@ bool firstTouchOf(std::span<const Plane> planes, std::span<const Sphere> spheres
     // The triangles with the capsule prepared once (each would prepare it again).
     const Capsule c = prepareCapsule(capsule);
     for (const Triangle& t : triangles) {
+        if (behind && behind->behind(t)) continue;
         float f = 0.0f;  // an invalid capsule touches at once (as firstTouch(capsule, t, f) says)
         if (c.valid && !touchTriangle(c, t, f)) continue;
-        if (behind && behind->behind(t)) continue;
         touched = true;
         fraction = std::min(fraction, f);
     }

@@ -258,17 +258,15 @@ public:
     void test(const Sphere& sphere, const SurfaceMaterial& material = {});
     /// See test(const Plane&, const SurfaceMaterial&).
     void test(const OrientedBox& box, const SurfaceMaterial& material = {});
-    /// See test(const Plane&, const SurfaceMaterial&).
-    void test(const Triangle& triangle, const SurfaceMaterial& material = {});
-    /// The same for a triangle of a mesh whose adjacency the caller knows. Bit k of
-    /// `sharedEdges` (edge 0: a to b, 1: b to c, 2: c to a) promises that exactly one other
-    /// triangle has that edge (the same two vertices), that its third vertex lies on the other
-    /// side of the edge (in this triangle's plane), and that it is offered too whenever the edge
-    /// comes within the region's capsule (as every world that offers each triangle that may
-    /// touch the capsule does). result() needs such an edge only to find its pair, so it is not
-    /// kept: the same answer without the edge's distance test and its sort. 0: test(triangle,
-    /// material).
-    void test(const Triangle& triangle, const SurfaceMaterial& material, std::uint8_t sharedEdges);
+    /// See test(const Plane&, const SurfaceMaterial&). For a triangle of a mesh whose adjacency
+    /// the caller knows, bit k of `sharedEdges` (edge 0: a to b, 1: b to c, 2: c to a) promises
+    /// that exactly one other triangle has that edge (the same two vertices), that its third
+    /// vertex lies on the other side of the edge (in this triangle's plane), and that it is
+    /// offered too whenever the edge comes within the region's capsule (as every world that
+    /// offers each triangle that may touch the capsule does). result() needs such an edge only to
+    /// find its pair, so it is not kept: the same answer without the edge's distance test and its
+    /// sort. 0 (the default) promises nothing.
+    void test(const Triangle& triangle, const SurfaceMaterial& material = {}, std::uint8_t sharedEdges = 0);
 
     /// True once a shape has ruled the region out: the rest need not be offered.
     bool failed() const { return mFailed; }

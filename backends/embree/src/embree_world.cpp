@@ -633,8 +633,8 @@ std::vector<std::uint8_t> sharedEdgeMasks(const std::vector<Triangle>& triangles
                 for (unsigned i = start[u]; i < start[u + 1]; ++i) {
                     const unsigned o = around[i];
                     if (o == t) continue;
-                    const unsigned* oi = &indices[3 * static_cast<std::size_t>(o)];
-                    if ((oi[0] == v || oi[1] == v || oi[2] == v) && (oi[0] == u || oi[1] == u || oi[2] == u)) {
+                    const unsigned* oi = &indices[3 * static_cast<std::size_t>(o)];  // u is one of them
+                    if (oi[0] == v || oi[1] == v || oi[2] == v) {
                         partner = o;
                         ++partners;
                     }
@@ -1286,7 +1286,7 @@ bool EmbreeWorld::touchFirst(const SegmentCast& capsule, const InFrontOf* front,
         const Triangle* triangles = impl->triangles.data();
         const auto offer = [&](const Triangle& t) {
             float f = 0.0f;
-            if (!tester.firstTouch(t, f) || (behind && behind->behind(t))) return false;
+            if ((behind && behind->behind(t)) || !tester.firstTouch(t, f)) return false;
             fraction = touched ? std::min(fraction, f) : f;
             touched = true;
             return fraction == 0.0f;  // touching at the start: nothing can come earlier
