@@ -1648,9 +1648,15 @@ private:
             if (gap > -mRadius &&
                 cast(mPosition + n * 0.01, mPosition - n * (std::max(gap, 0.0) + contactReach() + 0.01), probe)) {
                 const DVec3 probeNormal = glm::normalize(toD(probe.normal));
-                if (glm::dot(probeNormal, n) > 0.5) {
+                const DVec3 probeTouch = toD(probe.position);
+                if (glm::dot(probeNormal, n) < 1.0 - kNormalSettle && isKnown(probeNormal, probeTouch, mCount)) {
+                    // The probe met another surface the sphere touches, not the one hit (a
+                    // floor below a ball on a ramp that runs into it): the hit's face is
+                    // measured in its own plane, straight from the centre.
+                    touch = mPosition - n * gap;
+                } else if (glm::dot(probeNormal, n) > 0.5) {
                     n = probeNormal;
-                    touch = toD(probe.position);
+                    touch = probeTouch;
                     nearestOnEdge(n, touch);
                     hit.restitution = probe.restitution;
                     hit.friction = probe.friction;

@@ -56,6 +56,7 @@ using Random = ftest::Random;
 struct Box {
     DVec3 center{0.0}, half{0.5};
     double yaw = 0.0;                            // rotation about y (about z for box2d) [rad]
+    double tilt = 0.0;                           // then about the box's own z (a ramp; 3-D only) [rad]
     double restitution = -1.0, friction = -1.0;  // the box's own material (negative: none)
 };
 
@@ -110,6 +111,12 @@ Quat yawQuat(double yaw, bool aboutZ) {
     return glm::angleAxis(static_cast<float>(yaw), axis);
 }
 
+// A box's orientation: its yaw, then its tilt about its own z axis (3-D).
+Quat boxQuat(const Box& b, bool planar) {
+    if (planar || b.tilt == 0.0) return yawQuat(b.yaw, planar);
+    return glm::normalize(yawQuat(b.yaw, false) * glm::angleAxis(static_cast<float>(b.tilt), Vec3(0, 0, 1)));
+}
+
 // FORESIGHT_ENGINE_SEED=<n> draws other throws and scenes than the ones CI guards (to check that
 // a change generalises instead of fitting these 60 throws).
 std::uint64_t seedBase() {
@@ -132,6 +139,13 @@ double sceneDamping() {
 // through a thin wall or past its middle, and the first contacts are deep.
 bool fastThrows() {
     const char* text = std::getenv("FORESIGHT_ENGINE_FAST");
+    return text && std::string(text) == "1";
+}
+
+// FORESIGHT_ENGINE_RAMPS=1: every scene gets a ramp or two in the ball's way (boxes tilted 8 to 30
+// degrees whose top face rises from the floor), which the ball rolls up, flies off or bounces on.
+bool rampScenes() {
+    const char* text = std::getenv("FORESIGHT_ENGINE_RAMPS");
     return text && std::string(text) == "1";
 }
 
@@ -173,6 +187,33 @@ std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCo
             t.restitution = random.uniform(0.2, 0.8);
             t.friction = random.uniform(0.0, 0.6);
             t.boxes.push_back({DVec3(0, -0.5, 0), DVec3(30, 0.5, planar ? 0.5 : 30), 0.0});
+            const int ramps = rampScenes() ? 1 + random.below(2) : 0;
+            for (int r = 0; r < ramps; ++r) {
+                // Rising along its own x from the floor: the top face's lower edge at y = 0.
+                Box b;
+                const double slope = random.uniform(8.0, 30.0) * M_PI / 180.0;
+                b.half =
+                    DVec3(random.uniform(1.0, 3.0), random.uniform(0.3, 0.6), planar ? 0.5 : random.uniform(1.0, 2.5));
+                const double along = random.uniform(1.0, 5.0) + b.half.x * std::cos(slope);
+                const double facing = heading + random.uniform(-0.6, 0.6) + (r == 1 ? M_PI : 0.0);
+                const double lift = b.half.x * std::sin(slope) - b.half.y * std::cos(slope);
+                if (planar) {
+                    const double side = std::cos(heading) >= 0.0 ? 1.0 : -1.0;
+                    b.center = DVec3(t.position.x + side * along, lift, 0.0);
+                    b.yaw = side * slope;  // rising away from the thrower
+                    if (r == 1) b.yaw = -b.yaw;
+                } else {
+                    b.center =
+                        DVec3(t.position.x + along * std::cos(heading), lift, t.position.z + along * std::sin(heading));
+                    b.yaw = -facing;  // local x along the heading (yaw about y turns x towards -z)
+                    b.tilt = slope;
+                }
+                const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(boxQuat(b, planar)));
+                const DVec3 local = glm::transpose(rotation) * (t.position - b.center);
+                const DVec3 outside = glm::max(glm::abs(local) - b.half, DVec3(0.0));
+                if (glm::length(outside) < t.radius + 0.3) continue;
+                t.boxes.push_back(b);
+            }
             const int walls = 1 + random.below(3);
             for (int w = 0; w < walls; ++w) {
                 Box b;
@@ -190,7 +231,7 @@ std::vector<Throw> makeThrows(const EngineInfo& info, int freeCount, int sceneCo
                 }
                 // Keep the start well clear of the wall (an engine pushes out a sphere that starts
                 // in a wall at once: not a throw).
-                const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(yawQuat(b.yaw, planar)));
+                const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(boxQuat(b, planar)));
                 const DVec3 local = glm::transpose(rotation) * (t.position - b.center);
                 const DVec3 outside = glm::max(glm::abs(local) - b.half, DVec3(0.0));
                 if (glm::length(outside) < t.radius + 0.5) continue;
@@ -399,7 +440,7 @@ Json caseJson(const Throw& t) {
         if (b.friction >= 0.0) j["friction"] = b.friction;
         j["center"] = {b.center.x, b.center.y, b.center.z};
         j["half_extents"] = {b.half.x, b.half.y, b.half.z};
-        const Quat q = yawQuat(b.yaw, planar);
+        const Quat q = boxQuat(b, planar);
         j["rotation"] = {q.x, q.y, q.z, q.w};
         c["boxes"].push_back(j);
     }
@@ -419,6 +460,24 @@ void printStep(const EngineRun& run, const Prediction& predicted, std::size_t k)
                 a.x, a.y, a.z, va.x, va.y, va.z, b.x, b.y, b.z, vb.x, vb.y, vb.z);
 }
 
+// The boxes within 5 cm of a ball centred at `p` (their index, gap, and for a tilted box its
+// tilt), for the diagnostics below.
+void printNearBoxes(const Throw& t, const DVec3& p) {
+    const bool planar = t.engine == PhysicsEngine::Box2D;
+    std::printf("    near:");
+    for (std::size_t i = 0; i < t.boxes.size(); ++i) {
+        const Box& b = t.boxes[i];
+        const glm::dmat3 rotation = glm::mat3_cast(glm::dquat(boxQuat(b, planar)));
+        const DVec3 local = glm::transpose(rotation) * (p - b.center);
+        const DVec3 outside = glm::max(glm::abs(local) - b.half, DVec3(0.0));
+        const double inside =
+            std::min({b.half.x - std::abs(local.x), b.half.y - std::abs(local.y), b.half.z - std::abs(local.z)});
+        const double gap = (glm::length(outside) > 0.0 ? glm::length(outside) : -inside) - t.radius;
+        if (gap < 0.05) std::printf(" box %zu gap %.4f%s", i, gap, b.tilt != 0.0 ? " (ramp)" : "");
+    }
+    std::printf("\n");
+}
+
 Prediction predict(const Throw& t, ProjectileMethod method) {
     StaticWorld world;
     const bool planar = t.engine == PhysicsEngine::Box2D;
@@ -426,7 +485,7 @@ Prediction predict(const Throw& t, ProjectileMethod method) {
         OrientedBox box;
         box.center = RVec3(b.center);
         box.halfExtents = Vec3(b.half);
-        box.orientation = yawQuat(b.yaw, planar);
+        box.orientation = boxQuat(b, planar);
         // Jolt's BoxShape rounds its edges and corners by its convex radius: 0.05 m, or the
         // smallest half extent for a thinner box (the harness's set-up).
         if (t.engine == PhysicsEngine::Jolt)
@@ -636,8 +695,10 @@ protected:
                 if (err > kEndTolerance) {
                     std::printf("DIVERGE %s err %.4f first %d big %d\n", t.id.c_str(), err, first, big);
                     for (int k : {first, big})
-                        if (k >= 1 && (k == first || big != first))
+                        if (k >= 1 && (k == first || big != first)) {
                             for (int j = k - 1; j <= k; ++j) printStep(run, engine, static_cast<std::size_t>(j));
+                            printNearBoxes(t, run.positions[static_cast<std::size_t>(k - 1)]);
+                        }
                 }
             }
             if (t.ownMaterials) {
