@@ -1280,6 +1280,10 @@ private:
             if (!cast(from, to, hit)) return;
             const DVec3 n = glm::normalize(toD(hit.normal));
             if (glm::dot(n, s.normal) < 0.9) return;  // another surface
+            // Another surface the sphere touches, met first, in front of this one (a ramp over
+            // the floor it runs into; the probe's centre is on that surface's offset plane):
+            // the surface keeps the measure it has.
+            if (glm::dot(n, s.normal) < 0.999 && masks(n, toD(hit.position), s)) return;
             const bool settled = glm::dot(n, s.normal) > 1.0 - settle;
             s.normal = n;
             s.touch = toD(hit.position) - clear;
@@ -1637,6 +1641,21 @@ private:
         return false;
     }
 
+    // Whether a probe for `self` that met the plane through `touch` with normal `n` met another
+    // surface the sphere touches, whose contact lies in front of self's plane: two surfaces
+    // that meet in a hollow (a ramp rising from a floor), not two sides of one convex shape,
+    // whose probe converges on the edge between them.
+    bool masks(const DVec3& n, const DVec3& touch, const Surface& self) const {
+        const DVec3 selfPoint = self.touch - self.normal * mRadius;
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (&s == &self || glm::dot(s.normal, n) <= 0.999 || std::abs(glm::dot(touch - s.touch, n)) >= 1e-4)
+                continue;
+            if (glm::dot(s.touch - s.normal * mRadius - selfPoint, self.normal) > 1e-4) return true;
+        }
+        return false;
+    }
+
     void addSurface(CastHit hit) {
         DVec3 n = glm::normalize(toD(hit.normal));
         DVec3 touch = toD(hit.position);
@@ -1649,7 +1668,10 @@ private:
                 cast(mPosition + n * 0.01, mPosition - n * (std::max(gap, 0.0) + contactReach() + 0.01), probe)) {
                 const DVec3 probeNormal = glm::normalize(toD(probe.normal));
                 const DVec3 probeTouch = toD(probe.position);
-                if (glm::dot(probeNormal, n) < 1.0 - kNormalSettle && isKnown(probeNormal, probeTouch, mCount)) {
+                Surface hitSurface;
+                hitSurface.normal = n;
+                hitSurface.touch = touch;
+                if (glm::dot(probeNormal, n) < 0.999 && masks(probeNormal, probeTouch, hitSurface)) {
                     // The probe met another surface the sphere touches, not the one hit (a
                     // floor below a ball on a ramp that runs into it): the hit's face is
                     // measured in its own plane, straight from the centre.

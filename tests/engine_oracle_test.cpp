@@ -14,7 +14,7 @@
 // FORESIGHT_ENGINE_KEEP keeps the harnesses' case and result files in the temporary directory.
 // FORESIGHT_ENGINE_SCENE_DAMPING=<c> draws the damped half of the scenes' damping from 0 to c
 // (0 to 10; 0.5 unless set) instead of 0 to 0.5. FORESIGHT_ENGINE_FAST=1 throws small fast balls
-// (fastThrows).
+// (fastThrows). FORESIGHT_ENGINE_RAMPS=1 puts ramps in the ball's way (rampScenes).
 // A runtime that is not installed skips its engines (and says so), unless FORESIGHT_REQUIRE_ENGINES
 // is set (scripts/test.sh sets it: CI runs them all).
 
