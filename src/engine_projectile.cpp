@@ -856,7 +856,8 @@ private:
         // bounds overlap the sphere's: a sphere rolling on the floor finds the wall ahead as PhysX
         // does (without this, a ball sliding into a wall of triangles went through it).
         const bool bullet = mProfile.engine == PhysicsEngine::Bullet || mProfile.engine == PhysicsEngine::Godot3Bullet;
-        if (bullet || mProfile.engine == PhysicsEngine::PhysX) slideCast(freeMotion, reach);
+        if (bullet || mProfile.engine == PhysicsEngine::PhysX || mProfile.engine == PhysicsEngine::Rapier)
+            slideCast(freeMotion, reach);
         // Box2D's narrow phase makes a contact with every polygon within the skin, wherever the
         // circle heads: a ball rolling under a box's lower corner is wedged there, though no cast
         // along its motion (tilted down by the step's gravity, so it meets the floor first) meets
@@ -1070,7 +1071,8 @@ private:
             double distance = 0.0;
             // A surface the world's closest-point query measured is measured already (probing
             // again could converge on a nearer shape beside it: a wall over the floor).
-            if (!s.closest && closestDistance(mPosition, mRadius + reach + 0.1, axis, distance)) {
+            if (!s.closest && closestDistance(mPosition, mRadius + reach + 0.1, axis, distance) &&
+                !(glm::dot(axis, s.normal) < 0.999 && masks(axis, mPosition - axis * (distance - mRadius), s))) {
                 s.normal = axis;
                 s.gap = distance - mRadius;
                 s.touch = mPosition - axis * s.gap;
