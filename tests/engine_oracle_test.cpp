@@ -93,17 +93,19 @@ struct EngineInfo {
     // against regressions. The target is kShareTarget for both; the engines below it are the
     // open work (docs/engines.md).
     double bounceFloor, endFloor;
+    // The end share it reaches on the scenes with ramps (FORESIGHT_ENGINE_RAMPS).
+    double rampEndFloor;
 };
 
 const EngineInfo kEngines[] = {
-    {"jolt", PhysicsEngine::Jolt, "node", 0.95, 0.95},
-    {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9},
-    {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9},
-    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9},
-    {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9},
-    {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9},
-    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.9},
-    {"box2d", PhysicsEngine::Box2D, "native", 0.95, 0.95},
+    {"jolt", PhysicsEngine::Jolt, "node", 0.95, 0.95, 0.9},
+    {"physx", PhysicsEngine::PhysX, "node", 0.9, 0.9, 0.9},
+    {"rapier", PhysicsEngine::Rapier, "node", 0.9, 0.9, 0.9},
+    {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9, 0.9},
+    {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9, 0.9},
+    {"godot3", PhysicsEngine::Godot3, "godot", 0.9, 0.9, 0.9},
+    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.9, 0.85},
+    {"box2d", PhysicsEngine::Box2D, "native", 0.95, 0.95, 0.9},
 };
 
 Quat yawQuat(double yaw, bool aboutZ) {
@@ -738,15 +740,15 @@ protected:
         std::fflush(stdout);
         EXPECT_LE(freeWorst, kFreeFlightTolerance) << "free flight";
         EXPECT_GE(bounceShare, std::min(kShareTarget, info->bounceFloor)) << "first bounce on the engine's step";
-        EXPECT_GE(endShare, std::min(kShareTarget, info->endFloor)) << "end within 2 cm";
+        const double endFloor = rampScenes() ? info->rampEndFloor : info->endFloor;
+        EXPECT_GE(endShare, std::min(kShareTarget, endFloor)) << "end within 2 cm";
         // The scenes with the boxes' own materials (few: a looser bound) must not fall far below
         // the others: a wrong combine rule would move every bounce of them.
         if (materialScenes > 0) {
             EXPECT_GE(static_cast<double>(materialSameBounce) / materialScenes,
                       std::min(kShareTarget, info->bounceFloor) - 0.25)
                 << "first bounce with the boxes' own materials";
-            EXPECT_GE(static_cast<double>(materialEndWithin) / materialScenes,
-                      std::min(kShareTarget, info->endFloor) - 0.25)
+            EXPECT_GE(static_cast<double>(materialEndWithin) / materialScenes, std::min(kShareTarget, endFloor) - 0.25)
                 << "end within 2 cm with the boxes' own materials";
         }
         if (bounceShare < kShareTarget || endShare < kShareTarget)
