@@ -4,6 +4,7 @@
 
 #include "internal.h"
 
+#include <limits>
 #include <type_traits>
 
 FORESIGHT_NAMESPACE_BEGIN
@@ -968,9 +969,9 @@ DeadReckoningBatch::DeadReckoningBatch(std::size_t capacity) : mPrepared(capacit
     sizeVec(mPosition);
     sizeVec(mVelocity);
     sizeVec(mAcceleration);
-    sizeQuat(mFixedOrientation);
     mTimestamp.resize(capacity);
-    mAgeScale.resize(capacity);
+    sizeGroup(mFixed);
+    sizeQuat(mFixedOrientation);
     sizeGroup(mTurning);
     sizeQuat(mTurnOrientation);
     sizeQuat(mTurnAxisTerm);
@@ -1006,32 +1007,34 @@ Status DeadReckoningBatch::set(std::size_t entity, const PreparedDeadReckoning& 
     put(mPosition, entity, u.mPosition);
     put(mVelocity, entity, u.mVelocity);
     put(mAcceleration, entity, u.mAcceleration);
-    // What the turning formula gives at h = 0: the orientation of an entity that does not turn.
-    putQuat(mFixedOrientation, entity, turnedOrientation(u.mOrientation, u.mAxisTerm, 1.0f, 0.0f));
-    mTimestamp[entity] = u.mTimestamp;
-    mAgeScale[entity] = u.mKernel == kKernelStatic ? 0.0f : 1.0f;
+    // A STATIC entity keeps its state: the age 0 (a timestamp in the future is shown as stamped),
+    // without a column of its own to read every frame.
+    mTimestamp[entity] = u.mKernel == kKernelStatic ? std::numeric_limits<double>::infinity() : u.mTimestamp;
 
     const std::span<const PreparedDeadReckoning> all(mPrepared);
     // Body-axis entities get their orientation from the body pass (the same formula, with the
     // sine and cosine it computes anyway).
-    assignToGroup(mTurning, all, entity, u.mHalfRate > 0.0 && u.mKernel != kKernelBody,
-                  [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
-                      putQuat(mTurnOrientation, slot, m.mOrientation);
-                      putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
-                      mTurnTimestamp[slot] = m.mTimestamp;
-                      mTurnHalfRate[slot] = m.mHalfRate;
-                  });
-    assignToGroup(mBody, all, entity, u.mKernel == kKernelBody,
-                  [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
-                      put(mBodyPosition, slot, m.mPosition);
-                      put(mBodyVelocity, slot, m.mVelocity);
-                      put(mBodyAcceleration, slot, m.mAcceleration);
-                      put(mBodyAxis, slot, m.mAxis);
-                      putQuat(mBodyOrientation, slot, m.mOrientation);
-                      putQuat(mBodyAxisTerm, slot, m.mAxisTerm);
-                      mBodyTimestamp[slot] = m.mTimestamp;
-                      mBodyHalfRate[slot] = m.mHalfRate;
-                  });
+    const bool turning = u.mHalfRate > 0.0 && u.mKernel != kKernelBody, body = u.mKernel == kKernelBody;
+    // What the turning formula gives at h = 0: the orientation of an entity that does not turn.
+    assignToGroup(mFixed, all, entity, !turning && !body, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+        putQuat(mFixedOrientation, slot, turnedOrientation(m.mOrientation, m.mAxisTerm, 1.0f, 0.0f));
+    });
+    assignToGroup(mTurning, all, entity, turning, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+        putQuat(mTurnOrientation, slot, m.mOrientation);
+        putQuat(mTurnAxisTerm, slot, m.mAxisTerm);
+        mTurnTimestamp[slot] = m.mTimestamp;
+        mTurnHalfRate[slot] = m.mHalfRate;
+    });
+    assignToGroup(mBody, all, entity, body, [&](std::uint32_t slot, const PreparedDeadReckoning& m) {
+        put(mBodyPosition, slot, m.mPosition);
+        put(mBodyVelocity, slot, m.mVelocity);
+        put(mBodyAcceleration, slot, m.mAcceleration);
+        put(mBodyAxis, slot, m.mAxis);
+        putQuat(mBodyOrientation, slot, m.mOrientation);
+        putQuat(mBodyAxisTerm, slot, m.mAxisTerm);
+        mBodyTimestamp[slot] = m.mTimestamp;
+        mBodyHalfRate[slot] = m.mHalfRate;
+    });
     return Status::Ok;
 }
 
@@ -1045,16 +1048,15 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
     // (or refuses it). Never in a sane frame.
     std::int32_t unusual = 0;
 
-    // Pass 1, every entity: the world-axis translation and the fixed orientation, chunk by
-    // chunk: a straight-line loop over the columns (vectorised), the results staged in SoA
-    // then stored as structs.
+    // Pass 1, every entity: the world-axis translation, chunk by chunk: a straight-line loop
+    // over the columns (vectorised), the results staged in SoA then stored as structs.
     for (std::size_t begin = 0; begin < n; begin += kChunk) {
         const std::size_t m = std::min(kChunk, n - begin);
         alignas(16) Real px[kChunk], py[kChunk], pz[kChunk];
         alignas(16) float vx[kChunk], vy[kChunk], vz[kChunk];
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t i = begin + j;
-            const float tf = frameAge(time, mTimestamp[i], limit) * mAgeScale[i];
+            const float tf = frameAge(time, mTimestamp[i], limit);
             const Real t = static_cast<Real>(tf);
             const Real halfT2 = Real(0.5) * t * t;
             px[j] = mPosition.x[i] + (Real(mVelocity.x[i]) * t + Real(mAcceleration.x[i]) * halfT2);
@@ -1071,11 +1073,17 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
             DeadReckoningResult& r = out[i];
             r.position = RVec3(px[j], py[j], pz[j]);
             r.velocity = Vec3(vx[j], vy[j], vz[j]);
-            r.orientation.w = mFixedOrientation.w[i];
-            r.orientation.x = mFixedOrientation.x[i];
-            r.orientation.y = mFixedOrientation.y[i];
-            r.orientation.z = mFixedOrientation.z[i];
         }
+    }
+
+    // The entities that do not turn (dense): their fixed orientation. Read by the other
+    // entities' passes instead, it would be read and overwritten for more than half of them.
+    for (std::size_t s = 0; s < mFixed.count; ++s) {
+        Quat& o = out[mFixed.entity[s]].orientation;
+        o.w = mFixedOrientation.w[s];
+        o.x = mFixedOrientation.x[s];
+        o.y = mFixedOrientation.y[s];
+        o.z = mFixedOrientation.z[s];
     }
 
     // Pass 2, the turning world-axis entities (dense): the orientation (turnedOrientation).

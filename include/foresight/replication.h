@@ -438,9 +438,10 @@ std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> enti
 /// Entities are numbered 0 to capacity() - 1; each starts as a default PreparedDeadReckoning
 /// (STATIC at the origin). The constructor allocates everything (about 340 bytes per entity,
 /// 380 in the double build); no other call allocates. One frame: a vectorised pass over every
-/// entity (the world-axis translation), then one over the turning world-axis entities only
-/// (their orientation: a non-turning entity pays no sine or cosine), then one over the
-/// body-axis entities (their positions and orientations).
+/// entity (the world-axis translation), one that copies the orientation of the entities that do
+/// not turn, one over the turning world-axis entities only (their orientation: a non-turning
+/// entity pays no sine or cosine), then one over the body-axis entities (their positions and
+/// orientations).
 class DeadReckoningBatch {
 public:
     /// A batch of `capacity` entities [Limit: < 2^32]. Allocates.
@@ -482,13 +483,15 @@ private:
         std::size_t count = 0;
     };
     // Every entity: the translation (world-axis formula; body-axis positions are redone from
-    // the body group) and the orientation when it does not turn.
+    // the body group).
     std::vector<PreparedDeadReckoning> mPrepared;
     Vec3Columns<Real> mPosition;
     Vec3Columns<float> mVelocity, mAcceleration;
-    QuatColumns mFixedOrientation;  // A normalised as the turning formula does at h = 0
-    std::vector<double> mTimestamp;
-    std::vector<float> mAgeScale;  // 0 for STATIC, 1 otherwise
+    std::vector<double> mTimestamp;  // +infinity for STATIC: frameAge gives it the age 0
+    // The entities that neither turn nor are body-axis: their fixed orientation (A normalised
+    // as the turning formula does at h = 0), copied into their results.
+    Group mFixed;
+    QuatColumns mFixedOrientation;
     // Turning world-axis entities (|w| > 0): the orientation A cos h + B sin h.
     Group mTurning;
     QuatColumns mTurnOrientation, mTurnAxisTerm;
