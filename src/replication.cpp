@@ -1076,8 +1076,8 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
         }
     }
 
-    // The entities that do not turn (dense): their fixed orientation. Read by the other
-    // entities' passes instead, it would be read and overwritten for more than half of them.
+    // The entities that neither turn nor are body-axis (dense): their fixed orientation (passes
+    // 2 and 3 give the others theirs).
     for (std::size_t s = 0; s < mFixed.count; ++s) {
         Quat& o = out[mFixed.entity[s]].orientation;
         o.w = mFixedOrientation.w[s];
