@@ -1072,8 +1072,7 @@ private:
             // A surface the world's closest-point query measured is measured already (probing
             // again could converge on a nearer shape beside it: a wall over the floor).
             if (!s.closest && closestDistance(mPosition, mRadius + reach + 0.1, axis, distance) &&
-                !(glm::dot(axis, s.normal) < 0.999 &&
-                  masks(axis, mPosition - axis * (distance - mRadius), SurfacePlace{s.normal, s.touch}))) {
+                !masks(axis, mPosition - axis * (distance - mRadius), SurfacePlace{s.normal, s.touch})) {
                 s.normal = axis;
                 s.gap = distance - mRadius;
                 s.touch = mPosition - axis * s.gap;
@@ -1286,7 +1285,7 @@ private:
             // Another surface the sphere touches, met first, in front of this one (a ramp over
             // the floor it runs into; the probe's centre is on that surface's offset plane):
             // the surface keeps the measure it has.
-            if (glm::dot(n, s.normal) < 0.999 && masks(n, toD(hit.position), SurfacePlace{s.normal, s.touch})) return;
+            if (masks(n, toD(hit.position), SurfacePlace{s.normal, s.touch})) return;
             const bool settled = glm::dot(n, s.normal) > 1.0 - settle;
             s.normal = n;
             s.touch = toD(hit.position) - clear;
@@ -1648,8 +1647,10 @@ private:
     // it) that met the plane through `touch` with normal `n` met another surface the sphere
     // touches, whose contact lies in front of self's plane: two surfaces that meet in a hollow
     // (a ramp rising from a floor), not two sides of one convex shape, whose probe converges on
-    // the edge between them. `n` differs from self's normal: self is none of mSurfaces then.
+    // the edge between them. A probe that met self's own normal again met self: false (self
+    // may be one of mSurfaces; with another normal it matches none of them).
     bool masks(const DVec3& n, const DVec3& touch, const SurfacePlace& self) const {
+        if (glm::dot(n, self.normal) >= 0.999) return false;
         const DVec3 selfPoint = self.touch - self.normal * mRadius;
         for (int i = 0; i < mCount; ++i) {
             const Surface& s = mSurfaces[i];
@@ -1671,7 +1672,7 @@ private:
                 cast(mPosition + n * 0.01, mPosition - n * (std::max(gap, 0.0) + contactReach() + 0.01), probe)) {
                 const DVec3 probeNormal = glm::normalize(toD(probe.normal));
                 const DVec3 probeTouch = toD(probe.position);
-                if (glm::dot(probeNormal, n) < 0.999 && masks(probeNormal, probeTouch, SurfacePlace{n, touch})) {
+                if (masks(probeNormal, probeTouch, SurfacePlace{n, touch})) {
                     // The probe met another surface the sphere touches, not the one hit (a
                     // floor below a ball on a ramp that runs into it): the hit's face is
                     // measured in its own plane, straight from the centre.
