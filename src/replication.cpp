@@ -870,6 +870,23 @@ constexpr std::size_t kChunk = 256;  // entities per vectorised pass
 inline bool finiteF(float x) { return x - x == 0.0f; }
 inline bool finiteR(Real x) { return x - x == Real(0); }
 
+// Asks for the cache lines of `bytes` bytes from `address` for writing (a hint; nothing where
+// the compiler has no prefetch).
+inline void prefetchForWrite(const void* address, std::size_t bytes) {
+#if defined(__GNUC__) || defined(__clang__)
+    const char* p = static_cast<const char*>(address);
+    for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(p + offset, 1);
+#else
+    (void)address;
+    (void)bytes;
+#endif
+}
+
+// Pass 1 asks for the result lines this many entities ahead of the ones it stores, a group of
+// kStoreGroup at a time (measured: 64 ahead as good as 256 or 1024).
+constexpr std::size_t kStoreAhead = 64;
+constexpr std::size_t kStoreGroup = 8;
+
 // Entity i's quaternion from a batch's w, x, y, z columns.
 template <class Columns>
 inline Quat quatAt(const Columns& c, std::size_t i) {
@@ -1068,8 +1085,13 @@ std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimi
             unusual |= static_cast<std::int32_t>(!finiteR(px[j] + py[j] + pz[j])) |
                        static_cast<std::int32_t>(!finiteF(vx[j] + vy[j] + vz[j]));
         }
+        // The results are stored as structs: a store to a line that is not in the cache waits
+        // for the line, and with six stores per entity the stores in flight fill up before
+        // memory delivers, unless the lines were asked for ahead.
         for (std::size_t j = 0; j < m; ++j) {
             const std::size_t i = begin + j;
+            if (j % kStoreGroup == 0 && i + kStoreAhead + kStoreGroup <= n)
+                prefetchForWrite(&out[i + kStoreAhead], kStoreGroup * sizeof(DeadReckoningResult));
             DeadReckoningResult& r = out[i];
             r.position = RVec3(px[j], py[j], pz[j]);
             r.velocity = Vec3(vx[j], vy[j], vz[j]);
