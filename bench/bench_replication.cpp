@@ -11,7 +11,11 @@
 ///                             per frame), extrapolation limit 0.25 s
 ///   BM_Replication/Prepared/FPW, /RVW, /RPB, /RVB  the same with every entity on one model
 ///   BM_Replication/SoA        DeadReckoningBatch::extrapolate over the same 100 000 (the
-///                             updates set once, not timed), limit 0.25 s: the fast path
+///                             updates set once, not timed), limit 0.25 s: the fast path,
+///                             with the widest instruction set this machine runs (the label:
+///                             AVX2 or baseline; every one gives the same bytes)
+///   BM_Replication/SoA/Baseline, /SoA/Cold/Baseline  the mix, hot and cold, with the baseline
+///                             instruction set (what a processor without AVX2 runs)
 ///   BM_Replication/SoA/FPW, /RVW, /RPB, /RVB      the same with every entity on one model
 ///   BM_Replication/SoA/Cold   BM_Replication/SoA (mix) with the data evicted before every frame
 ///                             (a read of a buffer twice the last-level cache, not timed), as a
@@ -34,6 +38,7 @@
 /// ratios to PlainLoop from one run's medians.
 
 #include "bench_scenes.h"
+#include "replication_batch.h"
 
 #include <foresight/foresight.h>
 
@@ -142,7 +147,15 @@ void BM_Prepared(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
 }
 
+// The instruction set a batch benchmark runs: the widest this machine has, or the baseline (what
+// a processor without AVX2 runs) when `baseline`.
+detail::BatchSimd batchSimd(bool baseline) {
+    return baseline ? detail::BatchSimd::Baseline : detail::BatchAccess::best();
+}
+const char* simdLabel(detail::BatchSimd simd) { return simd == detail::BatchSimd::Avx2 ? "AVX2" : "baseline"; }
+
 // Argument: as BM_Prepared.
+template <bool kBaseline>
 void BM_SoA(benchmark::State& state) {
     const Entities& e = entities(static_cast<DeadReckoningAlgorithm>(state.range(0)));
     if (e.prepared.size() != kEntityCount) {
@@ -152,13 +165,15 @@ void BM_SoA(benchmark::State& state) {
     DeadReckoningBatch batch(kEntityCount);
     for (std::size_t i = 0; i < kEntityCount; ++i) (void)batch.set(i, e.prepared[i]);
     std::vector<DeadReckoningResult> out(kEntityCount);
+    const detail::BatchSimd simd = batchSimd(kBaseline);
     std::size_t refused = 0;
     for (auto _ : state) {
-        refused += batch.extrapolate(kNow, 0.25f, out);
+        refused += detail::BatchAccess::extrapolate(batch, simd, kNow, 0.25f, out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
     if (refused != 0) state.SkipWithError("entities were refused");
+    state.SetLabel(simdLabel(simd));
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
 }
 
@@ -205,6 +220,7 @@ double batchBytesPerEntity(double turningShare, double bodyShare) {
     return pass1 + (1.0 - turningShare - bodyShare) * fixed + turningShare * pass2 + bodyShare * pass3;
 }
 
+template <bool kBaseline>
 void BM_SoACold(benchmark::State& state) {
     const Entities& e = entities();
     if (e.prepared.size() != kEntityCount) {
@@ -220,18 +236,20 @@ void BM_SoACold(benchmark::State& state) {
     }
     std::vector<DeadReckoningResult> out(kEntityCount);
     const std::vector<std::uint64_t>& eviction = evictionBuffer();
+    const detail::BatchSimd simd = batchSimd(kBaseline);
     std::size_t refused = 0;
     std::uint64_t sink = 0;
     for (auto _ : state) {
         state.PauseTiming();
         sink += readAll(eviction);
         state.ResumeTiming();
-        refused += batch.extrapolate(kNow, 0.25f, out);
+        refused += detail::BatchAccess::extrapolate(batch, simd, kNow, 0.25f, out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
     benchmark::DoNotOptimize(sink);
     if (refused != 0) state.SkipWithError("entities were refused");
+    state.SetLabel(simdLabel(simd));
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kEntityCount));
     const double bytes =
         batchBytesPerEntity(static_cast<double>(turning) / kEntityCount, static_cast<double>(body) / kEntityCount);
@@ -317,13 +335,18 @@ BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/FPW")->Arg(2)->Unit(benchm
 BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Prepared)->Name("BM_Replication/Prepared/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SoA)->Name("BM_Replication/SoA")->Arg(1)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/FPW")->Arg(2)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SoA)->Name("BM_Replication/SoA/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, false)->Name("BM_Replication/SoA")->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, false)->Name("BM_Replication/SoA/FPW")->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, false)->Name("BM_Replication/SoA/RVW")->Arg(4)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, false)->Name("BM_Replication/SoA/RPB")->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, false)->Name("BM_Replication/SoA/RVB")->Arg(8)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoA, true)->Name("BM_Replication/SoA/Baseline")->Arg(1)->Unit(benchmark::kMicrosecond);
 // Fixed iteration counts: every frame pays for an untimed read of the eviction buffer.
-BENCHMARK(BM_SoACold)->Name("BM_Replication/SoA/Cold")->Iterations(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoACold, false)->Name("BM_Replication/SoA/Cold")->Iterations(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_SoACold, true)
+    ->Name("BM_Replication/SoA/Cold/Baseline")
+    ->Iterations(200)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MemoryRead)->Name("BM_Replication/MemoryRead")->Iterations(20)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MemoryWrite)->Name("BM_Replication/MemoryWrite")->Iterations(20)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlainLoop)->Name("BM_Replication/PlainLoop")->Unit(benchmark::kMicrosecond);

@@ -378,9 +378,11 @@ if [[ "${1:-}" == "--replication" ]]; then
     "$dir/bench/foresight_bench_replication" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
         --benchmark_out="$out" --benchmark_out_format=json "$@" >/dev/null
     echo "Replication, 100 000 entities per frame, medians of this run ($out); one thread:"
-    { medians "$out" bytes/entity | sed 's/^/bytes /'; spreads "$out" items_per_second
+    { medians "$out" bytes/entity | sed 's/^/bytes /'; medians "$out" label | sed 's/^/label /'
+        spreads "$out" items_per_second
         spreads "$out" bytes_per_second | sed 's/^/bandwidth /'; } | awk -v strict="${FORESIGHT_BENCH_STRICT:-0}" '
         $1 == "bytes" { bytes[$2] = $3; next }
+        $1 == "label" { gsub(/"/, "", $3); label[$2] = $3; next }
         $1 == "bandwidth" { bandwidth[$2] = $3; bandwidthSpread[$2] = $4; next }
         { rate[$1] = $2; spread[$1] = $3 }
         function ms(name) { return 1e8 / rate[name] }  # ms per frame of 100 000
@@ -405,10 +407,11 @@ if [[ "${1:-}" == "--replication" ]]; then
             cold = "BM_Replication/SoA/Cold/iterations:200"
             read = "BM_Replication/MemoryRead/iterations:20"; write = "BM_Replication/MemoryWrite/iterations:20"
             if (cold in rate) {
-                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)\n", "DeadReckoningBatch (mix), hot cache",
-                       ms(soa "/1"), 100 * spread[soa "/1"]
-                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)  %.2fx hot\n",
-                       "DeadReckoningBatch (mix), cold (data evicted)", ms(cold), 100 * spread[cold], ms(cold) / ms(soa "/1")
+                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)  %s\n", "DeadReckoningBatch (mix), hot cache",
+                       ms(soa "/1"), 100 * spread[soa "/1"], label[soa "/1"]
+                printf "  %-46s %8.3f ms per frame  (spread %4.1f%%)  %.2fx hot  %s\n",
+                       "DeadReckoningBatch (mix), cold (data evicted)", ms(cold), 100 * spread[cold], ms(cold) / ms(soa "/1"),
+                       label[cold]
                 if (read in bandwidth && write in bandwidth) {
                     printf "  %-46s %8.2f GB/s read, %.2f GB/s write (spread %.1f%%, %.1f%%)\n",
                            "memory bandwidth, one thread", bandwidth[read] / 1e9, bandwidth[write] / 1e9,
@@ -417,6 +420,10 @@ if [[ "${1:-}" == "--replication" ]]; then
                            "lower bound for the cold frame", bytes[cold], bytes[cold] * 1e5 / bandwidth[read] * 1e3
                 }
                 printf "  %-46s %s\n", "target: cold <= 1 ms", (ms(cold) <= 1 ? "met" : "MISSED")
+                baseHot = soa "/Baseline/1"; baseCold = "BM_Replication/SoA/Cold/Baseline/iterations:200"
+                if (label[soa "/1"] != "baseline" && baseHot in rate && baseCold in rate)
+                    printf "  %-46s %8.3f ms hot, %.3f ms cold (without AVX2)\n",
+                           "the same with the baseline instruction set", ms(baseHot), ms(baseCold)
             }
             if (receivers in rate)
                 printf "  %-46s %8.1f ns per receiver (%.2f ms for 100 000)\n", "DeadReckoningReceiver::sample (PVB)",

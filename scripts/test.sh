@@ -79,7 +79,7 @@ step "installing dependencies"
 step "checking the C++ layout (clang-format-14 with .clang-format)"
 # Every tracked C++ file as clang-format lays it out; the diff names the files to format with
 # `clang-format-14 -i FILE`.
-mapfile -t cpp_files < <(git ls-files '*.cpp' '*.h' 2>/dev/null || find include src backends tools tests bench examples fuzz -name '*.cpp' -o -name '*.h')
+mapfile -t cpp_files < <(git ls-files '*.cpp' '*.h' '*.inc' 2>/dev/null || find include src backends tools tests bench examples fuzz -name '*.cpp' -o -name '*.h' -o -name '*.inc')
 if ! clang-format-14 --dry-run --Werror "${cpp_files[@]}"; then
     echo "test.sh: C++ files differ from .clang-format's layout (above); run clang-format-14 -i on them" >&2
     exit 1

@@ -14,6 +14,8 @@
 
 #include <foresight/replication.h>
 
+#include "replication_batch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +42,7 @@ using foresight::Smoothing;
 using foresight::Status;
 using foresight::UpdateOutcome;
 using foresight::Vec3;
+using foresight::detail::BatchSimd;
 using ftest::DQuat;
 using ftest::DVec3;
 
@@ -1141,6 +1144,26 @@ void checkAgainstReference(const DeadReckoningState& state, double stamp, double
         ++worst.velocityMismatches;
 }
 
+// The instruction sets of DeadReckoningBatch's passes that this build has and this machine runs.
+std::vector<BatchSimd> availableSimd() {
+    std::vector<BatchSimd> sets;
+    for (const BatchSimd simd : {BatchSimd::Baseline, BatchSimd::Avx2})
+        if (foresight::detail::BatchAccess::available(simd)) sets.push_back(simd);
+    return sets;
+}
+
+const char* simdName(BatchSimd simd) { return simd == BatchSimd::Avx2 ? "AVX2" : "baseline"; }
+
+// The first entity whose results differ in a byte (field by field: the double build's struct has
+// padding), or a.size() when none does.
+std::size_t firstDifference(const std::vector<DeadReckoningResult>& a, const std::vector<DeadReckoningResult>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!ftest::sameBytes(a[i].position, b[i].position) || !ftest::sameBytes(a[i].velocity, b[i].velocity) ||
+            !ftest::sameBytes(a[i].orientation, b[i].orientation))
+            return i;
+    return a.size();
+}
+
 void randomPrepared(std::size_t n, std::vector<DeadReckoningState>& states, std::vector<double>& stamps, double now) {
     ftest::Random random(77, kRandomStep);
     states.resize(n);
@@ -1251,13 +1274,17 @@ TEST(Prepared, AnAgeBeyondFloatRangeIsRefusedOrFinite) {
             const std::size_t refused = foresight::extrapolateDeadReckoning(entities, 1e300, kInfinity, reference);
             foresight::DeadReckoningBatch batch(1);
             ASSERT_EQ(batch.set(0, p), Status::Ok);
-            EXPECT_EQ(batch.extrapolate(1e300, std::numeric_limits<float>::infinity(), out), refused)
-                << static_cast<int>(algorithm) << " " << spin;
             const auto finite = [](const auto& v) {
                 return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
             };
-            EXPECT_TRUE(finite(out[0].position) && finite(out[0].velocity))
-                << static_cast<int>(algorithm) << " " << spin;
+            for (const BatchSimd simd : availableSimd()) {
+                EXPECT_EQ(foresight::detail::BatchAccess::extrapolate(batch, simd, 1e300,
+                                                                      std::numeric_limits<float>::infinity(), out),
+                          refused)
+                    << static_cast<int>(algorithm) << " " << spin << " " << simdName(simd);
+                EXPECT_TRUE(finite(out[0].position) && finite(out[0].velocity))
+                    << static_cast<int>(algorithm) << " " << spin << " " << simdName(simd);
+            }
         }
     }
 }
@@ -1279,6 +1306,15 @@ TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
         std::vector<DeadReckoningResult> scalar(n), soa(n);
         EXPECT_EQ(foresight::extrapolateDeadReckoning(prepared, now, limit, scalar), 0u);
         EXPECT_EQ(batch.extrapolate(now, limit, soa), 0u);
+        // Every instruction set the passes are compiled for gives the same bytes as the one
+        // extrapolate chose (each runs the same source: the same IEEE operations).
+        for (const BatchSimd simd : availableSimd()) {
+            std::vector<DeadReckoningResult> other(n);
+            EXPECT_EQ(foresight::detail::BatchAccess::extrapolate(batch, simd, now, limit, other), 0u);
+            ASSERT_EQ(firstDifference(other, soa), n)
+                << simdName(simd) << " differs from " << simdName(foresight::detail::BatchAccess::best())
+                << " at limit " << limit;
+        }
         ContractErrors worstScalar, worstSoa;
         for (std::size_t i = 0; i < n; ++i) {
             checkAgainstReference(states[i], stamps[i], now, limit, scalar[i], worstScalar);
@@ -1317,10 +1353,65 @@ TEST(Prepared, MeetsTheAccuracyContractOn100000RandomStates) {
     }
     std::vector<DeadReckoningResult> soa(n);
     EXPECT_EQ(batch.extrapolate(now, 0.25f, soa), 0u);
+    for (const BatchSimd simd : availableSimd()) {
+        std::vector<DeadReckoningResult> other(n);
+        EXPECT_EQ(foresight::detail::BatchAccess::extrapolate(batch, simd, now, 0.25f, other), 0u);
+        ASSERT_EQ(firstDifference(other, soa), n) << simdName(simd);
+    }
     ContractErrors worst;
     for (std::size_t i = 0; i < n; ++i) checkAgainstReference(states[i], stamps[i], now, 0.25f, soa[i], worst);
     EXPECT_LE(worst.position, 1.0);
     EXPECT_LE(worst.orientation, 4e-7);
+}
+
+// DeadReckoningBatch keeps its columns in one allocation of its own: copies are deep (a change
+// to the copy leaves the original as it was), moves take the entities and leave an empty batch.
+TEST(Prepared, BatchCopiesAreDeepAndMovesLeaveAnEmptyBatch) {
+    const double now = 50.0;
+    std::vector<DeadReckoningState> states;
+    std::vector<double> stamps;
+    const std::size_t n = 3000;
+    randomPrepared(n, states, stamps, now);
+    foresight::DeadReckoningBatch original(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        foresight::PreparedDeadReckoning p;
+        ASSERT_EQ(foresight::prepareDeadReckoning(states[i], stamps[i], p), Status::Ok);
+        ASSERT_EQ(original.set(i, p), Status::Ok);
+    }
+    const auto frame = [&](const foresight::DeadReckoningBatch& batch) {
+        std::vector<DeadReckoningResult> out(batch.capacity());
+        EXPECT_EQ(batch.extrapolate(now, 0.25f, out), 0u);
+        return out;
+    };
+    const std::vector<DeadReckoningResult> expected = frame(original);
+
+    foresight::DeadReckoningBatch copy(original);
+    EXPECT_EQ(firstDifference(frame(copy), expected), n);
+    // Entity 7 becomes a static one in the copy only.
+    ASSERT_EQ(copy.set(7, foresight::PreparedDeadReckoning{}), Status::Ok);
+    const std::vector<DeadReckoningResult> changed = frame(copy);
+    EXPECT_EQ(firstDifference(changed, expected), 7u);
+    EXPECT_EQ(changed[7].position, rv(0, 0, 0));
+    EXPECT_EQ(firstDifference(frame(original), expected), n);
+
+    foresight::DeadReckoningBatch assigned(5);
+    assigned = original;
+    EXPECT_EQ(assigned.capacity(), n);
+    EXPECT_EQ(firstDifference(frame(assigned), expected), n);
+
+    foresight::DeadReckoningBatch moved(std::move(assigned));
+    EXPECT_EQ(firstDifference(frame(moved), expected), n);
+    EXPECT_EQ(assigned.capacity(), 0u);  // NOLINT(bugprone-use-after-move): moved-from is empty
+    std::vector<DeadReckoningResult> none;
+    EXPECT_EQ(assigned.extrapolate(now, 0.25f, none), 0u);
+
+    foresight::DeadReckoningBatch target(2);
+    target = std::move(moved);
+    EXPECT_EQ(firstDifference(frame(target), expected), n);
+    EXPECT_EQ(moved.capacity(), 0u);  // NOLINT(bugprone-use-after-move)
+    // A moved-from batch takes a new value.
+    moved = copy;
+    EXPECT_EQ(firstDifference(frame(moved), changed), n);
 }
 
 // DeadReckoningBatch skips the range reduction for chunks whose angles are all in the first

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -356,7 +357,8 @@ std::size_t predictDeadReckoningBatch(std::span<const DeadReckoningState> states
 
 namespace detail {
 struct PreparedAccess;
-}
+struct BatchAccess;
+}  // namespace detail
 
 /// An update made ready for fast extrapolation: validated once by prepareDeadReckoning when it
 /// arrives (quaternion normalised, unused fields zeroed, |w|, its axis and the rotation's terms
@@ -375,6 +377,7 @@ private:
     friend std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> entities, double time,
                                                 float extrapolationLimit, std::span<DeadReckoningResult> out);
     friend class DeadReckoningBatch;
+    friend struct detail::BatchAccess;
     friend struct detail::PreparedAccess;
 
     RVec3 mPosition{0};                         // p
@@ -444,8 +447,18 @@ std::size_t extrapolateDeadReckoning(std::span<const PreparedDeadReckoning> enti
 /// orientations).
 class DeadReckoningBatch {
 public:
-    /// A batch of `capacity` entities [Limit: < 2^32]. Allocates.
+    /// A batch of `capacity` entities [Limit: < 2^32]. Allocates (std::bad_alloc when out of
+    /// memory, as a std::vector would).
     explicit DeadReckoningBatch(std::size_t capacity);
+    /// A copy of every entity's update. Allocates.
+    DeadReckoningBatch(const DeadReckoningBatch& other);
+    /// Replaces this batch by a copy of `other` (its capacity too). Allocates.
+    DeadReckoningBatch& operator=(const DeadReckoningBatch& other);
+    /// Takes `other`'s entities; `other` is left empty (capacity 0).
+    DeadReckoningBatch(DeadReckoningBatch&& other) noexcept;
+    /// Takes `other`'s entities; `other` is left empty (capacity 0).
+    DeadReckoningBatch& operator=(DeadReckoningBatch&& other) noexcept;
+    ~DeadReckoningBatch() = default;
 
     /// The number of entities.
     std::size_t capacity() const { return mPrepared.size(); }
@@ -468,26 +481,38 @@ public:
     std::size_t extrapolate(double time, float extrapolationLimit, std::span<DeadReckoningResult> out) const;
 
 private:
+    friend struct detail::BatchAccess;  // the frame's passes, one per instruction set (src/)
+    // The columns live in one allocation (the arena), laid out by bindColumns from capacity().
     template <class T>
     struct Vec3Columns {
-        std::vector<T> x, y, z;
+        T *x = nullptr, *y = nullptr, *z = nullptr;
     };
     struct QuatColumns {
-        std::vector<float> w, x, y, z;
+        float *w = nullptr, *x = nullptr, *y = nullptr, *z = nullptr;
     };
     // A subset of the entities kept dense (swap-remove): its members' numbers and, per entity,
     // its index among them (or kNoSlot).
     struct Group {
-        std::vector<std::uint32_t> entity;
-        std::vector<std::uint32_t> slot;
+        std::uint32_t* entity = nullptr;
+        std::uint32_t* slot = nullptr;
         std::size_t count = 0;
     };
+    struct ArenaFree {
+        void operator()(std::byte* memory) const noexcept;
+    };
+    // Points every column into `base` (null: nowhere) for capacity() entities; the arena's size.
+    std::size_t bindColumns(std::byte* base);
+    // Allocates the arena for capacity() entities and binds the columns into it.
+    void allocateArena();
+
+    std::vector<PreparedDeadReckoning> mPrepared;
+    std::unique_ptr<std::byte[], ArenaFree> mArena;
+    std::size_t mArenaBytes = 0;
     // Every entity: the translation (world-axis formula; body-axis positions are redone from
     // the body group).
-    std::vector<PreparedDeadReckoning> mPrepared;
     Vec3Columns<Real> mPosition;
     Vec3Columns<float> mVelocity, mAcceleration;
-    std::vector<double> mTimestamp;  // +infinity for STATIC: frameAge gives it the age 0
+    double* mTimestamp = nullptr;  // +infinity for STATIC: frameAge gives it the age 0
     // The entities that neither turn nor are body-axis: their fixed orientation (A normalised
     // as the turning formula does at h = 0), copied into their results.
     Group mFixed;
@@ -495,12 +520,12 @@ private:
     // Turning world-axis entities (|w| > 0): the orientation A cos h + B sin h.
     Group mTurning;
     QuatColumns mTurnOrientation, mTurnAxisTerm;
-    std::vector<double> mTurnTimestamp, mTurnHalfRate;
+    double *mTurnTimestamp = nullptr, *mTurnHalfRate = nullptr;
     // Body-axis entities: the columns the integrals and their orientation read.
     Group mBody;
     Vec3Columns<float> mBodyVelocity, mBodyAcceleration, mBodyAxis;
     QuatColumns mBodyOrientation, mBodyAxisTerm;
-    std::vector<double> mBodyTimestamp, mBodyHalfRate;
+    double *mBodyTimestamp = nullptr, *mBodyHalfRate = nullptr;
     Vec3Columns<Real> mBodyPosition;
 };
 
