@@ -1000,11 +1000,14 @@ void DeadReckoningBatch::ArenaFree::operator()(std::byte* memory) const noexcept
 std::size_t DeadReckoningBatch::bindColumns(std::byte* base) {
     const std::size_t n = mPrepared.size();
     std::size_t offset = 0;
+    bool overflow = false;  // a size beyond std::size_t (never for a capacity mPrepared could hold)
     const auto take = [&](auto*& column) {
         using T = std::remove_reference_t<decltype(*column)>;
-        offset = (offset + kColumnAlignment - 1) / kColumnAlignment * kColumnAlignment;
-        column = base != nullptr ? reinterpret_cast<T*>(base + offset) : nullptr;
-        offset += n * sizeof(T);
+        const std::size_t limit = std::numeric_limits<std::size_t>::max() - kColumnAlignment;
+        overflow = overflow || offset > limit || (n != 0 && sizeof(T) > (limit - offset) / n);
+        offset = overflow ? 0 : (offset + kColumnAlignment - 1) / kColumnAlignment * kColumnAlignment;
+        column = base != nullptr && !overflow ? reinterpret_cast<T*>(base + offset) : nullptr;
+        offset += overflow ? 0 : n * sizeof(T);
     };
     const auto vec3 = [&](auto& c) {
         take(c.x);
@@ -1042,7 +1045,7 @@ std::size_t DeadReckoningBatch::bindColumns(std::byte* base) {
     take(mBodyTimestamp);
     take(mBodyHalfRate);
     vec3(mBodyPosition);
-    return offset;
+    return overflow ? std::numeric_limits<std::size_t>::max() : offset;
 }
 
 void DeadReckoningBatch::allocateArena() {
@@ -1050,6 +1053,7 @@ void DeadReckoningBatch::allocateArena() {
     mArena.reset();
     mArenaBytes = 0;
     if (bytes == 0) return;
+    if (bytes > std::numeric_limits<std::size_t>::max() / 2) throw std::bad_alloc();
     const std::size_t alignment = bytes >= kHugePage ? kHugePage : kColumnAlignment;
     const std::size_t rounded = (bytes + alignment - 1) / alignment * alignment;
     void* memory = std::aligned_alloc(alignment, rounded);
