@@ -1634,12 +1634,15 @@ private:
         touch = point + n * mRadius;
     }
 
+    // Whether surface `s` is the plane through `touch` with normal `n`.
+    static bool isPlane(const Surface& s, const DVec3& n, const DVec3& touch) {
+        return glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4;
+    }
+
     // Whether one of the first `count` surfaces is the plane through `touch` with normal `n`.
     bool isKnown(const DVec3& n, const DVec3& touch, int count) const {
-        for (int i = 0; i < count; ++i) {
-            const Surface& s = mSurfaces[i];
-            if (glm::dot(s.normal, n) > 0.999 && std::abs(glm::dot(touch - s.touch, n)) < 1e-4) return true;
-        }
+        for (int i = 0; i < count; ++i)
+            if (isPlane(mSurfaces[i], n, touch)) return true;
         return false;
     }
 
@@ -1654,8 +1657,8 @@ private:
         const DVec3 selfPoint = self.touch - self.normal * mRadius;
         for (int i = 0; i < mCount; ++i) {
             const Surface& s = mSurfaces[i];
-            if (glm::dot(s.normal, n) <= 0.999 || std::abs(glm::dot(touch - s.touch, n)) >= 1e-4) continue;
-            if (glm::dot(s.touch - s.normal * mRadius - selfPoint, self.normal) > 1e-4) return true;
+            if (isPlane(s, n, touch) && glm::dot(s.touch - s.normal * mRadius - selfPoint, self.normal) > 1e-4)
+                return true;
         }
         return false;
     }

@@ -1166,20 +1166,24 @@ bool detail::BatchAccess::available(BatchSimd simd) {
     switch (simd) {
         case BatchSimd::Baseline:
             return true;
-        case BatchSimd::Avx2:
+        case BatchSimd::Avx2: {
 #if FORESIGHT_BATCH_AVX2
-            __builtin_cpu_init();
-            return __builtin_cpu_supports("avx2") != 0;
+            // Asked once (extrapolate checks it every frame).
+            static const bool kAvx2 = [] {
+                __builtin_cpu_init();
+                return __builtin_cpu_supports("avx2") != 0;
+            }();
+            return kAvx2;
 #else
             return false;
 #endif
+        }
     }
     return false;
 }
 
 detail::BatchSimd detail::BatchAccess::best() {
-    static const BatchSimd kBest = available(BatchSimd::Avx2) ? BatchSimd::Avx2 : BatchSimd::Baseline;
-    return kBest;
+    return available(BatchSimd::Avx2) ? BatchSimd::Avx2 : BatchSimd::Baseline;
 }
 
 std::size_t DeadReckoningBatch::extrapolate(double time, float extrapolationLimit,
