@@ -570,6 +570,54 @@ private:
         }
     }
 
+    // GodotPhysics makes one contact per shape where the step starts (BodyPairSW::setup), along
+    // its separating-axis test's axis of least overlap: with the centre outside a box, the
+    // closest points' normal. A known surface probed again along its old normal can report
+    // another face of the same box far deeper: a ball that flew past a box's -x face and then
+    // overlapped the edge between its top and its -z face 5 cm deep was given the plane of the
+    // corner it had passed 14 to 18 cm deep, and pushed back across the box, where Godot pushed
+    // it off the edge. Of two surfaces on the same box (their contact points on its faces) the deeper
+    // is dropped, when it holds no stored contacts and the centre is outside the box (inside,
+    // the nearest face decides: narrowPhaseInsideBoxes).
+    void oneContactPerBox() {
+        if (mWorld != &mLocal || mCount < 2) return;
+        const std::span<const OrientedBox> boxes = mLocal.boxes();
+        // The box whose boundary holds the surface's contact point (within 0.1 mm) with its normal
+        // pointing out of the box there (no part along an axis the point is inside of): a face's
+        // normal, or one between the faces at an edge or a corner; -1 for none.
+        const auto boxOf = [&](const Surface& s) {
+            const DVec3 point = s.touch - s.normal * mRadius;
+            for (std::size_t k = 0; k < boxes.size(); ++k) {
+                const OrientedBox& b = boxes[k];
+                const glm::dquat toLocal =
+                    glm::conjugate(glm::dquat(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z));
+                const DVec3 local = toLocal * (point - DVec3(b.center)), n = toLocal * s.normal;
+                const DVec3 over = glm::abs(local) - DVec3(b.halfExtents);
+                bool on = glm::length(glm::max(over, 0.0)) <= 1e-4 && std::max({over.x, over.y, over.z}) >= -1e-4;
+                for (int axis = 0; axis < 3 && on; ++axis)
+                    on = over[axis] >= -1e-4 ? n[axis] * local[axis] >= -1e-3 * std::abs(local[axis])
+                                             : std::abs(n[axis]) <= 1e-3;
+                if (on && centreOutside(b, static_cast<double>(b.rounding)) > 0.0) return static_cast<int>(k);
+            }
+            return -1;
+        };
+        std::array<int, kMaxSurfaces> box{};
+        for (int i = 0; i < mCount; ++i) box[static_cast<std::size_t>(i)] = boxOf(mSurfaces[i]);
+        std::array<bool, kMaxSurfaces> drop{};
+        for (int i = 0; i < mCount; ++i)
+            for (int j = 0; j < mCount; ++j) {
+                const Surface &a = mSurfaces[i], &b = mSurfaces[j];
+                if (i != j && box[i] >= 0 && box[i] == box[j] && a.pointCount == 0 && a.gap < b.gap) drop[i] = true;
+            }
+        int kept = 0;
+        for (int i = 0; i < mCount; ++i) {
+            if (drop[static_cast<std::size_t>(i)]) continue;
+            if (kept != i) mSurfaces[kept] = mSurfaces[i];
+            ++kept;
+        }
+        mCount = kept;
+    }
+
     // How far the sphere's centre lies outside box `b` shrunk by `shrink` [m]; 0 inside it.
     double centreOutside(const OrientedBox& b, double shrink) const {
         const glm::dquat q(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
@@ -876,6 +924,13 @@ private:
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
         if (bullet) measureAsBullet();
+        // GodotPhysics' separating-axis test measures a box's contact along the closest points'
+        // normal where the centre is outside it (in a corner's region, the axis from the corner
+        // to the centre). A known surface probed along its old normal meets a corner where a
+        // sphere moving that way would first touch it, whose normal is another: a ball that hit a
+        // corner at 120 Hz bounced 1.5 degrees off Godot's.
+        if (mGodotContacts)
+            for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
         if (!mProfile.planar) narrowPhaseInsideBoxes(bullet);
         if (mProfile.engine == PhysicsEngine::Jolt) {
             findSlideSurface(freeMotion, reach);
@@ -883,6 +938,7 @@ private:
             findNearSurfaces(freeMotion, reach);
         }
         if (!mProfile.planar && mCount > 0) findNearShapes(0.0);
+        if (mGodotContacts) oneContactPerBox();
         for (int i = 0; i < mCount; ++i) {
             Surface& s = mSurfaces[i];
             s.acting = mProfile.contact == ContactMethod::Speculative ? s.gap < reach : s.gap < 0.0;
