@@ -2569,7 +2569,7 @@ private:
             cast.displacement = toF(c - axis * range - toD(cast.origin));
             cast.radius = static_cast<float>(probe);
             CastHit hit;
-            if (!mWorld->castSegment(cast, hit)) return false;
+            if (!mWorld->castSegment(cast, hit)) return nearestInFront(c, range, axis, distance);
             const DVec3 n = glm::normalize(toD(hit.normal));
             const bool settled = glm::dot(n, axis) > 1.0 - 1e-10;
             axis = n;
@@ -2577,6 +2577,31 @@ private:
             if (settled && iteration > 0) break;
             probe = std::max(0.1 * mRadius, distance - 1e-3);
         }
+        return true;
+    }
+
+    // closestDistance where its probe along -`axis` passes beside the shape (a ball that a step
+    // carries into the underside of a tilted box's edge: the sweep meets the edge, the probe from
+    // the step's start along the edge's normal misses the box): the world's closest points within
+    // `range` of `c`, the nearest of those facing `axis` (normal within 90 degrees of it).
+    bool nearestInFront(const DVec3& c, double range, DVec3& axis, double& distance) const {
+        struct Collector final : NearCollector {
+            DVec3 axis{0.0};
+            bool found = false;
+            NearSurface nearest;
+            void add(const NearSurface& surface) override {
+                if (glm::dot(toD(surface.normal), axis) <= 0.0) return;
+                if (!found || surface.distance < nearest.distance) nearest = surface;
+                found = true;
+            }
+        } collector;
+        collector.axis = axis;
+        NearQuery query;
+        query.center = toR(c);
+        query.radius = static_cast<float>(range);
+        if (!mWorld->findNear(query, collector) || !collector.found) return false;
+        axis = glm::normalize(toD(collector.nearest.normal));
+        distance = static_cast<double>(collector.nearest.distance);
         return true;
     }
 
