@@ -576,9 +576,9 @@ private:
     // another face of the same box far deeper: a ball that flew past a box's -x face and then
     // overlapped the edge between its top and its -z face 5 cm deep was given the plane of the
     // corner it had passed 14 to 18 cm deep, and pushed back across the box, where Godot pushed
-    // it off the edge. Of two surfaces on the same box (their contact points on its faces) the deeper
-    // is dropped, when it holds no stored contacts and the centre is outside the box (inside,
-    // the nearest face decides: narrowPhaseInsideBoxes).
+    // it off the edge. Of two surfaces on the same box (their contact points on its faces) the
+    // deeper is dropped, when it holds no stored contacts and the centre is outside the box
+    // (inside, the nearest face decides: narrowPhaseInsideBoxes).
     void oneContactPerBox() {
         if (mWorld != &mLocal || mCount < 2) return;
         const std::span<const OrientedBox> boxes = mLocal.boxes();
