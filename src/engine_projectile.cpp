@@ -1561,6 +1561,10 @@ private:
         int count = 0;
         // Newest shape first (the surfaces here are oldest first): solved the other way round, two
         // of 3300 oracle throws that meet a wall while rolling on the floor parted from Godot.
+        // Godot's own order is its pairs' addresses (StepSW::_populate_island walks a map keyed
+        // by pointer), which follow the allocator's reuse of freed pairs: on ramp scenes (a ball
+        // in the crease of a ramp and the floor) the two orders trade 2 to 4 throws per 100 either
+        // way (seven sets: 682 newest first, 679 oldest first).
         for (int i = mCount - 1; i >= 0; --i) {
             Surface& s = mSurfaces[i];
             for (int j = 0; j < s.pointCount; ++j) {
