@@ -928,8 +928,9 @@ private:
         // normal where the centre is outside it (in a corner's region, the axis from the corner
         // to the centre). A known surface probed along its old normal meets a corner where a
         // sphere moving that way would first touch it, whose normal is another: a ball that hit a
-        // corner at 120 Hz bounced 1.5 degrees off Godot's.
-        if (mGodotContacts)
+        // corner at 120 Hz bounced 1.5 degrees off Godot's. PhysX's contact is the closest points
+        // at the step's start too (addSurface measures a new one so).
+        if (mGodotContacts || mProfile.engine == PhysicsEngine::PhysX)
             for (int i = 0; i < mCount; ++i) closestPoint(mSurfaces[i], freeMotion, reach);
         if (!mProfile.planar) narrowPhaseInsideBoxes(bullet);
         if (mProfile.engine == PhysicsEngine::Jolt) {
