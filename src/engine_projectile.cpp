@@ -2282,31 +2282,41 @@ private:
     // position is the closest point moved `target` out along the normal. False when there is
     // none or the world does not answer closest-point queries.
     bool touchedAtStart(const DVec3& centre, double target, double tolerance, CastHit& hit) const {
+        const double limit = target + tolerance;
+        NearSurface nearest;
+        const bool found = nearestSurface(centre, limit, nearest, [&](const NearSurface& surface) {
+            if (!(surface.distance > 0.0f) || !(surface.distance < limit)) return false;
+            return !(mProfile.planar && std::abs(surface.normal.z) > 0.5f);
+        });
+        if (!found) return false;
+        const DVec3 n = glm::normalize(toD(nearest.normal));
+        hit.position = toR(toD(nearest.point) + n * target);
+        hit.normal = toF(n);
+        hit.restitution = nearest.restitution;
+        hit.friction = nearest.friction;
+        return true;
+    }
+
+    // The nearest surface within `radius` of `centre` that `accept` takes (the first of equally
+    // near ones, in the world's order), by the world's closest-point query. False when there is
+    // none, or the world does not answer the query.
+    template <class Accept>
+    bool nearestSurface(const DVec3& centre, double radius, NearSurface& nearest, Accept&& accept) const {
         struct Collector final : NearCollector {
-            NearSurface nearest{};
-            double limit = 0.0;
-            bool planar = false;
+            Accept& accept;
+            NearSurface& nearest;
             bool found = false;
+            Collector(Accept& a, NearSurface& n) : accept(a), nearest(n) {}
             void add(const NearSurface& surface) override {
-                if (!(surface.distance > 0.0f) || !(surface.distance < limit)) return;
-                if (planar && std::abs(surface.normal.z) > 0.5f) return;
-                if (found && !(surface.distance < nearest.distance)) return;
+                if (!accept(surface) || (found && !(surface.distance < nearest.distance))) return;
                 nearest = surface;
                 found = true;
             }
-        } collector;
-        collector.planar = mProfile.planar;
-        collector.limit = target + tolerance;
+        } collector(accept, nearest);
         NearQuery query;
         query.center = toR(centre);
-        query.radius = static_cast<float>(target + tolerance);
-        if (!mWorld->findNear(query, collector) || !collector.found) return false;
-        const DVec3 n = glm::normalize(toD(collector.nearest.normal));
-        hit.position = toR(toD(collector.nearest.point) + n * target);
-        hit.normal = toF(n);
-        hit.restitution = collector.nearest.restitution;
-        hit.friction = collector.nearest.friction;
-        return true;
+        query.radius = static_cast<float>(radius);
+        return mWorld->findNear(query, collector) && collector.found;
     }
 
     // Whether a sphere cast (radius `radius`) that stopped with its centre at `centre` and the
@@ -2590,23 +2600,12 @@ private:
     // the step's start along the edge's normal misses the box): the world's closest points within
     // `range` of `c`, the nearest of those facing `axis` (normal within 90 degrees of it).
     bool nearestInFront(const DVec3& c, double range, DVec3& axis, double& distance) const {
-        struct Collector final : NearCollector {
-            DVec3 axis{0.0};
-            bool found = false;
-            NearSurface nearest;
-            void add(const NearSurface& surface) override {
-                if (glm::dot(toD(surface.normal), axis) <= 0.0) return;
-                if (!found || surface.distance < nearest.distance) nearest = surface;
-                found = true;
-            }
-        } collector;
-        collector.axis = axis;
-        NearQuery query;
-        query.center = toR(c);
-        query.radius = static_cast<float>(range);
-        if (!mWorld->findNear(query, collector) || !collector.found) return false;
-        axis = glm::normalize(toD(collector.nearest.normal));
-        distance = static_cast<double>(collector.nearest.distance);
+        NearSurface nearest;
+        if (!nearestSurface(c, range, nearest,
+                            [&](const NearSurface& surface) { return glm::dot(toD(surface.normal), axis) > 0.0; }))
+            return false;
+        axis = glm::normalize(toD(nearest.normal));
+        distance = static_cast<double>(nearest.distance);
         return true;
     }
 
