@@ -20,6 +20,7 @@
 //     `fraction * (depth - slop)`. Rapier then sweeps a fast sphere (its continuous collision).
 
 #include "bullet_gjk.h"
+#include "bullet_pairs.h"
 #include "engine_internal.h"
 #include "local_world.h"
 #include "path_capsule.h"
@@ -148,6 +149,8 @@ public:
                     mProfile.engine == PhysicsEngine::Godot3Bullet;
         // GodotPhysics keeps up to four contacts per shape, each with its impulses.
         mGodotContacts = mProfile.engine == PhysicsEngine::Godot3;
+        // The Bullet profiles' solve order follows Bullet's pairs where the world lists its shapes.
+        mTrackPairs = mManifold && mRadius > 0.0 && mRegionQueries;
     }
 
     Status run(const DVec3& start, const DVec3& startVelocity, std::uint64_t steps) {
@@ -155,6 +158,7 @@ public:
         mVelocity = startVelocity;
         if (mProfile.planar) mVelocity.z = 0.0;
         startFloatFlight();
+        if (mTrackPairs) mPairs.start(*mFullWorld, mPosition, mRadius);
         mRecorder.add(0.0, TrajectoryEvent::Start, mPosition, mVelocity);
         for (std::uint64_t k = 1; k <= steps; ++k) {
             if (const std::uint64_t taken = coast(k, steps); taken > 0) {
@@ -216,11 +220,12 @@ private:
         ProjectileResult result;
         std::size_t recorderSize, recorderNeeded;
         double recorderReach;
+        BulletPairs::State pairs;
     };
     Snapshot save() const {
-        return Snapshot{mPosition,   mVelocity,      mAngular,         mPushVelocity,  mSubstepPosition,
-                        mLastNormal, mContactNormal, mSurfaces,        mCount,         mTouching,
-                        mResult,     mRecorder.size, mRecorder.needed, mRecorder.reach};
+        return Snapshot{mPosition,   mVelocity,      mAngular,         mPushVelocity,   mSubstepPosition,
+                        mLastNormal, mContactNormal, mSurfaces,        mCount,          mTouching,
+                        mResult,     mRecorder.size, mRecorder.needed, mRecorder.reach, mPairs.state()};
     }
     void restore(const Snapshot& s) {
         mPosition = s.position;
@@ -237,6 +242,7 @@ private:
         mRecorder.size = s.recorderSize;
         mRecorder.needed = s.recorderNeeded;
         mRecorder.reach = s.recorderReach;
+        mPairs.restore(s.pairs);
     }
 
     // Rolling, sliding or resting on one surface over several steps with one world query. While
@@ -402,6 +408,7 @@ private:
             mCoastSteps = std::min<std::uint64_t>(mCoastSteps * 2, kMaxCoastSteps);
         if (clear == 0) return 0;
         for (std::size_t j = 1; j <= clear; ++j) {
+            if (mTrackPairs) mPairs.step(mPosition, mPosition + mVelocity * (mRec.d * dt), false);
             spinDown();
             // No contact acts in free flight: Box2D's limit after the solve applies to the spin
             // as it is (a time of impact may have left it above the limit of a whole step).
@@ -770,7 +777,13 @@ private:
         freeStep(first, v0, v, freeMotion);
         spinDown();
 
+        const DVec3 start = mPosition;
         findSurfaces(freeMotion);
+        if (mTrackPairs) {
+            bool predictive = false;
+            for (int i = 0; i < mCount; ++i) predictive = predictive || mSurfaces[i].predictive;
+            mPairs.step(start, start + v0 * (mRec.d * dt), predictive);
+        }
         const bool acted = solve(v0, v);
         mVelocity = v;
         if (acted) capSpin();
@@ -1068,11 +1081,61 @@ private:
         c.radius = static_cast<float>(0.2 * std::sqrt(3.0) * mRadius);
         if (!mWorld->castSegment(c, hit) || hit.fraction >= 1.0f) return false;
         normal = glm::normalize(toD(hit.normal));
+        if (!advanceConservatively(from, motion, static_cast<double>(c.radius), hit, normal)) return false;
         if (glm::dot(normal, motion) >= -0.04) return false;
         // btContinuousConvexCollision stops advancing once the shapes are within 1 mm: a sweep
         // that starts that close reports its hit at the start (the body does not move towards
         // it, and a predictive contact has distance 0).
         if (-static_cast<double>(hit.fraction) * glm::dot(motion, normal) <= 1e-3) hit.fraction = 0.0f;
+        return true;
+    }
+
+    // btContinuousConvexCollision, the sweep's time of impact, advances conservatively: from the
+    // start it moves by the gap over the approach speed along the closest points' normal, and
+    // stops at the first place within 1 mm of the shape, reporting that place and the normal
+    // there. On a face that is where the cast meets it; on a box's rounded edge or corner it stops
+    // short, with a normal turned towards the motion (a ball that met a ramp's edge left 0.02 m/s
+    // off Godot's with the cast's normal). Redone here for the box the cast met (the gathered
+    // boxes), `hit` and `normal` moved to where it stops; false where it finds no impact.
+    bool advanceConservatively(const DVec3& from, const DVec3& motion, double radius, CastHit& hit,
+                               DVec3& normal) const {
+        if (mWorld != &mLocal) return true;
+        const DVec3 centre = from + motion * static_cast<double>(hit.fraction);
+        const OrientedBox* box = nullptr;
+        double gap = 0.0;
+        DVec3 n(0.0);
+        const auto measure = [&](const OrientedBox& b, const DVec3& p, double& g, DVec3& dir) {
+            const DQuat q = glm::normalize(DQuat(b.orientation));
+            const double r = static_cast<double>(b.rounding);
+            const DVec3 inner = DVec3(b.halfExtents) - r, local = glm::conjugate(q) * (p - DVec3(b.center));
+            const DVec3 off = local - glm::clamp(local, -inner, inner);
+            const double length = glm::length(off);
+            if (!(length > 0.0)) return false;
+            g = length - r - radius;
+            dir = q * (off / length);
+            return true;
+        };
+        for (const OrientedBox& b : mLocal.boxes()) {
+            double g;
+            DVec3 dir;
+            if (measure(b, centre, g, dir) && std::abs(g) < 1e-4) {
+                box = &b;
+                break;
+            }
+        }
+        if (!box) return true;
+        double lambda = 0.0;
+        if (!measure(*box, from, gap, n)) return true;
+        for (int iteration = 0; gap > 1e-3; ++iteration) {
+            const double approach = -glm::dot(motion, n);
+            if (approach <= 1.1920929e-7 || iteration > 64) return false;
+            const double next = lambda + gap / approach;
+            if (next > 1.0 || next <= lambda) return false;
+            lambda = next;
+            if (!measure(*box, from + motion * lambda, gap, n)) return true;
+        }
+        hit.fraction = static_cast<float>(lambda);
+        normal = n;
         return true;
     }
 
@@ -1957,23 +2020,52 @@ private:
     // frictionWarmStart for friction); then every iteration solves all normal rows and after them
     // every friction row whose point pushes (clamped to mu times that point's normal impulse). A
     // point that ends with no normal impulse keeps its warm-started friction.
+    // The acting surfaces in the order Bullet's solver meets their manifolds (BulletPairs), the
+    // newer first of two on one shape. False where the pairs are not followed or a surface's
+    // shape has no pair.
+    bool pairOrder(int* order, int& count) const {
+        if (!mTrackPairs || !mPairs.valid()) return false;
+        std::array<int, kMaxSurfaces> shape{};
+        for (int i = 0; i < mCount; ++i) {
+            const Surface& s = mSurfaces[i];
+            if (!s.acting) continue;
+            shape[i] = s.predictive ? BulletPairs::kPredictive : mPairs.shapeOn(s.touch - s.normal * mRadius);
+            if (shape[i] < 0) return false;
+        }
+        std::array<std::uint8_t, BulletPairs::kMaxPairs + 1> manifolds{};
+        const std::size_t n = mPairs.solveOrder(manifolds);
+        count = 0;
+        for (std::size_t m = 0; m < n; ++m)
+            for (int i = mCount - 1; i >= 0; --i)
+                if (mSurfaces[i].acting && shape[i] == manifolds[m]) order[count++] = i;
+        int acting = 0;
+        for (int i = 0; i < mCount; ++i) acting += mSurfaces[i].acting ? 1 : 0;
+        return count == acting;
+    }
+
     void solveBulletManifold(const DVec3& v0, DVec3& v) {
         const double dt = mRec.dt;
         const double warmNormal = kBulletWarmStart;
         const double warmFriction = static_cast<double>(mProfile.frictionWarmStart);
         const DVec3 before = v0 * mRec.d, after = v, spin = mAngular;
-        // Godot 3 with Bullet: the predictive contact's manifold is made before the narrow
-        // phase's, so the solver meets its rows first. The narrow phase's manifolds then come
-        // newest first: btSimulationIslandManager sorts them by island (btAlignedObjectArray::
-        // quickSort), and the sphere's are all of its island, an order the sort reverses for two
-        // or three (a ball that met two boxes in one step ended 0.17 m/s off the engine with the
-        // older first, and within 4e-5 m/s with the newer first; ammo.js, 30 Hz). The surfaces
-        // here are oldest first.
+        // The solver meets the manifolds in the order of the dispatcher's array after
+        // btSimulationIslandManager's sort by island (btAlignedObjectArray::quickSort, unstable:
+        // all of the sphere's manifolds have its island). That array holds a manifold for every
+        // pair the broadphase keeps, empty ones too, and Godot 3's predictive contact's:
+        // BulletPairs follows it (pairOrder). Where it cannot (a world that does not list its
+        // shapes), the order it most often gives: the predictive contact's manifold first (made
+        // before the narrow phase's), then the others newest first, as the sort leaves two or three
+        // (a ball that met two boxes in one step ended 0.17 m/s off the engine with the older
+        // first, and within 4e-5 m/s with the newer first; ammo.js, 30 Hz). The surfaces here are
+        // oldest first.
         int order[kMaxSurfaces] = {}, count = 0;
-        for (int i = 0; i < mCount; ++i)
-            if (mSurfaces[i].acting && mSurfaces[i].predictive) order[count++] = i;
-        for (int i = mCount - 1; i >= 0; --i)
-            if (mSurfaces[i].acting && !mSurfaces[i].predictive) order[count++] = i;
+        if (!pairOrder(order, count)) {
+            count = 0;
+            for (int i = 0; i < mCount; ++i)
+                if (mSurfaces[i].acting && mSurfaces[i].predictive) order[count++] = i;
+            for (int i = mCount - 1; i >= 0; --i)
+                if (mSurfaces[i].acting && !mSurfaces[i].predictive) order[count++] = i;
+        }
         const auto applyAt = [&](const DVec3& impulse, const DVec3& arm) { applyAtArm(impulse, arm, v); };
         const auto massAlong = [&](const DVec3& arm, const DVec3& d) { return rowMass(arm, d); };
         for (int q = 0; q < count; ++q) {
@@ -2824,7 +2916,9 @@ private:
     const CollisionWorld* mFullWorld;  // the world the prediction runs in
     const CollisionWorld* mWorld;      // mFullWorld, mLocal in a step, or a PlaneWorld while contactCoast tries steps
     LocalWorld mLocal;                 // the shapes gathered around the sphere (nearWorld)
-    int mGatherFailures = 0;           // gathers refused in a row (3: the world cannot, stop asking)
+    BulletPairs mPairs;                // the Bullet profiles: Bullet's pairs and manifolds
+    bool mTrackPairs = false;
+    int mGatherFailures = 0;  // gathers refused in a row (3: the world cannot, stop asking)
     TrajectoryRecorder& mRecorder;
     ProjectileResult& mResult;
     EngineRecurrence mRec;
