@@ -38,7 +38,7 @@ namespace detail {
 /// 3.24's own manifold array (Godot 3's settings, 500 random ramp scenes): the same at every step
 /// in 490 of them; the others differ only in the order of pairs that appeared at once (8 of 13
 /// such steps went in reverse world order there, but ammo.js's rule throw of two boxes goes in
-/// world order, and no scene set changed either way).
+/// world order; either choice moved four of nine ramp sets by one end, two each way).
 class BulletPairs {
 public:
     static constexpr std::size_t kMaxShapes = 64;      // shapes met in one run
@@ -139,6 +139,21 @@ public:
             }
         }
         return best;
+    }
+
+    /// The gathered box whose surface lies nearest `point` [m] (within 0.05 m), or null.
+    const OrientedBox* boxNear(const DVec3& point) const {
+        const Shape* best = nullptr;
+        double bestDistance = 0.05;
+        for (std::size_t i = 0; i < mCandidateCount; ++i) {
+            const Shape& s = mShapes[mCandidates[i]];
+            const double d = s.distance(point);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = &s;
+            }
+        }
+        return best && best->kind == Kind::Box ? &best->box : nullptr;
     }
 
 private:

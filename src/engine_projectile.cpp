@@ -936,6 +936,7 @@ private:
             for (int i = 0; i < mCount; ++i)
                 if (!mSurfaces[i].settled) closestPoint(mSurfaces[i], freeMotion, reach, kNormalSettle);
         if (mProfile.engine == PhysicsEngine::Bullet && !mMeshContacts) closestPointsNear(reach);
+        if (bullet) closestPointsOnBoxes();
         if (bullet) measureAsBullet();
         // GodotPhysics' separating-axis test measures a box's contact along the closest points'
         // normal where the centre is outside it (in a corner's region, the axis from the corner
@@ -961,6 +962,28 @@ private:
             if (mGodotContacts) updateGodotContacts(s);
         }
         if (mProfile.engine == PhysicsEngine::Godot3Bullet) predictiveContact();
+    }
+
+    // Bullet's narrow phase measures each box it holds a pair with at the closest points between
+    // the centre and the box shrunk by its margin (GJK, the margins added back). The casts and
+    // probes measure a surface where they meet it, which on a rounded edge, or where a probe along
+    // a surface's old normal passes another box first, is elsewhere (a ball between two ramps
+    // missed a contact 7.8 mm from one of them, which Bullet's breaking threshold of 8.4 mm took).
+    // Each surface on a box the pairs know (BulletPairs) is measured again so, where the centre
+    // is outside the shrunk box and the normal stays within 60 degrees of the surface's.
+    void closestPointsOnBoxes() {
+        if (!mTrackPairs || !mPairs.valid()) return;
+        for (int i = 0; i < mCount; ++i) {
+            Surface& s = mSurfaces[i];
+            if (s.predictive) continue;
+            const OrientedBox* box = mPairs.boxNear(s.touch - s.normal * mRadius);
+            DVec3 n;
+            double gap;
+            if (!box || !closestOnBox(*box, mPosition, mRadius, n, gap) || glm::dot(n, s.normal) < 0.5) continue;
+            s.normal = n;
+            s.gap = gap;
+            s.touch = mPosition - n * gap;
+        }
     }
 
     // The casts above find the surfaces along the motion and the ones known from earlier steps.
@@ -1105,15 +1128,7 @@ private:
         double gap = 0.0;
         DVec3 n(0.0);
         const auto measure = [&](const OrientedBox& b, const DVec3& p, double& g, DVec3& dir) {
-            const DQuat q = glm::normalize(DQuat(b.orientation));
-            const double r = static_cast<double>(b.rounding);
-            const DVec3 inner = DVec3(b.halfExtents) - r, local = glm::conjugate(q) * (p - DVec3(b.center));
-            const DVec3 off = local - glm::clamp(local, -inner, inner);
-            const double length = glm::length(off);
-            if (!(length > 0.0)) return false;
-            g = length - r - radius;
-            dir = q * (off / length);
-            return true;
+            return closestOnBox(b, p, radius, dir, g);
         };
         for (const OrientedBox& b : mLocal.boxes()) {
             double g;
@@ -1136,6 +1151,22 @@ private:
         }
         hit.fraction = static_cast<float>(lambda);
         normal = n;
+        return true;
+    }
+
+    // The closest points of a sphere of `radius` centred at `p` and box `b` (rounded by its
+    // rounding, as Bullet's margin rounds a btBoxShape): the unit `normal` from the box towards
+    // the centre and the `gap` between them [m]. False where the centre lies inside the box shrunk
+    // by its rounding (GJK hands that case to the penetration depth solver).
+    static bool closestOnBox(const OrientedBox& b, const DVec3& p, double radius, DVec3& normal, double& gap) {
+        const DQuat q = glm::normalize(DQuat(b.orientation));
+        const double r = static_cast<double>(b.rounding);
+        const DVec3 inner = DVec3(b.halfExtents) - r, local = glm::conjugate(q) * (p - DVec3(b.center));
+        const DVec3 off = local - glm::clamp(local, -inner, inner);
+        const double length = glm::length(off);
+        if (!(length > 1e-9)) return false;
+        gap = length - r - radius;
+        normal = q * (off / length);
         return true;
     }
 
