@@ -104,7 +104,7 @@ const EngineInfo kEngines[] = {
     {"ammo", PhysicsEngine::Bullet, "node", 0.9, 0.9, 0.9},
     {"bullet", PhysicsEngine::Bullet, "native", 0.9, 0.9, 0.9},
     {"godot3", PhysicsEngine::Godot3, "godot", 0.95, 0.95, 0.95},
-    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.9, 0.85},
+    {"godot3-bullet", PhysicsEngine::Godot3Bullet, "godot", 0.95, 0.9, 0.9},
     {"box2d", PhysicsEngine::Box2D, "native", 0.95, 0.95, 0.9},
 };
 
