@@ -1117,8 +1117,8 @@ private:
     // start it moves by the gap over the approach speed along the closest points' normal, and
     // stops at the first place within 1 mm of the shape, reporting that place and the normal
     // there. On a face that is where the cast meets it; on a box's rounded edge or corner it stops
-    // short, with a normal turned towards the motion (a ball that met a ramp's edge left 0.02 m/s
-    // off Godot's with the cast's normal). Redone here for the box the cast met (the gathered
+    // short, with a normal turned towards the motion (a ball that met a ramp's edge left 0.028
+    // m/s off Godot's with the cast's normal). Redone here for the box the cast met (the gathered
     // boxes), `hit` and `normal` moved to where it stops; false where it finds no impact.
     bool advanceConservatively(const DVec3& from, const DVec3& motion, double radius, CastHit& hit,
                                DVec3& normal) const {
@@ -1127,27 +1127,21 @@ private:
         const OrientedBox* box = nullptr;
         double gap = 0.0;
         DVec3 n(0.0);
-        const auto measure = [&](const OrientedBox& b, const DVec3& p, double& g, DVec3& dir) {
-            return closestOnBox(b, p, radius, dir, g);
-        };
-        for (const OrientedBox& b : mLocal.boxes()) {
-            double g;
-            DVec3 dir;
-            if (measure(b, centre, g, dir) && std::abs(g) < 1e-4) {
+        for (const OrientedBox& b : mLocal.boxes())
+            if (closestOnBox(b, centre, radius, n, gap) && std::abs(gap) < 1e-4) {
                 box = &b;
                 break;
             }
-        }
         if (!box) return true;
         double lambda = 0.0;
-        if (!measure(*box, from, gap, n)) return true;
+        if (!closestOnBox(*box, from, radius, n, gap)) return true;
         for (int iteration = 0; gap > 1e-3; ++iteration) {
             const double approach = -glm::dot(motion, n);
             if (approach <= 1.1920929e-7 || iteration > 64) return false;
             const double next = lambda + gap / approach;
             if (next > 1.0 || next <= lambda) return false;
             lambda = next;
-            if (!measure(*box, from + motion * lambda, gap, n)) return true;
+            if (!closestOnBox(*box, from + motion * lambda, radius, n, gap)) return true;
         }
         hit.fraction = static_cast<float>(lambda);
         normal = n;
@@ -2041,16 +2035,6 @@ private:
         }
     }
 
-    // Bullet 2.83's solve over every manifold point (btSequentialImpulseConstraintSolver, default
-    // mode: one friction direction, warm starting). Each point is a contact of its own at its
-    // material point's arm (an older point's arm is turned away from the normal, so its impulses
-    // also turn the sphere): its restitution reflects the approach of that point before gravity,
-    // its target closes its own distance, and its friction direction follows that point's slip
-    // after gravity (before any impulse of this step). The stored normal and friction impulses of
-    // every point are applied first, times Bullet's warm-starting factor (0.85 for the normal;
-    // frictionWarmStart for friction); then every iteration solves all normal rows and after them
-    // every friction row whose point pushes (clamped to mu times that point's normal impulse). A
-    // point that ends with no normal impulse keeps its warm-started friction.
     // The acting surfaces in the order Bullet's solver meets their manifolds (BulletPairs), the
     // newer first of two on one shape. False where the pairs are not followed or a surface's
     // shape has no pair.
@@ -2074,6 +2058,16 @@ private:
         return count == acting;
     }
 
+    // Bullet 2.83's solve over every manifold point (btSequentialImpulseConstraintSolver, default
+    // mode: one friction direction, warm starting). Each point is a contact of its own at its
+    // material point's arm (an older point's arm is turned away from the normal, so its impulses
+    // also turn the sphere): its restitution reflects the approach of that point before gravity,
+    // its target closes its own distance, and its friction direction follows that point's slip
+    // after gravity (before any impulse of this step). The stored normal and friction impulses of
+    // every point are applied first, times Bullet's warm-starting factor (0.85 for the normal;
+    // frictionWarmStart for friction); then every iteration solves all normal rows and after them
+    // every friction row whose point pushes (clamped to mu times that point's normal impulse). A
+    // point that ends with no normal impulse keeps its warm-started friction.
     void solveBulletManifold(const DVec3& v0, DVec3& v) {
         const double dt = mRec.dt;
         const double warmNormal = kBulletWarmStart;
