@@ -175,6 +175,7 @@ private:
         Sphere sphere;
         Plane plane;
         DVec3 lo{0.0}, hi{0.0};  // its leaf [m]
+        glm::dmat3 toLocal{1.0};  // a box: world to box axes
         bool same(const Shape& o) const {
             if (kind != o.kind) return false;
             if (kind == Kind::Plane) return plane.normal == o.plane.normal && plane.distance == o.plane.distance;
@@ -190,8 +191,7 @@ private:
             }
             if (kind == Kind::Sphere)
                 return std::abs(glm::length(p - DVec3(sphere.center)) - static_cast<double>(sphere.radius));
-            const DQuat q = glm::normalize(DQuat(box.orientation));
-            const DVec3 over = glm::abs(glm::conjugate(q) * (p - DVec3(box.center))) - DVec3(box.halfExtents);
+            const DVec3 over = glm::abs(toLocal * (p - DVec3(box.center))) - DVec3(box.halfExtents);
             const double outside = glm::length(glm::max(over, 0.0));
             return outside > 0.0 ? outside : -std::max({over.x, over.y, over.z});
         }
@@ -224,6 +224,7 @@ private:
             s.kind = Kind::Box;
             s.box = box;
             const glm::dmat3 m = glm::mat3_cast(glm::normalize(DQuat(box.orientation)));
+            s.toLocal = glm::transpose(m);
             const DVec3 h(box.halfExtents);
             DVec3 extent(kContactBreaking + kTreeMargin);
             for (int axis = 0; axis < 3; ++axis) extent += glm::abs(m[axis]) * h[axis];
