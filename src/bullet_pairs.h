@@ -174,7 +174,7 @@ private:
         OrientedBox box;
         Sphere sphere;
         Plane plane;
-        DVec3 lo{0.0}, hi{0.0};  // its leaf [m]
+        DVec3 lo{0.0}, hi{0.0};   // its leaf [m]
         glm::dmat3 toLocal{1.0};  // a box: world to box axes
         bool same(const Shape& o) const {
             if (kind != o.kind) return false;
