@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -195,6 +196,53 @@ TEST(BulletPairs, FollowsBulletsManifoldArrayWithPredictiveContacts) {
     const Outcome o = run(true, 200, 12);
     EXPECT_GT(o.predictiveSteps, 100);
     expectFollowed(o);
+}
+
+// Where the pairs cannot be followed, BulletPairs says so (the profiles then solve in the order
+// two or three manifolds give): a world that cannot list its shapes, one with triangles near the
+// sphere (a mesh is one pair to Bullet), more shapes near it than it keeps. A plane pairs with
+// everything (its bounds are unbounded).
+TEST(BulletPairs, SaysWhereItCannotFollow) {
+    const glm::dvec3 centre(0, 1, 0);
+    BulletPairs pairs;
+
+    auto nothing = [](const foresight::SegmentCast&, foresight::CastHit&) { return false; };
+    const foresight::CallbackWorld callback = foresight::CallbackWorld::wrap(nothing);
+    EXPECT_FALSE(pairs.start(callback, centre, 0.1));
+    EXPECT_FALSE(pairs.valid());
+
+    foresight::StaticWorld mesh;
+    foresight::Triangle triangle;
+    triangle.a = foresight::RVec3(-1, 0, -1);
+    triangle.b = foresight::RVec3(1, 0, -1);
+    triangle.c = foresight::RVec3(0, 0, 1);
+    ASSERT_EQ(mesh.add(triangle), foresight::Status::Ok);
+    EXPECT_FALSE(pairs.start(mesh, centre, 0.1));
+
+    foresight::StaticWorld crowded;
+    for (int i = 0; i < 40; ++i) {
+        foresight::OrientedBox box;
+        box.center = foresight::RVec3(-2.0 + 0.1 * i, 0.0, 1.0);
+        box.halfExtents = foresight::Vec3(0.04f);
+        ASSERT_EQ(crowded.add(box), foresight::Status::Ok);
+    }
+    EXPECT_FALSE(pairs.start(crowded, centre, 0.1));
+
+    foresight::StaticWorld open;
+    foresight::Plane floor;
+    ASSERT_EQ(open.add(floor), foresight::Status::Ok);
+    ASSERT_TRUE(pairs.start(open, centre, 0.1));
+    pairs.step(centre, centre + glm::dvec3(0.1, 0, 0), false);
+    ASSERT_TRUE(pairs.valid());
+    std::array<std::uint8_t, BulletPairs::kMaxPairs + 1> order{};
+    ASSERT_EQ(pairs.solveOrder(order), 1u);                   // the floor's manifold, empty
+    EXPECT_EQ(pairs.shapeOn(glm::dvec3(3, 0, 4)), order[0]);  // a point on the floor
+    EXPECT_EQ(pairs.boxOf(order[0]), nullptr);
+    pairs.step(centre, centre + glm::dvec3(0.1, 0, 0), true);  // a predictive contact: made after it
+    ASSERT_EQ(pairs.solveOrder(order), 2u);
+    EXPECT_EQ(order[0], BulletPairs::kPredictive);              // the sort reverses two
+    pairs.step(centre, centre + glm::dvec3(0.1, 0, 0), false);  // released at the next step
+    EXPECT_EQ(pairs.solveOrder(order), 1u);
 }
 
 }  // namespace
