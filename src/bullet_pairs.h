@@ -126,18 +126,7 @@ public:
 
     /// The shape with a manifold that holds `point` [m] on its surface (within the rounding of
     /// the boxes' edges), or -1.
-    int shapeOn(const DVec3& point) const {
-        int best = -1;
-        double bestDistance = 0.05;
-        for (std::size_t i = 0; i < mState.pairCount; ++i) {
-            const double d = mShapes[mState.pairs[i]].distance(point);
-            if (d < bestDistance) {
-                bestDistance = d;
-                best = mState.pairs[i];
-            }
-        }
-        return best;
-    }
+    int shapeOn(const DVec3& point) const { return nearest(mState.pairs.data(), mState.pairCount, point); }
 
     /// The box of shape number `id` (solveOrder, shapeOn), or null (a plane, a sphere).
     const OrientedBox* boxOf(std::uint8_t id) const {
@@ -146,17 +135,8 @@ public:
 
     /// The gathered box whose surface lies nearest `point` [m] (within 0.05 m), or null.
     const OrientedBox* boxNear(const DVec3& point) const {
-        const Shape* best = nullptr;
-        double bestDistance = 0.05;
-        for (std::size_t i = 0; i < mCandidateCount; ++i) {
-            const Shape& s = mShapes[mCandidates[i]];
-            const double d = s.distance(point);
-            if (d < bestDistance) {
-                bestDistance = d;
-                best = &s;
-            }
-        }
-        return best && best->kind == Kind::Box ? &best->box : nullptr;
+        const int i = nearest(mCandidates.data(), mCandidateCount, point);
+        return i >= 0 ? boxOf(static_cast<std::uint8_t>(i)) : nullptr;
     }
 
 private:
@@ -191,9 +171,8 @@ private:
             }
             if (kind == Kind::Sphere)
                 return std::abs(glm::length(p - DVec3(sphere.center)) - static_cast<double>(sphere.radius));
-            const DVec3 over = glm::abs(toLocal * (p - DVec3(box.center))) - DVec3(box.halfExtents);
-            const double outside = glm::length(glm::max(over, 0.0));
-            return outside > 0.0 ? outside : -std::max({over.x, over.y, over.z});
+            DVec3 outward;
+            return std::abs(boxSignedDistance(toLocal * (p - DVec3(box.center)), DVec3(box.halfExtents), 0.0, outward));
         }
     };
 
@@ -243,6 +222,21 @@ private:
     bool meets(const DVec3& lo, const DVec3& hi) const { return overlap(lo, hi, mState.lo, mState.hi); }
     static bool overlap(const DVec3& alo, const DVec3& ahi, const DVec3& blo, const DVec3& bhi) {
         return glm::all(glm::lessThanEqual(alo, bhi)) && glm::all(glm::lessThanEqual(blo, ahi));
+    }
+
+    // Of the shapes numbered `ids`, the one whose surface lies nearest `point` (within 0.05 m),
+    // or -1.
+    int nearest(const std::uint8_t* ids, std::size_t count, const DVec3& point) const {
+        int best = -1;
+        double bestDistance = 0.05;
+        for (std::size_t i = 0; i < count; ++i) {
+            const double d = mShapes[ids[i]].distance(point);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = ids[i];
+            }
+        }
+        return best;
     }
 
     // The shape's number in the run's list, added if new (false when the list is full).

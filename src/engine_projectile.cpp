@@ -1156,11 +1156,11 @@ private:
         const DQuat q = glm::normalize(DQuat(b.orientation));
         const double r = static_cast<double>(b.rounding);
         const DVec3 inner = DVec3(b.halfExtents) - r, local = glm::conjugate(q) * (p - DVec3(b.center));
-        const DVec3 off = local - glm::clamp(local, -inner, inner);
-        const double length = glm::length(off);
-        if (!(length > 1e-9)) return false;
-        gap = length - r - radius;
-        normal = q * (off / length);
+        DVec3 outward;
+        const double outside = boxSignedDistance(local, inner, 0.0, outward);
+        if (!(outside > 1e-9)) return false;
+        gap = outside - r - radius;
+        normal = q * outward;
         return true;
     }
 

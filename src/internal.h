@@ -52,6 +52,22 @@ inline Quat toF(const DQuat& q) {
     return r;
 }
 
+// Signed distance from `o` (in the box's frame) to the box [-h, h] grown by `radius`, and the
+// outward unit normal of the closest feature (a face's axis where `o` is inside).
+inline double boxSignedDistance(const DVec3& o, const DVec3& h, double radius, DVec3& outward) {
+    const DVec3 qd = glm::abs(o) - h;
+    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
+    const double outsideLength = glm::length(outsidePart);
+    if (outsideLength > 0.0) {
+        outward = outsidePart * glm::sign(o) / outsideLength;
+        return outsideLength - radius;
+    }
+    const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
+    outward = DVec3(0.0);
+    outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
+    return qd[axis] - radius;
+}
+
 // The largest absolute coordinate of p, at least 1: the scale of p's rounding errors.
 inline double coordinateMagnitude(const DVec3& p) {
     return std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});

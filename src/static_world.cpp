@@ -118,22 +118,6 @@ void castSphere(const Ray& ray, double radius, const Sphere& sphere, Candidate& 
     sphereEntry(ray, center, r, best);
 }
 
-// Signed distance from `o` (in the box's frame) to the box [-h, h] grown by `radius`, and the
-// outward unit normal of the closest feature (a face's axis where `o` is inside).
-double boxSignedDistance(const DVec3& o, const DVec3& h, double radius, DVec3& outward) {
-    const DVec3 qd = glm::abs(o) - h;
-    const DVec3 outsidePart = glm::max(qd, DVec3(0.0));
-    const double outsideLength = glm::length(outsidePart);
-    if (outsideLength > 0.0) {
-        outward = outsidePart * glm::sign(o) / outsideLength;
-        return outsideLength - radius;
-    }
-    const int axis = (qd.x >= qd.y && qd.x >= qd.z) ? 0 : (qd.y >= qd.z ? 1 : 2);
-    outward = DVec3(0.0);
-    outward[axis] = o[axis] < 0.0 ? -1.0 : 1.0;
-    return qd[axis] - radius;
-}
-
 void castBox(const Ray& ray, double radius, const OrientedBox& box, Candidate& best) {
     // Work in the box's local frame: an axis-aligned box [-h, h], rounded by the cast radius.
     // A rounded box is the box shrunk by its rounding, met by a sphere that much larger.
