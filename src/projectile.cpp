@@ -290,8 +290,12 @@ private:
         // In free flight (no surface near that a cast could start on), the chord may lie in a
         // stretch that one world query cleared (clearAhead): it would hit nothing.
         const bool freeFlight = !mHasLastSurface && !mHadImpact && !mHadContact;
-        if (!freeFlight) mClearedGrid = 0;
-        const bool cleared = freeFlight && (mGridIndex < mClearedGrid || clearAhead(p0, v0));
+        // Just bounced off a surface and no other surface known near: the hop from it may be
+        // cleared in the same way, from its first step on (clearAhead's `hop`).
+        const bool hop =
+            !freeFlight && mHopPlaneKnown && mHasLastSurface && mHadImpact && !mHadContact && !returnsToSurface;
+        if (!freeFlight && !hop) mClearedGrid = 0;
+        const bool cleared = (freeFlight || hop) && (mGridIndex < mClearedGrid || clearAhead(p0, v0, hop));
         CastHit hit;
         if (!cleared &&
             (castPath(p0, p1, mHasLastSurface, mLastSurfaceNormal, hit) || crossesRecentSurface(p0, p1, hit))) {
@@ -326,9 +330,14 @@ private:
     // behind that plane (CollisionWorld::firstTouchInFront): the floor it left and the floor
     // beside, which the chords of the stretch, all that far in front, cannot meet. Without it
     // the floor, within the capsule's radius at the start, would clear nothing.
-    bool clearAhead(const DVec3& p0, const DVec3& v0) {
+    // With `hop` (the first steps after a bounce, the body a skin in front of the surface it
+    // left: less than liftDistance()), the plane is the one the world reported at the impact and
+    // the tolerance less than the body's height over it, so that every chord of the stretch lies
+    // strictly in front of the surfaces left out; where the body is not in front of that plane,
+    // the step is left to the chords without touching the stretch's state.
+    bool clearAhead(const DVec3& p0, const DVec3& v0, bool hop = false) {
         if (!mRegionQueries) return false;
-        if (mClearWait > 0) {
+        if (mClearWait > 0 && !hop) {
             --mClearWait;
             return false;
         }
@@ -345,7 +354,25 @@ private:
         // (after an impact) the last before the body comes back within `lift` of that plane.
         const DVec3& left = mLastSurfaceNormal;  // zero before the first impact: never in front
         const double lift = liftDistance();
-        const bool inFront = glm::dot(left, p0 - mLastSurfacePoint) >= lift;
+        const double radius = static_cast<double>(mSettings.radius);
+        bool inFront = glm::dot(left, p0 - mLastSurfacePoint) >= lift;
+        InFrontOf front;
+        front.point = toR(mLastSurfacePoint - left * radius);
+        front.normal = toF(left);
+        front.tolerance = kInFrontTolerance;
+        if (!inFront && hop) {
+            // The body's height over the reported plane, along the normal BehindTester uses
+            // (the float normal, normalised in double); a chord point that high lies beyond the
+            // plane's level plus the tolerance, and so beyond every surface left out.
+            front.point = toR(mHopPlane - left * radius);
+            const DVec3 normal = glm::normalize(DVec3(front.normal));
+            const double height = glm::dot(normal, p0) - glm::dot(normal, toD(front.point)) - radius;
+            if (!(height > 0.0)) return false;
+            front.tolerance = static_cast<float>(std::min(static_cast<double>(kInFrontTolerance), 0.25 * height));
+            inFront = true;
+        } else if (hop) {
+            hop = false;  // already a lift in front: the usual stretch
+        }
         std::uint64_t last = 0;
         while (last < mClearSteps) {
             const std::uint64_t j = last + 1;
@@ -360,10 +387,6 @@ private:
         float fraction = 1.0f;
         bool touched = false;
         if (inFront) {
-            InFrontOf front;
-            front.point = toR(mLastSurfacePoint - left * static_cast<double>(mSettings.radius));
-            front.normal = toF(left);
-            front.tolerance = kInFrontTolerance;
             touched = mWorld.firstTouchInFront(capsule, front, fraction);
         } else {
             touched = mWorld.firstTouch(capsule, fraction);
@@ -379,6 +402,7 @@ private:
                 while (clear < last && glm::dot(pointAt(clear + 1) - p0, chord) / length < limit) ++clear;
         }
         const std::uint64_t points = last + 1;
+        if (hop && clear == 0) return false;  // the chords go on; the stretch's state is kept
         if (clear + 1 == points) {
             mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, mMaxClearSteps);
             mClearBackoff = 2;
@@ -552,6 +576,8 @@ private:
         mBody = {p, v0 + mGravity * s};
         mTime += s;
         impact(n, s);
+        mHopPlane = surfacePoint;
+        mHopPlaneKnown = mHasLastSurface;
     }
 
     // In a crease or a corner (two or three surfaces meeting in a concave edge) the body
@@ -802,6 +828,8 @@ private:
     void impact(const DVec3& n, double elapsed) {
         ++mEvents;
         mSlidGrid = 0;
+        mClearedGrid = 0;
+        mHopPlaneKnown = false;
         mHasSupport = false;
         // Wedged between surfaces: eight impacts in a row, each within a nanosecond or a
         // micrometre of the one before (the body rattles in place).
@@ -870,6 +898,10 @@ private:
     DVec3 mContactNormal{0.0};
     DVec3 mContactPoint{0.0};  // a point of the contact surface (the last probe's hit)
     bool mHadImpact = false;   // mLastSurfaceNormal and mLastSurfacePoint are set
+    // The plane the world reported at the last impact (arriveAt's surfacePoint, a point of the
+    // plane the body's centre touched), known from an impact that left the body in flight.
+    DVec3 mHopPlane{0.0};
+    bool mHopPlaneKnown = false;
     // InFrontOf::tolerance of clearAhead's queries [m]: well inside liftDistance(), the least
     // height of its chords over the plane, with the plane point's rounding to Real (half an ulp).
     static constexpr float kInFrontTolerance = 1e-5f;
