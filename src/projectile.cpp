@@ -330,14 +330,22 @@ private:
     // behind that plane (CollisionWorld::firstTouchInFront): the floor it left and the floor
     // beside, which the chords of the stretch, all that far in front, cannot meet. Without it
     // the floor, within the capsule's radius at the start, would clear nothing.
-    // With `hop` (the first steps after a bounce, the body a skin in front of the surface it
-    // left: less than liftDistance()), the plane is the one the world reported at the impact and
-    // the tolerance less than the body's height over it, so that every chord of the stretch lies
-    // strictly in front of the surfaces left out; where the body is not in front of that plane,
-    // the step is left to the chords without touching the stretch's state.
-    bool clearAhead(const DVec3& p0, const DVec3& v0, bool hop = false) {
+    // With `justBounced` (the steps after a bounce, on which the body may still lie within
+    // liftDistance() of the surface it left: a hop), the plane is the one the world reported at
+    // the impact and the tolerance less than the body's height over it, so that every chord of
+    // the stretch lies strictly in front of the surfaces left out. A hop's query that clears
+    // nothing leaves the stretch's state as it was (the chords go on as they would have); where
+    // the world's first two hop queries cleared nothing (a world whose firstTouchInFront is
+    // CollisionWorld's default, firstTouch), the hops of that run are not asked again.
+    bool clearAhead(const DVec3& p0, const DVec3& v0, bool justBounced = false) {
         if (!mRegionQueries) return false;
-        if (mClearWait > 0 && !hop) {
+        const DVec3& left = mLastSurfaceNormal;  // zero before the first impact: never in front
+        const double lift = liftDistance();
+        const double radius = static_cast<double>(mSettings.radius);
+        bool inFront = glm::dot(left, p0 - mLastSurfacePoint) >= lift;
+        const bool hop = justBounced && !inFront;
+        if (hop && mHopQueries >= 2 && mHopClears == 0) return false;
+        if (!hop && mClearWait > 0) {
             --mClearWait;
             return false;
         }
@@ -350,17 +358,11 @@ private:
             const double s = timeOf(j);
             return p0 + v0 * s + 0.5 * mGravity * s * s;
         };
-        // The last point of the stretch: mClearSteps on, or the first at or past the end time, or
-        // (after an impact) the last before the body comes back within `lift` of that plane.
-        const DVec3& left = mLastSurfaceNormal;  // zero before the first impact: never in front
-        const double lift = liftDistance();
-        const double radius = static_cast<double>(mSettings.radius);
-        bool inFront = glm::dot(left, p0 - mLastSurfacePoint) >= lift;
         InFrontOf front;
         front.point = toR(mLastSurfacePoint - left * radius);
         front.normal = toF(left);
         front.tolerance = kInFrontTolerance;
-        if (!inFront && hop) {
+        if (hop) {
             // The body's height over the reported plane, along the normal BehindTester uses
             // (the float normal, normalised in double); a chord point that high lies beyond the
             // plane's level plus the tolerance, and so beyond every surface left out.
@@ -370,9 +372,9 @@ private:
             if (!(height > 0.0)) return false;
             front.tolerance = static_cast<float>(std::min(static_cast<double>(kInFrontTolerance), 0.25 * height));
             inFront = true;
-        } else if (hop) {
-            hop = false;  // already a lift in front: the usual stretch
         }
+        // The last point of the stretch: mClearSteps on, or the first at or past the end time, or
+        // (after an impact) the last before the body comes back within `lift` of that plane.
         std::uint64_t last = 0;
         while (last < mClearSteps) {
             const std::uint64_t j = last + 1;
@@ -386,6 +388,7 @@ private:
         const SegmentCast capsule = pathCapsule(ends, mSettings.radius, parabolaBend(mGravity, timeOf(last)));
         float fraction = 1.0f;
         bool touched = false;
+        if (hop) ++mHopQueries;
         if (inFront) {
             touched = mWorld.firstTouchInFront(capsule, front, fraction);
         } else {
@@ -403,6 +406,7 @@ private:
         }
         const std::uint64_t points = last + 1;
         if (hop && clear == 0) return false;  // the chords go on; the stretch's state is kept
+        if (hop) ++mHopClears;
         if (clear + 1 == points) {
             mClearSteps = std::min<std::uint64_t>(mClearSteps * 2, mMaxClearSteps);
             mClearBackoff = 2;
@@ -902,6 +906,7 @@ private:
     // plane the body's centre touched), known from an impact that left the body in flight.
     DVec3 mHopPlane{0.0};
     bool mHopPlaneKnown = false;
+    std::uint32_t mHopQueries = 0, mHopClears = 0;  // clearAhead's queries for hops, and those that cleared
     // InFrontOf::tolerance of clearAhead's queries [m]: well inside liftDistance(), the least
     // height of its chords over the plane, with the plane point's rounding to Real (half an ulp).
     static constexpr float kInFrontTolerance = 1e-5f;

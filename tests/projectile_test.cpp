@@ -1556,8 +1556,18 @@ TEST(ProjectileExact, ClearingHopsInFrontOfTheFloorGivesTheTrajectoryOfCastingEv
             ASSERT_EQ(world.add(kerb), Status::Ok);
         }
         if (round % 2 == 1) {
-            // A floor of 1 m tiles 1 mm above the plane: the bounces are on the tiles.
-            const auto at = [](int i, int j) { return RVec3(Real(i), Real(0.001), Real(j)); };
+            // A floor of 1 m tiles 1 mm above the plane: the bounces are on the tiles. Every
+            // fourth round the tiles' corners lie up to 20 um above or below that (a floor bumpy
+            // at the scale of the in-front tolerance and of the skin a bounce leaves the body
+            // at): a hop's query leaves out what lies behind the plane of the tile it left, up
+            // to a tolerance under the body's height over it, and the neighbouring tiles tilt
+            // above and below that plane.
+            const bool bumpy = round % 4 == 3;
+            std::array<double, 31 * 31> bumps{};
+            for (double& b : bumps) b = bumpy ? random.uniform(-2e-5, 2e-5) : 0.0;
+            const auto at = [&bumps](int i, int j) {
+                return RVec3(Real(i), Real(0.001 + bumps[static_cast<std::size_t>((i + 15) * 31 + (j + 15))]), Real(j));
+            };
             for (int i = -15; i < 15; ++i)
                 for (int j = -15; j < 15; ++j) {
                     ASSERT_EQ(world.add(foresight::Triangle{at(i, j), at(i, j + 1), at(i + 1, j + 1)}), Status::Ok);
@@ -1587,7 +1597,8 @@ TEST(ProjectileExact, ClearingHopsInFrontOfTheFloorGivesTheTrajectoryOfCastingEv
         "hops cleared in front of the floor: %zu queries (%zu in front) against %zu with firstTouch alone, "
         "%zu casting every chord\n",
         queriesInFront, inFrontAsked, queriesTouch, castsEveryChord);
-    // The hops over the floor need about a quarter fewer queries (23 % today).
+    // The hops over the floor need a fifth fewer queries (22 % today, where the hop is cleared
+    // from its first step; 16 % when it was cleared only from a lift above the floor).
     EXPECT_GT(inFrontAsked, 500u);
     EXPECT_LT(static_cast<double>(queriesInFront), 0.85 * static_cast<double>(queriesTouch))
         << queriesInFront << " queries in front against " << queriesTouch << " with firstTouch alone";
