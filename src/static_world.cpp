@@ -885,6 +885,28 @@ void PlaneRegionTester::test(const Triangle& triangle, const SurfaceMaterial& ma
     }
 }
 
+bool PlaneRegionTester::passesFlatGroup(const DVec3& lo, const DVec3& hi, const DVec3& normal, double spread) const {
+    if (mFailed || !mAnchored || !(spread >= 0.0 && spread <= 1e-14) || !sameMaterial(SurfaceMaterial{})) return false;
+    // test()'s normal check, |dot(n, N)| / |n| >= 1 - 1e-13 for a triangle's n: its unit normal
+    // lies within spread of +-normal in each component (so within 1.8 spread in length), and the
+    // check's own rounding is a few ulps of 1; 5e-14 covers both.
+    if (!(std::abs(glm::dot(normal, mNormal)) >= 1.0 - 5e-14)) return false;
+    // test()'s vertex check, |dot(N, v) - d| <= tolerance: the expression is linear in v, so
+    // over the box its extremes lie at two corners; a margin far above the rounding of either
+    // evaluation (a few ulps of the magnitudes involved).
+    DVec3 low, high;
+    for (int axis = 0; axis < 3; ++axis) {
+        low[axis] = mNormal[axis] >= 0.0 ? lo[axis] : hi[axis];
+        high[axis] = mNormal[axis] >= 0.0 ? hi[axis] : lo[axis];
+    }
+    const double magnitude = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                       std::abs(hi.z), std::abs(mDistance)});
+    const double margin = 1e-13 * (1.0 + magnitude);
+    const double below = glm::dot(mNormal, low) - mDistance, above = glm::dot(mNormal, high) - mDistance;
+    return std::isfinite(below) && std::isfinite(above) && std::abs(below) <= mTolerance - margin &&
+           std::abs(above) <= mTolerance - margin;
+}
+
 // Keeps edge uv when it comes within the region (it may cross the cross-section), with the side
 // of it that w (the triangle's third vertex) lies on.
 void PlaneRegionTester::addEdge(const DVec3& u, const DVec3& v, const DVec3& w) {

@@ -1411,6 +1411,85 @@ TEST(embree_mesh, IsOnlyPlaneAnswersWithTheMeshAdjacencyAsWithoutIt) {
     EXPECT_EQ(gained, 0);
 }
 
+// isOnlyPlane passes a node of the region tree whole where all its triangles lie in one plane
+// with every edge shared (a flat floor's tiles) and the tester says each would pass
+// (PlaneRegionTester::passesFlatGroup). A floor of 40 x 40 tiles at y = 0 with, lying on it, a
+// rug of 20 x 20 tiles 1 cm up, a film of 6 x 6 tiles 2e-7 m up (within the plane's tolerance)
+// and a plate of 6 x 6 tiles tilted by 1e-6 rad (beyond the normals' 4.5e-7 rad); regions on
+// the floor's plane whose capsules reach the rug, the film or the plate or not. Every answer
+// must be the answer of the same world without the adjacency (which offers every triangle) and
+// at least as accepting as StaticWorld's. A tree that passed flat nodes before a triangle holds
+// the cross-section's anchor fails it; passesFlatGroup's own checks (the box within the plane,
+// the normal along it) have their test in engine_test.cpp (StaticWorldPlane): on this mesh no
+// answer depends on them (checked by removing each).
+TEST(embree_mesh, IsOnlyPlanePassesFlatNodesOnlyWhereEachTriangleWould) {
+    Mesh mesh;
+    // n x n tiles from (x0, z0), vertex (i, j) at height y(i, j), each tile two triangles.
+    const auto grid = [&](int n, double x0, double z0, const auto& y) {
+        const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) mesh.vertices.push_back(r3(x0 + i, y(i, j), z0 + j));
+        const auto at = [&](int i, int j) { return first + static_cast<std::uint32_t>(i * (n + 1) + j); };
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                for (const std::uint32_t k :
+                     {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)})
+                    mesh.indices.push_back(k);
+    };
+    grid(40, -20.0, -20.0, [](int, int) { return 0.0; });
+    grid(20, -10.0, -10.0, [](int, int) { return 0.01; });              // the rug
+    grid(6, 12.0, -18.0, [](int, int) { return 2e-7; });                // the film
+    grid(6, -18.0, 12.0, [](int i, int) { return 0.001 + 1e-6 * i; });  // the plate
+
+    StaticWorld reference;
+    EmbreeWorld embree, unpaired(foresight::EmbreeWorldSettings{.meshAdjacency = false});
+    for (EmbreeWorld* world : {&embree, &unpaired}) {
+        foresight::MeshReport report;
+        ASSERT_EQ(world->addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
+        std::string error;
+        ASSERT_TRUE(world->commit(&error)) << error;
+    }
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        ASSERT_EQ(reference.add(Triangle{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                                         mesh.vertices[mesh.indices[t + 2]]}),
+                  Status::Ok);
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int plane = 0, notPlane = 0, nearPieces = 0, staticRefused = 0;
+    for (int i = 0; i < 20000; ++i) {
+        PlaneRegion region;
+        const DVec3 start(-19.5 + 39.0 * u(rng), 0.0, -19.5 + 39.0 * u(rng));
+        // Small radii, so that a capsule over a piece's middle meets nothing of its border.
+        const double radius = 0.0005 + 0.03 * u(rng) * u(rng);
+        const double heading = 2.0 * M_PI * u(rng), length = i % 4 == 0 ? 0.0 : 5.0 * u(rng) * u(rng);
+        region.point = r3(start.x, 0.0, start.z);
+        region.normal = Vec3(0.0f, 1.0f, 0.0f);
+        region.capsule.origin = r3(start.x, 0.5 * radius * u(rng), start.z);
+        region.capsule.displacement =
+            Vec3(static_cast<float>(length * std::cos(heading)), 0.0f, static_cast<float>(length * std::sin(heading)));
+        region.capsule.radius = static_cast<float>(radius);
+        const bool only = embree.isOnlyPlane(region), every = unpaired.isOnlyPlane(region);
+        const bool staticOnly = reference.isOnlyPlane(region);
+        ASSERT_EQ(only, every) << "region " << i;
+        // StaticWorld offers every triangle to its tester, whose bounds test may take one the tree
+        // leaves out as out of reach (the plate's, off the plane): it may refuse more.
+        ASSERT_TRUE(every || !staticOnly) << "StaticWorld accepted a region EmbreeWorld refused, " << i;
+        staticRefused += every && !staticOnly ? 1 : 0;
+        (only ? plane : notPlane) += 1;
+        // Starts over the rug, the film or the plate.
+        const bool overPiece = (start.x > -10.0 && start.x < 10.0 && start.z > -10.0 && start.z < 10.0) ||
+                               (start.x > 12.0 && start.x < 18.0 && start.z > -18.0 && start.z < -12.0) ||
+                               (start.x > -18.0 && start.x < -12.0 && start.z > 12.0 && start.z < 18.0);
+        nearPieces += overPiece ? 1 : 0;
+    }
+    std::printf(
+        "[ isOnlyPlane ] flat nodes: the plane alone in %d of %d regions (%d start over a piece; StaticWorld refused "
+        "%d more)\n",
+        plane, plane + notPlane, nearPieces, staticRefused);
+    EXPECT_GT(plane, 10000);
+    EXPECT_GT(notPlane, 2000);
+}
+
 TEST(embree_mesh, FindNearReportsWhatStaticWorldReports) {
     struct NearList final : foresight::NearCollector {
         std::vector<std::array<double, 5>> found;

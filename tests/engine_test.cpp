@@ -560,6 +560,42 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
         << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
 }
 
+// PlaneRegionTester::passesFlatGroup: a group passes only once the cross-section is anchored,
+// and only where each of its triangles would pass test(): its box within the plane's tolerance
+// (1e-6 m here, near the origin) and its normal along the plane's.
+TEST(StaticWorldPlane, PassesAFlatGroupOnlyWhereEachTriangleWould) {
+    PlaneRegion region;
+    region.capsule.origin = RVec3(0.3f, 0.01f, 0.2f);
+    region.capsule.displacement = Vec3(1.5f, 0.0f, 0.4f);
+    region.capsule.radius = 0.05f;
+    region.point = RVec3(0, 0, 0);
+    region.normal = Vec3(0, 1, 0);
+    const glm::dvec3 up(0, 1, 0), lo(1, 0, -1), hi(3, 0, 1);
+    foresight::PlaneRegionTester tester(region);
+    EXPECT_FALSE(tester.passesFlatGroup(lo, hi, up, 0.0)) << "not anchored yet";
+    tester.test(Triangle{RVec3(0, 0, 0), RVec3(0, 0, 1), RVec3(1, 0, 0)}, {}, 7);  // holds the anchor
+    EXPECT_TRUE(tester.passesFlatGroup(lo, hi, up, 0.0)) << "a flat group in the plane";
+    EXPECT_TRUE(tester.passesFlatGroup(lo, hi, -up, 1e-14)) << "normals up to sign, within the largest spread";
+    EXPECT_FALSE(tester.passesFlatGroup(lo, hi, up, 2e-14)) << "a spread over 1e-14";
+    EXPECT_TRUE(tester.passesFlatGroup(lo, glm::dvec3(3, 5e-7, 1), up, 0.0)) << "0.5 um up: within the tolerance";
+    EXPECT_FALSE(tester.passesFlatGroup(lo, glm::dvec3(3, 2e-6, 1), up, 0.0)) << "2 um up: beyond it";
+    EXPECT_FALSE(tester.passesFlatGroup(glm::dvec3(1, -2e-6, -1), hi, up, 0.0)) << "2 um down";
+    const glm::dvec3 tilted = glm::normalize(glm::dvec3(1e-6, 1, 0));  // 1e-6 rad
+    EXPECT_FALSE(tester.passesFlatGroup(lo, hi, tilted, 0.0)) << "a normal 1e-6 rad off";
+    const glm::dvec3 slight = glm::normalize(glm::dvec3(1e-7, 1, 0));  // 1 - cos = 5e-15: test() passes it
+    EXPECT_TRUE(tester.passesFlatGroup(lo, hi, slight, 0.0)) << "a normal 1e-7 rad off";
+    tester.test(foresight::Sphere{RVec3(0.5f, 0.0f, 0.2f), 0.1f});  // fails the region
+    ASSERT_TRUE(tester.failed());
+    EXPECT_FALSE(tester.passesFlatGroup(lo, hi, up, 0.0)) << "after a failure";
+
+    // A region with its own material passes no group of mesh triangles (which have none).
+    region.restitution = 0.3f;
+    foresight::PlaneRegionTester withMaterial(region);
+    withMaterial.test(Triangle{RVec3(0, 0, 0), RVec3(0, 0, 1), RVec3(1, 0, 0)}, {0.3f, -1.0f}, 7);
+    EXPECT_FALSE(withMaterial.failed());
+    EXPECT_FALSE(withMaterial.passesFlatGroup(lo, hi, up, 0.0)) << "the group has no material";
+}
+
 // PlaneRegionTester's answers on shapes whose cover is known by construction.
 TEST(StaticWorldPlane, IsOnlyPlaneKnowsHolesBordersAndNeighbours) {
     PlaneRegion region;

@@ -271,6 +271,16 @@ public:
     /// True once a shape has ruled the region out: the rest need not be offered.
     bool failed() const { return mFailed; }
 
+    /// Whether a group of mesh triangles may be left unoffered without changing result(): true
+    /// only when no shape has failed the region, a triangle offered already holds the
+    /// cross-section's anchor, and every triangle with its vertices inside the box [lo, hi],
+    /// its unit normal within `spread` of `normal` or of `-normal` (each component; at most
+    /// 1e-14), no material of its own and all three edges shared (sharedEdges 7) would pass
+    /// test() keeping nothing. A world's tree asks it for a node whose triangles are all like
+    /// that (a flat floor's tiles) instead of offering them one by one. Conservative: false
+    /// where rounding could make a triangle's own test fail [Units: m for lo, hi].
+    bool passesFlatGroup(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& normal, double spread) const;
+
     /// Whether the shapes offered make the region the plane alone, covered.
     bool result() const;
 

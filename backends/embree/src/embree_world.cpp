@@ -778,6 +778,12 @@ struct alignas(16) RegionNode {
     const void* child[kRegionWidth] = {};
     float lo[3][kRegionWidth] = {};  // lo[axis][child]: each child's box holds its triangles
     float hi[3][kRegionWidth] = {};
+    // Whether all of a child's triangles lie in one plane with every edge shared (markFlat):
+    // their unit normals within flatSpread of +-flatNormal; isOnlyPlane's tester may then pass
+    // the child as a whole (PlaneRegionTester::passesFlatGroup). Read by isOnlyPlane only.
+    bool flat[kRegionWidth] = {};
+    double flatSpread[kRegionWidth] = {};
+    double flatNormal[kRegionWidth][3] = {};
 };
 struct RegionLeaf {
     std::uint32_t leafCount = 0;  // > 0: how many of `triangles` are used
@@ -865,6 +871,63 @@ bool buildRegionTree(RTCDevice device, const std::vector<Triangle>& triangles, R
     return root != nullptr && rtcGetDeviceError(device) == RTC_ERROR_NONE;
 }
 
+// A subtree's flatness (markFlat): every triangle's unit normal (PlaneRegionTester::test's
+// cross product over its length) within `spread` of +-normal, per component, and every edge
+// shared (sharedEdges 7).
+struct Flatness {
+    bool flat = false;
+    DVec3 normal{0.0};
+    double spread = 0.0;
+};
+
+// Fills the flat fields of `node`'s subtree and returns its flatness. A spread above 1e-14 is
+// not flat (passesFlatGroup's limit); `depth` guards the recursion (the builder keeps trees
+// within kRegionDepth).
+Flatness markFlat(const void* node, const std::vector<Triangle>& triangles, const std::vector<std::uint8_t>& shared,
+                  unsigned depth) {
+    constexpr double kSpread = 1e-14;
+    Flatness result;
+    const auto merge = [&](const DVec3& normal, double spread) {
+        if (!result.flat) return;
+        if (result.normal == DVec3(0.0)) {
+            result.normal = normal;
+            result.spread = spread;
+            return;
+        }
+        const DVec3 d = glm::dot(normal, result.normal) >= 0.0 ? normal - result.normal : normal + result.normal;
+        const double apart = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        result.spread = std::max(result.spread, apart + spread);
+        if (!(result.spread <= kSpread)) result.flat = false;
+    };
+    result.flat = true;
+    if (depth > kRegionDepth) return Flatness{};
+    if (regionCount(node) > 0) {
+        const auto& leaf = *static_cast<const RegionLeaf*>(node);
+        for (std::uint32_t i = 0; i < leaf.leafCount && result.flat; ++i) {
+            const unsigned t = leaf.triangles[i];
+            const Triangle& tri = triangles[t];
+            const DVec3 a = toD(tri.a), b = toD(tri.b), c = toD(tri.c);
+            const DVec3 n = glm::cross(b - a, c - a);
+            const double area2 = glm::length(n);
+            if (shared[t] != 7u || !(area2 > 0.0) || !std::isfinite(area2)) return Flatness{};
+            merge(n / area2, 0.0);
+        }
+        return result.flat ? result : Flatness{};
+    }
+    auto& inner = *const_cast<RegionNode*>(static_cast<const RegionNode*>(node));
+    for (unsigned k = 0; k < inner.childCount && k < kRegionWidth; ++k) {
+        const Flatness child = markFlat(inner.child[k], triangles, shared, depth + 1);
+        inner.flat[k] = child.flat;
+        inner.flatSpread[k] = child.spread;
+        for (int axis = 0; axis < 3; ++axis) inner.flatNormal[k][axis] = child.normal[axis];
+        if (!child.flat)
+            result.flat = false;
+        else
+            merge(child.normal, child.spread);
+    }
+    return result.flat ? result : Flatness{};
+}
+
 }  // namespace
 
 bool EmbreeWorld::commit(std::string* error) {
@@ -926,6 +989,8 @@ bool EmbreeWorld::commit(std::string* error) {
             Confirmation{triangle, glm::normalize(glm::cross(b - a, c - a))};
     }
     if (mSettings.meshAdjacency) impl.sharedEdges = sharedEdgeMasks(impl.triangles, impl.vertexIndices, vertexCount);
+    if (impl.regionRoot && impl.sharedEdges.size() == count)
+        markFlat(impl.regionRoot, impl.triangles, impl.sharedEdges, 0);
     impl.committed = true;
     return true;
 }
@@ -1196,9 +1261,14 @@ unsigned enterChildren(const RegionNode& node, const RegionCapsule& c, float (&e
 // every box. False when the walk ran out of stack (a tree deeper than the builder was allowed to
 // make it): the caller answers "maybe".
 // With `behind`, the children whose boxes lie wholly behind its plane are left out too.
-template <class Skip, class Leaf>
+// No child left out (walkRegion's `prune`).
+struct NoPrune {
+    bool operator()(const RegionNode&, unsigned) const { return false; }
+};
+
+template <class Skip, class Leaf, class Prune = NoPrune>
 bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Leaf&& leaf,
-                const BehindTester* behind = nullptr) {
+                const BehindTester* behind = nullptr, Prune&& prune = Prune{}) {
     struct Entry {
         const void* node;
         float entry;
@@ -1221,6 +1291,9 @@ bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Lea
                 if ((mask & (1u << k)) && behind->behind(glm::dvec3(node.lo[0][k], node.lo[1][k], node.lo[2][k]),
                                                          glm::dvec3(node.hi[0][k], node.hi[1][k], node.hi[2][k])))
                     mask &= ~(1u << k);
+        if constexpr (!std::is_same_v<std::decay_t<Prune>, NoPrune>)
+            for (unsigned k = 0; k < kRegionWidth; ++k)
+                if ((mask & (1u << k)) && prune(node, k)) mask &= ~(1u << k);
         if (!capsule.valid) std::fill(std::begin(entry), std::end(entry), 0.0f);
         if (size + kRegionWidth > stack.size()) return false;
         // The entered children, the farthest pushed first (insertion by entry): the nearest on top.
@@ -1375,12 +1448,22 @@ bool EmbreeWorld::isOnlyPlane(const PlaneRegion& region) const {
     const Triangle* triangles = impl->triangles.data();
     const std::uint8_t* shared =
         impl->sharedEdges.size() == impl->triangles.size() ? impl->sharedEdges.data() : nullptr;
+    // A child whose triangles all lie in one plane with every edge shared (markFlat) is passed
+    // whole where the tester says each of them would pass (passesFlatGroup): a floor of tiles.
     const bool walked = walkRegion(
         impl->regionRoot, regionCapsule(region.capsule), [](float) { return false; },
         [&](const RegionLeaf& leaf) {
             for (std::uint32_t i = 0; i < leaf.leafCount && !tester.failed(); ++i)
                 tester.test(triangles[leaf.triangles[i]], {}, shared ? shared[leaf.triangles[i]] : 0);
             return tester.failed();
+        },
+        nullptr,
+        [&](const RegionNode& node, unsigned k) {
+            return shared && node.flat[k] &&
+                   tester.passesFlatGroup(DVec3(node.lo[0][k], node.lo[1][k], node.lo[2][k]),
+                                          DVec3(node.hi[0][k], node.hi[1][k], node.hi[2][k]),
+                                          DVec3(node.flatNormal[k][0], node.flatNormal[k][1], node.flatNormal[k][2]),
+                                          node.flatSpread[k]);
         });
     return walked && tester.result();
 }
