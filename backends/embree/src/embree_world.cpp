@@ -1256,16 +1256,18 @@ unsigned enterChildren(const RegionNode& node, const RegionCapsule& c, float (&e
 #endif
 }
 
-// A walk of the region tree, nearer children first; `leaf(leaf)` returns true to stop the walk,
-// `skip(entry)` whether a node entered at `entry` may be skipped. An invalid capsule enters
-// every box. False when the walk ran out of stack (a tree deeper than the builder was allowed to
-// make it): the caller answers "maybe".
-// With `behind`, the children whose boxes lie wholly behind its plane are left out too.
 // No child left out (walkRegion's `prune`).
 struct NoPrune {
     bool operator()(const RegionNode&, unsigned) const { return false; }
 };
 
+// A walk of the region tree, nearer children first; `leaf(leaf)` returns true to stop the walk,
+// `skip(entry)` whether a node entered at `entry` may be skipped. An invalid capsule enters
+// every box. False when the walk ran out of stack (a tree deeper than the builder was allowed to
+// make it): the caller answers "maybe".
+// With `behind`, the children whose boxes lie wholly behind its plane are left out too, and so
+// are those for which `prune(node, k)` returns true (asked when their parent is walked, in the
+// children's order).
 template <class Skip, class Leaf, class Prune = NoPrune>
 bool walkRegion(const void* root, const RegionCapsule& capsule, Skip&& skip, Leaf&& leaf,
                 const BehindTester* behind = nullptr, Prune&& prune = Prune{}) {
