@@ -1260,6 +1260,21 @@ TEST(embree_mesh, FirstTouchInFrontAnswersAsAWorldWithoutTheShapesBehind) {
 // tile repeated over the same vertices, a triangle over a border edge on its tile's side, a sliver, a ridge folded up from the floor along a row
 // of shared vertices, a wall standing on shared floor vertices, and a tilted patch of tiles;
 // random capsules lying along the floor's plane and the tilted one, some narrow, some long.
+// `mesh` in an EmbreeWorld with its adjacency, one without (EmbreeWorldSettings::meshAdjacency)
+// and a StaticWorld holding the same triangles: isOnlyPlane's three answers.
+void holdMesh(const Mesh& mesh, EmbreeWorld& embree, EmbreeWorld& unpaired, StaticWorld& reference) {
+    for (EmbreeWorld* world : {&embree, &unpaired}) {
+        foresight::MeshReport report;
+        ASSERT_EQ(world->addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
+        std::string error;
+        ASSERT_TRUE(world->commit(&error)) << error;
+    }
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        ASSERT_EQ(reference.add(Triangle{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                                         mesh.vertices[mesh.indices[t + 2]]}),
+                  Status::Ok);
+}
+
 TEST(embree_mesh, IsOnlyPlaneAnswersWithTheMeshAdjacencyAsWithoutIt) {
     Mesh mesh;
     constexpr int kTiles = 12;  // x and z from -6 to 6
@@ -1331,16 +1346,7 @@ TEST(embree_mesh, IsOnlyPlaneAnswersWithTheMeshAdjacencyAsWithoutIt) {
 
     StaticWorld reference;
     EmbreeWorld embree, unpaired(foresight::EmbreeWorldSettings{.meshAdjacency = false});
-    for (EmbreeWorld* world : {&embree, &unpaired}) {
-        foresight::MeshReport report;
-        ASSERT_EQ(world->addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
-        std::string error;
-        ASSERT_TRUE(world->commit(&error)) << error;
-    }
-    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-        ASSERT_EQ(reference.add(Triangle{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
-                                         mesh.vertices[mesh.indices[t + 2]]}),
-                  Status::Ok);
+    ASSERT_NO_FATAL_FAILURE(holdMesh(mesh, embree, unpaired, reference));
 
     std::mt19937 rng(2611);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -1443,16 +1449,7 @@ TEST(embree_mesh, IsOnlyPlanePassesFlatNodesOnlyWhereEachTriangleWould) {
 
     StaticWorld reference;
     EmbreeWorld embree, unpaired(foresight::EmbreeWorldSettings{.meshAdjacency = false});
-    for (EmbreeWorld* world : {&embree, &unpaired}) {
-        foresight::MeshReport report;
-        ASSERT_EQ(world->addMesh(mesh.vertices, mesh.indices, &report), Status::Ok) << report.error;
-        std::string error;
-        ASSERT_TRUE(world->commit(&error)) << error;
-    }
-    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-        ASSERT_EQ(reference.add(Triangle{mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
-                                         mesh.vertices[mesh.indices[t + 2]]}),
-                  Status::Ok);
+    ASSERT_NO_FATAL_FAILURE(holdMesh(mesh, embree, unpaired, reference));
     std::mt19937 rng(4242);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     int plane = 0, notPlane = 0, nearPieces = 0, staticRefused = 0;
