@@ -2041,9 +2041,11 @@ private:
     bool pairOrder(int* order, int& count) const {
         if (!mTrackPairs || !mPairs.valid()) return false;
         std::array<int, kMaxSurfaces> shape{};
+        int acting = 0;
         for (int i = 0; i < mCount; ++i) {
             const Surface& s = mSurfaces[i];
             if (!s.acting) continue;
+            ++acting;
             shape[i] = s.predictive ? BulletPairs::kPredictive : mPairs.shapeOn(s.touch - s.normal * mRadius);
             if (shape[i] < 0) return false;
         }
@@ -2053,8 +2055,6 @@ private:
         for (std::size_t m = 0; m < n; ++m)
             for (int i = mCount - 1; i >= 0; --i)
                 if (mSurfaces[i].acting && shape[i] == manifolds[m]) order[count++] = i;
-        int acting = 0;
-        for (int i = 0; i < mCount; ++i) acting += mSurfaces[i].acting ? 1 : 0;
         return count == acting;
     }
 

@@ -560,16 +560,24 @@ TEST(EngineProjectile, ContactCoastingGivesTheStepsOfCastingEveryStep) {
         << castsCoasting << " queries coasting against " << castsEveryStep << " casting every step";
 }
 
+namespace {
+// A region on the floor y = 0 (normal +Y) along the segment from `origin` by `displacement`.
+PlaneRegion floorRegion(const RVec3& origin, const Vec3& displacement, float radius) {
+    PlaneRegion region;
+    region.capsule.origin = origin;
+    region.capsule.displacement = displacement;
+    region.capsule.radius = radius;
+    region.point = RVec3(0, 0, 0);
+    region.normal = Vec3(0, 1, 0);
+    return region;
+}
+}  // namespace
+
 // PlaneRegionTester::passesFlatGroup: a group passes only once the cross-section is anchored,
 // and only where each of its triangles would pass test(): its box within the plane's tolerance
 // (1e-6 m here, near the origin) and its normal along the plane's.
 TEST(StaticWorldPlane, PassesAFlatGroupOnlyWhereEachTriangleWould) {
-    PlaneRegion region;
-    region.capsule.origin = RVec3(0.3f, 0.01f, 0.2f);
-    region.capsule.displacement = Vec3(1.5f, 0.0f, 0.4f);
-    region.capsule.radius = 0.05f;
-    region.point = RVec3(0, 0, 0);
-    region.normal = Vec3(0, 1, 0);
+    PlaneRegion region = floorRegion(RVec3(0.3f, 0.01f, 0.2f), Vec3(1.5f, 0.0f, 0.4f), 0.05f);
     const glm::dvec3 up(0, 1, 0), lo(1, 0, -1), hi(3, 0, 1);
     foresight::PlaneRegionTester tester(region);
     EXPECT_FALSE(tester.passesFlatGroup(lo, hi, up, 0.0)) << "not anchored yet";
@@ -598,12 +606,7 @@ TEST(StaticWorldPlane, PassesAFlatGroupOnlyWhereEachTriangleWould) {
 
 // PlaneRegionTester's answers on shapes whose cover is known by construction.
 TEST(StaticWorldPlane, IsOnlyPlaneKnowsHolesBordersAndNeighbours) {
-    PlaneRegion region;
-    region.capsule.origin = RVec3(0.3f, 0.1f, 0.2f);
-    region.capsule.displacement = Vec3(1.5f, 0.0f, 0.4f);
-    region.capsule.radius = 0.3f;
-    region.point = RVec3(0, 0, 0);
-    region.normal = Vec3(0, 1, 0);
+    PlaneRegion region = floorRegion(RVec3(0.3f, 0.1f, 0.2f), Vec3(1.5f, 0.0f, 0.4f), 0.3f);
     const auto tiles = [](int half, int holeX, int holeZ) {
         StaticWorld world;
         for (int x = -half; x < half; ++x) {

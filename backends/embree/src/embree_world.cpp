@@ -876,6 +876,7 @@ bool buildRegionTree(RTCDevice device, const std::vector<Triangle>& triangles, R
 // shared (sharedEdges 7).
 struct Flatness {
     bool flat = false;
+    bool empty = true;  // no triangle merged yet: `normal` not set
     DVec3 normal{0.0};
     double spread = 0.0;
 };
@@ -889,7 +890,8 @@ Flatness markFlat(const void* node, const std::vector<Triangle>& triangles, cons
     Flatness result;
     const auto merge = [&](const DVec3& normal, double spread) {
         if (!result.flat) return;
-        if (result.normal == DVec3(0.0)) {
+        if (result.empty) {
+            result.empty = false;
             result.normal = normal;
             result.spread = spread;
             return;
