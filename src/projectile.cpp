@@ -3,6 +3,7 @@
 #include "engine_internal.h"
 #include "internal.h"
 #include "path_capsule.h"
+#include "projectile_internal.h"
 
 #include <algorithm>
 #include <array>
@@ -101,7 +102,7 @@ SegmentCast makeChordCast(const DVec3& from, const DVec3& to, float radius) {
     return cast;
 }
 
-bool isFinite(const ProjectileResult& r) {
+bool resultIsFinite(const ProjectileResult& r) {
     return detail::isFinite(r.position) && detail::isFinite(r.velocity) && std::isfinite(r.time);
 }
 
@@ -181,9 +182,13 @@ Status runStepped(const DVec3& start, const DVec3& startVelocity, std::uint64_t 
 class ExactRun {
 public:
     ExactRun(const ProjectileSettings& settings, const CollisionWorld& world, Recorder& recorder,
-             ProjectileResult& result)
+             ProjectileResult& result, const DistanceCutoff* cutoff = nullptr)
         : mSettings(settings), mWorld(world), mRecorder(recorder), mResult(result),
-          mGravity(decimalVector(settings.gravity)), mRegionQueries(world.regionQueryCost(settings.radius) <= 2.0f) {}
+          mGravity(decimalVector(settings.gravity)), mRegionQueries(world.regionQueryCost(settings.radius) <= 2.0f),
+          mCutoff(cutoff) {}
+
+    /// True when the run stopped at its cutoff (projectile_internal.h).
+    bool abandoned() const { return mAbandoned; }
 
     Status run(const DVec3& start, const DVec3& startVelocity, double endTime) {
         mBody = {start, startVelocity};
@@ -246,6 +251,19 @@ private:
         mEndRecorded = time >= endTime;
         mRecorder.add(time, mEndRecorded ? TrajectoryEvent::End : TrajectoryEvent::Step, mBody.position,
                       mBody.velocity);
+        if (mCutoff && time >= mNextCutoff && !mEndRecorded) checkCutoff(time, endTime);
+    }
+
+    // Stops the run where it surely ends beyond the cutoff's distance (projectile_internal.h).
+    void checkCutoff(double time, double endTime) {
+        mNextCutoff = time + kCutoffInterval;
+        const double left = endTime - time;
+        const double reach =
+            glm::length(mBody.velocity) * left + 0.5 * glm::length(mGravity) * left * left + kCutoffMargin;
+        if (glm::length(mBody.position - mCutoff->target) - reach > mCutoff->keepBelow) {
+            mAbandoned = true;
+            mStopped = true;
+        }
     }
 
     // The normal speed of a one-micrometre hop off a surface with normal n (0 if gravity does
@@ -946,6 +964,9 @@ private:
     std::uint64_t mSlideSteps = 8, mSlideWait = 0, mSlideBackoff = 2;
     bool mAtRest = false;
     bool mStopped = false;
+    const DistanceCutoff* mCutoff;  // null: none
+    double mNextCutoff = 0.0;       // the time of the next check [s]
+    bool mAbandoned = false;
     std::uint32_t mEvents = 0;
     int mConsecutiveStalls = 0;
     DVec3 mLastImpactPosition{std::numeric_limits<double>::infinity()};
@@ -990,6 +1011,15 @@ std::size_t trajectoryCapacity(float time, const ProjectileSettings& settings, s
 
 Status predictProjectile(RVec3 position, Vec3 velocity, float time, const ProjectileSettings& settings,
                          const CollisionWorld* world, std::span<TrajectoryPoint> trajectory, ProjectileResult& out) {
+    bool abandoned = false;
+    return predictProjectileWithCutoff(position, velocity, time, settings, world, trajectory, out, nullptr, abandoned);
+}
+
+Status detail::predictProjectileWithCutoff(RVec3 position, Vec3 velocity, float time,
+                                           const ProjectileSettings& settings, const CollisionWorld* world,
+                                           std::span<TrajectoryPoint> trajectory, ProjectileResult& out,
+                                           const DistanceCutoff* cutoff, bool& abandoned) {
+    abandoned = false;
     if (!detail::isFinite(position) || !detail::isFinite(velocity) || !std::isfinite(time))
         return Status::NonFiniteInput;
     if (Status s = validateProjectileSettings(settings); s != Status::Ok) return s;
@@ -1011,11 +1041,13 @@ Status predictProjectile(RVec3 position, Vec3 velocity, float time, const Projec
     } else if (settings.method == ProjectileMethod::Stepped) {
         status = runStepped(toD(position), toD(velocity), steps, settings, collisionWorld, recorder, result);
     } else {
-        ExactRun run(settings, collisionWorld, recorder, result);
+        ExactRun run(settings, collisionWorld, recorder, result, cutoff);
         status = run.run(toD(position), toD(velocity), decimalValue(time));
+        abandoned = status == Status::Ok && run.abandoned();
+        if (abandoned) return Status::Ok;
     }
     if (status != Status::Ok) return status;
-    if (!isFinite(result)) return Status::NonFiniteResult;
+    if (!resultIsFinite(result)) return Status::NonFiniteResult;
     const DVec3 end = toD(result.position);
     if (std::max({recorder.reach, std::abs(end.x), std::abs(end.y), std::abs(end.z)}) > kMaxCoordinate)
         return Status::OutOfRange;

@@ -1,6 +1,7 @@
 #include <foresight/throw_planner.h>
 
 #include "internal.h"
+#include "projectile_internal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,7 +108,12 @@ private:
     /// Runs one prediction; false when the budget is spent (candidate untouched). `velocity` is
     /// taken by value: callers may pass the candidate's own velocity. A coarse
     /// prediction (the grid's step) is only a ranking: it is neither a plan nor the closest.
-    bool evaluate(const DVec3 velocity, Candidate& c, bool coarse = false) {
+    /// `irrelevantBeyond`: the caller does nothing with a throw that ends farther than this from
+    /// the target [m]; the prediction may then stop early (projectile_internal.h) and the
+    /// candidate is left as a miss, its distance infinite. What evaluate itself does with a
+    /// throw (a plan within the radius, the closest so far, a coarse cell verified within twice
+    /// the radius) raises the bound, so that no outcome changes.
+    bool evaluate(const DVec3 velocity, Candidate& c, bool coarse = false, double irrelevantBeyond = kInfinity) {
         if (budgetSpent()) return false;
         ++mPredictions;
         c = Candidate();
@@ -115,10 +121,17 @@ private:
         c.coarse = coarse;
         ProjectileSettings settings = mRequest.settings;
         if (coarse) settings.step = mRequest.budget.gridStep;
+        detail::DistanceCutoff cutoff;
+        cutoff.target = mTarget;
+        cutoff.keepBelow = coarse ? std::max(irrelevantBeyond, 2.0 * mRadius)
+                                  : std::max({irrelevantBeyond, mRadius, mClosest.distance});
         ProjectileResult result;
-        const Status status =
-            predictProjectile(mRequest.start, Vec3(velocity), mRequest.fuseTime, settings, mWorld, mScratch, result);
-        if (status != Status::Ok) return true;  // a miss: work caps or overflow on this throw
+        bool abandoned = false;
+        const Status status = detail::predictProjectileWithCutoff(
+            mRequest.start, Vec3(velocity), mRequest.fuseTime, settings, mWorld, mScratch, result,
+            std::isfinite(cutoff.keepBelow) ? &cutoff : nullptr, abandoned);
+        // A miss: work caps or overflow on this throw, or surely too far to matter.
+        if (status != Status::Ok || abandoned) return true;
         c.result = result;
         c.residual = toD(result.position) - mTarget;
         c.distance = glm::length(c.residual);
@@ -330,8 +343,10 @@ private:
                 const double length = glm::length(delta);
                 if (length > 0.5 * mMaxSpeed) delta *= 0.5 * mMaxSpeed / length;
                 if (length < 1e-9 * mMaxSpeed) return;  // converged as far as it can
+                // Only a trial closer than the current throw is taken (or one within the radius,
+                // evaluate's own bound).
                 Candidate trial;
-                if (!evaluate(clampSpeed(current.velocity + delta), trial)) return;
+                if (!evaluate(clampSpeed(current.velocity + delta), trial, false, current.distance)) return;
                 if (trial.distance < current.distance) {
                     current = trial;
                     damping = std::max(damping * 0.2, 1e-9);
@@ -401,7 +416,7 @@ private:
                         std::cos(elevation) * (std::cos(azimuth) * mForward + std::sin(azimuth) * mSide) +
                         std::sin(elevation) * mUp;
                     Candidate c;
-                    if (!evaluate(direction * speed, c, coarseGrid())) return;
+                    if (!evaluate(direction * speed, c, coarseGrid(), irrelevantCell())) return;
                     // A coarse cell that ends near the target is verified at once: it may be a
                     // plan as it is, and the grid can stop early as with fine cells.
                     if (c.coarse && c.distance <= 2 * mRadius && !evaluate(DVec3(c.velocity), c)) return;
@@ -409,6 +424,16 @@ private:
                 }
             }
         }
+    }
+
+    /// The distance beyond which a new cell changes nothing in keepCell: once the list is full,
+    /// a cell is kept only in place of a neighbour or of the farthest one, and only if closer.
+    double irrelevantCell() const {
+        const std::size_t capacity = std::min<std::size_t>(mRequest.budget.refinements, mCells.size());
+        if (mCellCount < capacity) return kInfinity;
+        double farthest = 0;
+        for (std::size_t i = 0; i < mCellCount; ++i) farthest = std::max(farthest, mCells[i].distance);
+        return farthest;
     }
 
     /// Keeps the closest cells, one per neighbourhood (direction and speed).

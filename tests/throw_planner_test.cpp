@@ -4,10 +4,15 @@
 // wall keeps the vertical motion and mirrors the horizontal one (the path of the mirrored
 // target).
 //
+// The planner stops a prediction early once it surely ends too far from the target to matter
+// (projectile_internal.h); its bound is checked on throws that bounce, slide down a steep slope
+// and fly at a target straight ahead, against the same throws run to the end.
+//
 // Own binary: it replaces global operator new (counting_allocator.h) to check that planThrow
 // does not allocate.
 
 #include "counting_allocator.h"
+#include "projectile_internal.h"  // src/: the planner's cutoff
 #include "test_util.h"
 
 #include <array>
@@ -430,6 +435,104 @@ TEST_F(ThrowPlannerBank, PlanningDoesNotAllocate) {
     ASSERT_EQ(replayed, Status::Ok);
     EXPECT_GT(result.predictions, 10u);  // the grid ran: the search did real work
     EXPECT_EQ(allocations, 0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The planner's cutoff
+
+// Throws in two worlds: the random scene (floor, box walls, a sphere, a slanted roof) and a steep
+// frictionless slope (70 degrees, nothing below it), on which a body slides down at 0.94 g: the
+// bound's |g| T^2 / 2 is nearly reached there. Targets: anywhere around, or straight ahead of the
+// throw's end, along its course (the body runs at them, the case where the bound is tightest).
+// Each throw is run to the end, then again with the cutoff's distance half its end's distance,
+// 5 mm below it (half the margin) or 5 mm above it. An abandoned run must end farther than that
+// distance; one that went on must give the full run's result bit for bit (the cutoff only
+// watches). Without the bound's gravity term, 134 of these throws stopped though they end within
+// the distance.
+TEST(PlannerCutoff, StopsOnlyThrowsThatEndBeyondItsDistance) {
+    using foresight::ProjectileMethod;
+    using foresight::ProjectileSettings;
+    ftest::Random random(20261129);
+    const StaticWorld scene = ftest::randomScene(random);
+    StaticWorld slope;
+    const double tilt = 70.0 * M_PI / 180.0;
+    ASSERT_EQ(slope.add(Plane{Vec3(static_cast<float>(std::sin(tilt)), static_cast<float>(std::cos(tilt)), 0.0f), 0}),
+              Status::Ok);
+    int abandoned = 0, kept = 0;
+    std::vector<TrajectoryPoint> full(4096), cut(4096);
+    for (int i = 0; i < 1200; ++i) {
+        const bool onSlope = i % 3 == 2;
+        const StaticWorld& world = onSlope ? slope : scene;
+        ProjectileSettings settings;
+        settings.method = ProjectileMethod::Exact;
+        settings.step = i % 4 == 0 ? 0.1f : 0.02f;
+        settings.radius = i % 2 == 0 ? 0.0f : static_cast<float>(random.uniform(0.05, 0.3));
+        settings.restitution = static_cast<float>(random.uniform(0.2, 1.0));
+        settings.friction = onSlope ? 0.0f : static_cast<float>(random.uniform(0.0, 0.6));
+        const RVec3 start = onSlope ? rv(random.uniform(0, 2), random.uniform(1, 4), random.uniform(-2, 2))
+                                    : rv(random.uniform(-2, 2), random.uniform(0.5, 3), random.uniform(-2, 2));
+        const Vec3 velocity(ftest::toD(random.direction()) * random.uniform(1, 20));
+        const float fuse = static_cast<float>(random.uniform(1, 4));
+        ProjectileResult whole;
+        ASSERT_EQ(foresight::predictProjectile(start, velocity, fuse, settings, &world, full, whole), Status::Ok);
+        const DVec3 end = ftest::toD(whole.position);
+        DVec3 target = ftest::toD(random.inBox(DVec3(-15, -5, -15), DVec3(15, 10, 15)));
+        if (i % 2 == 1) {  // straight ahead of the end, along the last motion
+            const DVec3 motion = end - ftest::toD(start);
+            if (glm::length(motion) > 1e-3) target = end + glm::normalize(motion) * random.uniform(0.5, 8);
+        }
+        const double distance = glm::length(end - target);
+        foresight::detail::DistanceCutoff cutoff;
+        cutoff.target = target;
+        // Half the end's distance or 5 mm below it (a stop is right), or 5 mm above it (wrong).
+        cutoff.keepBelow = i % 5 == 0 ? 0.5 * distance : i % 5 < 3 ? distance - 0.005 : distance + 0.005;
+        ProjectileResult part;
+        bool gaveUp = false;
+        ASSERT_EQ(foresight::detail::predictProjectileWithCutoff(start, velocity, fuse, settings, &world, cut, part,
+                                                                 &cutoff, gaveUp),
+                  Status::Ok);
+        if (gaveUp) {
+            ++abandoned;
+            EXPECT_GT(distance, cutoff.keepBelow) << "throw " << i;
+            continue;
+        }
+        ++kept;
+        EXPECT_EQ(part.position, whole.position) << "throw " << i;
+        EXPECT_EQ(part.velocity, whole.velocity) << "throw " << i;
+        EXPECT_EQ(part.bounces, whole.bounces) << "throw " << i;
+        ASSERT_EQ(part.trajectorySize, whole.trajectorySize) << "throw " << i;
+        EXPECT_EQ(std::memcmp(full.data(), cut.data(), whole.trajectorySize * sizeof(TrajectoryPoint)), 0) << i;
+    }
+    // Both outcomes occur often: the check sees real stops.
+    EXPECT_GT(abandoned, 200);
+    EXPECT_GT(kept, 200);
+}
+
+// The other methods ignore the cutoff; so does a null one.
+TEST(PlannerCutoff, OnlyTheExactMethodStops) {
+    StaticWorld floor;
+    ASSERT_EQ(floor.add(Plane{Vec3(0.0f, 1.0f, 0.0f), Real(0)}), Status::Ok);
+    foresight::detail::DistanceCutoff cutoff;
+    cutoff.target = DVec3(1000, 0, 0);
+    cutoff.keepBelow = 1;  // far beyond any throw below
+    std::vector<TrajectoryPoint> trajectory(512);
+    for (const auto method : {foresight::ProjectileMethod::Exact, foresight::ProjectileMethod::Stepped,
+                              foresight::ProjectileMethod::Engine}) {
+        foresight::ProjectileSettings settings;
+        settings.method = method;
+        settings.restitution = 0.5f;
+        ProjectileResult out;
+        bool gaveUp = true;
+        ASSERT_EQ(foresight::detail::predictProjectileWithCutoff(rv(0, 1, 0), Vec3(3, 4, 0), 3.0f, settings, &floor,
+                                                                 trajectory, out, &cutoff, gaveUp),
+                  Status::Ok);
+        EXPECT_EQ(gaveUp, method == foresight::ProjectileMethod::Exact) << static_cast<int>(method);
+        gaveUp = true;
+        ASSERT_EQ(foresight::detail::predictProjectileWithCutoff(rv(0, 1, 0), Vec3(3, 4, 0), 3.0f, settings, &floor,
+                                                                 trajectory, out, nullptr, gaveUp),
+                  Status::Ok);
+        EXPECT_FALSE(gaveUp);
+    }
 }
 
 }  // namespace

@@ -21,7 +21,10 @@
 /// be missed (a narrow window, a cap too small); what is returned is always verified by the
 /// forward model. Cost: at most maxPredictions predictions of `fuseTime` (on the demo level with
 /// EmbreeWorld one 3 s prediction at 50 Hz takes about 13 us); open ground usually needs one
-/// prediction per plan.
+/// prediction per plan. With the Exact method, a grid cell or a refinement's trial step stops
+/// early once it surely ends too far from the target to change anything (its distance now less
+/// the most the grenade can still travel, |v| t + |g| t^2 / 2, beyond what could be kept): the
+/// plans are those of the full predictions.
 ///
 /// No allocation: plans go into caller storage, and the first impacts are read from a caller
 /// scratch trajectory (throwPlanScratchSize). Not thread-safe across calls sharing scratch.
