@@ -442,8 +442,8 @@ TEST_F(ThrowPlannerBank, PlanningDoesNotAllocate) {
 
 // Throws in two worlds: the random scene (floor, box walls, a sphere, a slanted roof) and a steep
 // frictionless slope (70 degrees, nothing below it), on which a body slides down at 0.94 g: the
-// bound's |g| T^2 / 2 is nearly reached there. Targets: anywhere around, or straight ahead of the
-// throw's end, along its course (the body runs at them, the case where the bound is tightest).
+// bound's |g| T^2 / 2 is nearly reached there. Targets: anywhere around, or beyond the throw's
+// end along its course from the start (the body runs at them, where the bound is tightest).
 // Each throw is run to the end, then again with the cutoff's distance half its end's distance,
 // 5 mm below it (half the margin) or 5 mm above it. An abandoned run must end farther than that
 // distance; one that went on must give the full run's result bit for bit (the cutoff only
@@ -477,7 +477,7 @@ TEST(PlannerCutoff, StopsOnlyThrowsThatEndBeyondItsDistance) {
         ASSERT_EQ(foresight::predictProjectile(start, velocity, fuse, settings, &world, full, whole), Status::Ok);
         const DVec3 end = ftest::toD(whole.position);
         DVec3 target = ftest::toD(random.inBox(DVec3(-15, -5, -15), DVec3(15, 10, 15)));
-        if (i % 2 == 1) {  // straight ahead of the end, along the last motion
+        if (i % 2 == 1) {  // beyond the end, along the throw's course (start to end)
             const DVec3 motion = end - ftest::toD(start);
             if (glm::length(motion) > 1e-3) target = end + glm::normalize(motion) * random.uniform(0.5, 8);
         }
